@@ -1,0 +1,45 @@
+// fluoromatch: one executable, subcommands registered from app/cli/.
+// With no arguments it runs the "app" subcommand (the matching window) when it is built in.
+#include <algorithm>
+#include <exception>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "cli/CommandRegistry.h"
+#include "core/Error.h"
+
+int main(int argc, char** argv) {
+    CLI::App app{"fluoromatch: match X-ray images to CT with digitally reconstructed radiographs"};
+    app.set_version_flag("--version", "fluoromatch 0.1.0");
+    app.require_subcommand(1, 1);
+
+    auto& commands = fm::cli::commandRegistry();
+    std::sort(commands.begin(), commands.end(),
+              [](const auto& a, const auto& b) { return a.order < b.order; });
+    bool hasApp = false;
+    for (auto& command : commands) {
+        command.install(app);
+        hasApp = hasApp || command.name == "app";
+    }
+
+    std::vector<std::string> args(argv, argv + argc);
+    if (argc == 1 && hasApp) args.push_back("app");
+    std::vector<char*> argvOut;
+    for (auto& a : args) argvOut.push_back(a.data());
+
+    try {
+        app.parse(static_cast<int>(argvOut.size()), argvOut.data());
+    } catch (const CLI::ParseError& e) {
+        return app.exit(e);
+    } catch (const fm::Error& e) {
+        std::cerr << "fluoromatch: error: " << e.what() << "\n";
+        return 1;
+    } catch (const std::exception& e) {
+        std::cerr << "fluoromatch: internal error: " << e.what() << "\n";
+        return 2;
+    }
+    return 0;
+}

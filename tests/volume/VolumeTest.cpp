@@ -1,0 +1,87 @@
+#include <gtest/gtest.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "core/Error.h"
+#include "core/Parallel.h"
+#include "volume/Volume.h"
+#include "volume/VolumeStats.h"
+
+namespace {
+
+constexpr double kTol = 1e-12;  // pure double arithmetic on small numbers
+
+TEST(Volume, IndexToWorldFollowsItkConvention) {
+    fm::Volume v = fm::Volume::allocate({4, 5, 6});
+    v.spacing = {2.0, 3.0, 0.5};
+    v.origin = {10.0, -20.0, 5.0};
+    // RAS-stored axes: i towards patient right, j anterior (as NIfTI files usually are).
+    v.direction = glm::dmat3(glm::dvec3(-1, 0, 0), glm::dvec3(0, -1, 0), glm::dvec3(0, 0, 1));
+    const glm::dvec3 w = v.indexToWorld({1, 2, 3});
+    EXPECT_NEAR(w.x, 10.0 - 2.0, kTol);
+    EXPECT_NEAR(w.y, -20.0 - 6.0, kTol);
+    EXPECT_NEAR(w.z, 5.0 + 1.5, kTol);
+    const glm::dvec3 back = v.worldToIndex(w);
+    EXPECT_NEAR(back.x, 1.0, kTol);
+    EXPECT_NEAR(back.y, 2.0, kTol);
+    EXPECT_NEAR(back.z, 3.0, kTol);
+    EXPECT_EQ(fm::orientationCode(v.direction), "RAS");
+    EXPECT_EQ(fm::orientationCode(glm::dmat3(1.0)), "LPS");
+}
+
+TEST(Volume, StorageIsIFastest) {
+    fm::Volume v = fm::Volume::allocate({3, 4, 5});
+    EXPECT_EQ(v.index(1, 0, 0), 1u);
+    EXPECT_EQ(v.index(0, 1, 0), 3u);
+    EXPECT_EQ(v.index(0, 0, 1), 12u);
+    EXPECT_EQ(v.voxelCount(), 60u);
+}
+
+TEST(Volume, RefusesAbsurdSizes) {
+    EXPECT_THROW(fm::Volume::allocate({0, 10, 10}), fm::Error);
+    EXPECT_THROW(fm::Volume::allocate({-1, 10, 10}), fm::Error);
+    EXPECT_THROW(fm::Volume::allocate({100000, 100000, 100000}), fm::Error);
+}
+
+TEST(Volume, ValidateRejectsBadGeometry) {
+    fm::Volume v = fm::Volume::allocate({2, 2, 2});
+    EXPECT_NO_THROW(v.validate("test"));
+    v.spacing.y = 0.0;
+    EXPECT_THROW(v.validate("test"), fm::Error);
+    v.spacing.y = std::nan("");
+    EXPECT_THROW(v.validate("test"), fm::Error);
+    v.spacing.y = 1.0;
+    v.direction[0] = glm::dvec3(1, 1, 0);
+    EXPECT_THROW(v.validate("test"), fm::Error);
+}
+
+TEST(VolumeStats, PercentilesOfKnownValues) {
+    fm::Volume v = fm::Volume::allocate({101, 1, 1});
+    for (int i = 0; i <= 100; ++i) v.at(100 - i, 0, 0) = static_cast<float>(i);
+    const fm::VolumeStats s = fm::computeStats(v, {0, 1, 50, 99, 100});
+    EXPECT_EQ(s.min, 0.0f);
+    EXPECT_EQ(s.max, 100.0f);
+    EXPECT_NEAR(s.mean, 50.0, kTol);
+    ASSERT_EQ(s.percentiles.size(), 5u);
+    EXPECT_EQ(s.percentiles[1], 1.0);
+    EXPECT_EQ(s.percentiles[2], 50.0);
+    EXPECT_EQ(s.percentiles[3], 99.0);
+}
+
+TEST(Parallel, CoversEveryIndexOnceWithFixedChunks) {
+    for (int threads : {1, 2, 3, 8}) {
+        std::vector<int> hits(1000, 0);
+        fm::parallelFor(1000, threads, [&](int b, int e) {
+            for (int i = b; i < e; ++i) hits[i] += 1;
+        }, 4);
+        for (int h : hits) ASSERT_EQ(h, 1);
+    }
+}
+
+TEST(Parallel, RethrowsExceptionsFromWorkers) {
+    EXPECT_THROW(fm::parallelFor(10, 2, [](int b, int) {
+        if (b > 0) throw fm::Error("boom");
+    }), fm::Error);
+}
+
+}  // namespace
