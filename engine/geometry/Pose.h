@@ -38,7 +38,15 @@ struct Pose {
 // Parses "x,y,z,az,el,rot" (numbers, comma separated). Throws fm::Error on anything else,
 // including non-finite numbers and angles outside the 2011 ranges.
 Pose parsePose(const std::string& text);
+// "x,y,z,az,el,rot" with the shortest text that reads back to the same numbers.
 std::string formatPose(const Pose& pose);
+
+// The 2011 ranges (inclusive): azimuth -180..180, elevation -90..90, rotation -90..90 degrees.
+inline constexpr double kAzimuthLimitDeg = 180.0;
+inline constexpr double kElevationLimitDeg = 90.0;
+inline constexpr double kRotationLimitDeg = 90.0;
+// Throws fm::Error naming the parameter if a value is not finite or an angle is out of range.
+void validatePose(const Pose& pose);
 
 // The fixed parts of the scene: distances and the film.
 struct SceneSetup {
@@ -50,9 +58,23 @@ struct SceneSetup {
 
 // Defaults that frame the default knee phantom (equal distances, as in 2011).
 SceneSetup defaultSceneSetup();
+// Throws fm::Error naming the field if a distance or film size is not positive and finite or
+// the pixel count is outside 1..16384.
+void validateSceneSetup(const SceneSetup& setup);
+
+// The scene's unit vectors in the world (LPS) frame for the given angles; see
+// docs/geometry.md. sourceDirection points from the isocenter to the source; filmU / filmV
+// are the detector's column and row directions (after the in-plane rotation).
+struct SceneFrame {
+    glm::dvec3 sourceDirection;
+    glm::dvec3 filmU;
+    glm::dvec3 filmV;
+};
+SceneFrame sceneFrame(double azimuthDeg, double elevationDeg, double rotationDeg);
 
 // The projection geometry for a pose, in the world frame of a volume whose centre is
-// `volumeCenter` (Volume::center()).
+// `volumeCenter` (Volume::center()). Throws fm::Error for a non-finite pose or a bad setup;
+// angles outside the 2011 ranges are accepted here (the formulas are periodic and smooth).
 ProjectionGeometry sceneGeometry(const Pose& pose, const SceneSetup& setup,
                                  const glm::dvec3& volumeCenter);
 

@@ -6,6 +6,7 @@
 // `origin` is the centre of pixel (col 0, row 0); `u` is the unit direction of increasing
 // column, `v` of increasing row. Pixel (c, r) is at origin + c*du*u + r*dv*v.
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include <glm/glm.hpp>
@@ -40,6 +41,12 @@ struct ProjectionGeometry {
     // The same geometry with the detector resampled by an integer factor (coarser pixels over
     // the same film area): used by image pyramids and live preview.
     ProjectionGeometry downsampled(int factor) const;
+
+    // Where the ray from the source through `world` meets the detector plane, as continuous
+    // (col, row) pixel coordinates (pixel centres at integers; may lie outside the image).
+    // Empty when the point is not on the detector's side of the source (behind it, or in the
+    // plane through the source parallel to the detector).
+    std::optional<glm::dvec2> projectToPixel(const glm::dvec3& world) const;
 };
 
 ProjectionGeometry geometryFromJson(const std::string& jsonText, const std::string& what = "geometry");

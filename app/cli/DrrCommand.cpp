@@ -1,0 +1,194 @@
+// `fluoromatch drr`: render one DRR of a volume for a pose (the 2011 six-parameter scene) or a
+// general projection geometry (JSON), write it as a windowed PNG for viewing and optionally as
+// a float32 .mha with the exact values, and print how long each step took.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cli/CommandRegistry.h"
+#include "cli/SceneOptions.h"
+#include "core/Error.h"
+#include "core/Parallel.h"
+#include "drr/Drr.h"
+#include "io/PngWriter.h"
+#include "io/VolumeWriter.h"
+#include "volume/VolumeSource.h"
+
+namespace {
+
+struct DrrArgs {
+    fm::cli::SceneOptions scene;
+    std::string volume = fm::kDefaultVolumeSpec;
+    std::string values = "mu";
+    std::optional<double> thresholdHU;
+    bool intensity = false;
+    std::string mode = "exact";
+    double stepMm = 1.0;
+    int threads = 0;
+    int repeat = 1;
+    std::string out;
+    std::string raw;
+};
+
+double msSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+        .count();
+}
+
+// Display window: the 1st..99.5th percentile of the pixels the volume covers (non-zero), so that
+// a few extreme rays do not wash out the picture and the empty background stays black.
+struct Window {
+    double low = 0.0;
+    double high = 1.0;
+};
+
+Window footprintWindow(const std::vector<float>& values) {
+    std::vector<float> footprint;
+    footprint.reserve(values.size());
+    for (float v : values)
+        if (v != 0.0f && std::isfinite(v)) footprint.push_back(v);
+    Window w;
+    if (footprint.empty()) return w;
+    auto percentile = [&](double p) {
+        const auto k = static_cast<std::size_t>(std::llround(p * (footprint.size() - 1)));
+        std::nth_element(footprint.begin(), footprint.begin() + k, footprint.end());
+        return static_cast<double>(footprint[k]);
+    };
+    w.low = percentile(0.01);
+    w.high = percentile(0.995);
+    // Positive images whose low percentile is close to 0 anyway (mu line integrals) start at 0,
+    // so that thin tissue at the edges stays visible; a flat image gets a unit-wide window.
+    if (w.low > 0.0 && w.low < 0.05 * w.high) w.low = 0.0;
+    if (!(w.high > w.low)) w.high = w.low + 1.0;
+    return w;
+}
+
+void runDrr(const DrrArgs& a) {
+    if (a.out.empty() && a.raw.empty())
+        throw fm::Error("nothing to write: give --out drr.png and/or --raw drr.mha");
+    if (a.repeat < 1 || a.repeat > 10000)
+        throw fm::Error("--repeat must be 1..10000, got " + std::to_string(a.repeat));
+    if (a.threads < 0) throw fm::Error("--threads must be 0 (all cores) or more");
+    if (!(a.stepMm > 0.0) || !std::isfinite(a.stepMm))
+        throw fm::Error("--step must be a positive number of mm");
+    if (a.thresholdHU && !std::isfinite(*a.thresholdHU))
+        throw fm::Error("--threshold must be a finite number");
+
+    auto start = std::chrono::steady_clock::now();
+    const fm::Volume volume = fm::loadVolume(a.volume);
+    const double loadMs = msSince(start);
+    const fm::ProjectionGeometry geometry = fm::cli::geometryFrom(a.scene, volume.center());
+    geometry.validate(a.scene.usesGeometryFile() ? a.scene.geometry : "scene geometry");
+
+    fm::DrrValueOptions valueOptions;
+    valueOptions.values = a.values == "raw" ? fm::DrrValues::Raw : fm::DrrValues::Mu;
+    valueOptions.thresholdHU = a.thresholdHU;
+    start = std::chrono::steady_clock::now();
+    const fm::DrrVolumePtr prepared = fm::prepareDrrVolume(volume, valueOptions);
+    const double prepareMs = msSince(start);
+
+    fm::DrrRenderOptions renderOptions;
+    renderOptions.output = a.intensity ? fm::DrrOutput::Intensity : fm::DrrOutput::LineIntegral;
+    renderOptions.trace = a.mode == "approx" ? fm::DrrTrace::Approx : fm::DrrTrace::Exact;
+    renderOptions.approxStepMm = a.stepMm;
+    renderOptions.threads = a.threads;
+
+    fm::Image image;
+    std::vector<double> times;
+    for (int i = 0; i < a.repeat; ++i) {
+        start = std::chrono::steady_clock::now();
+        image = fm::renderDrr(*prepared, geometry, renderOptions);
+        times.push_back(msSince(start));
+    }
+    std::vector<double> sorted = times;
+    std::sort(sorted.begin(), sorted.end());
+    double mean = 0.0;
+    for (double t : times) mean += t / times.size();
+
+    float minValue = INFINITY, maxValue = -INFINITY;
+    for (float v : image.pixels) {
+        minValue = std::min(minValue, v);
+        maxValue = std::max(maxValue, v);
+    }
+    const int threads = a.threads == 0 ? fm::defaultThreadCount() : a.threads;
+    std::printf("volume    %s (%d x %d x %d voxels, loaded in %.1f ms)\n", a.volume.c_str(),
+                volume.dims.x, volume.dims.y, volume.dims.z, loadMs);
+    std::printf("geometry  %s\n", fm::cli::describeGeometrySource(a.scene).c_str());
+    std::printf("values    %s", a.values == "raw" ? "raw (value * mm)" : "mu (HU -> 1/mm)");
+    if (a.thresholdHU) std::printf(", threshold %g HU", *a.thresholdHU);
+    std::printf(", %s, %s", a.intensity ? "intensity exp(-integral)" : "line integral",
+                a.mode.c_str());
+    if (a.mode == "approx") std::printf(" (step %g mm)", a.stepMm);
+    std::printf(", %d thread%s\n", threads, threads == 1 ? "" : "s");
+    std::printf("prepare   %.2f ms\n", prepareMs);
+    if (a.repeat == 1)
+        std::printf("render    %.2f ms\n", times[0]);
+    else
+        std::printf("render    %.2f ms (min of %d; median %.2f ms, mean %.2f ms)\n", sorted[0],
+                    a.repeat, sorted[sorted.size() / 2], mean);
+    std::printf("image     %d x %d pixels, %.4g x %.4g mm, values %.6g .. %.6g\n", image.width,
+                image.height, image.spacing.x, image.spacing.y, minValue, maxValue);
+
+    if (!a.out.empty()) {
+        // Viewing: bone bright, as on a radiograph. Line integrals already are (more
+        // attenuation = larger); intensities exp(-integral) are shown as 1 - intensity, the
+        // fraction absorbed, which blackens the empty background and whitens bone.
+        fm::Image display = image;
+        if (a.intensity)
+            for (float& v : display.pixels) v = 1.0f - v;
+        const Window w = footprintWindow(display.pixels);
+        // Rays that carry nothing (exactly 0: they miss the volume) stay black, also for raw
+        // values whose window lies below 0.
+        for (float& v : display.pixels)
+            if (v == 0.0f) v = static_cast<float>(w.low);
+        fm::writePng(display, a.out, static_cast<float>(w.low), static_cast<float>(w.high));
+        std::printf("wrote     %s (window %.6g .. %.6g%s)\n", a.out.c_str(), w.low, w.high,
+                    a.intensity ? " of 1 - intensity" : "");
+    }
+    if (!a.raw.empty()) {
+        fm::writeImage(image, a.raw);
+        std::printf("wrote     %s (exact values, row 0 first)\n", a.raw.c_str());
+    }
+}
+
+FM_REGISTER_COMMAND("drr", 20, [](CLI::App& app) {
+    auto* cmd = app.add_subcommand(
+        "drr", "Render a digitally reconstructed radiograph for a pose or a geometry file");
+    auto a = std::make_shared<DrrArgs>();
+    cmd->add_option("--volume", a->volume,
+                    "CT file (.nii[.gz], .mha/.mhd, .nrrd/.nhdr, .vtk), DICOM folder, or "
+                    "phantom:NAME")
+        ->capture_default_str();
+    fm::cli::addSceneOptions(cmd, a->scene);
+    cmd->add_option("--values", a->values,
+                    "mu: HU converted to attenuation (1/mm); raw: the stored values as they are")
+        ->check(CLI::IsMember({"raw", "mu"}))
+        ->capture_default_str();
+    cmd->add_option("--threshold", a->thresholdHU,
+                    "Ignore voxels whose stored value is below this (HU): bone-only images");
+    cmd->add_flag("--intensity", a->intensity,
+                  "Output exp(-line integral), the transmitted fraction, instead of the line "
+                  "integral");
+    cmd->add_option("--mode", a->mode,
+                    "exact: Siddon voxel traversal; approx: trilinear samples every --step mm")
+        ->check(CLI::IsMember({"exact", "approx"}))
+        ->capture_default_str();
+    cmd->add_option("--step", a->stepMm, "Sample spacing in mm for --mode approx")
+        ->capture_default_str();
+    cmd->add_option("--threads", a->threads, "Worker threads (0 = all cores)")
+        ->capture_default_str();
+    cmd->add_option("--repeat", a->repeat, "Render this many times and report the fastest (timing)")
+        ->capture_default_str();
+    cmd->add_option("--out", a->out, "PNG to write, windowed for viewing");
+    cmd->add_option("--raw", a->raw,
+                    "Float32 image with the exact values and the detector spacing (.mha)");
+    cmd->callback([a] { runDrr(*a); });
+    return cmd;
+});
+
+}  // namespace

@@ -1,0 +1,123 @@
+// `fluoromatch screenshot`: the whole UI rendered through OSMesa with no display,
+// deterministically (the same drawing code as the window; only the GL context differs).
+#include <cstdio>
+#include <sstream>
+
+#include "cli/CommandRegistry.h"
+#include "core/Error.h"
+#include "geometry/Pose.h"
+#include "ui/DragMeasurement.h"
+#include "ui/HeadlessScreenshot.h"
+#include "volume/VolumeSource.h"
+
+namespace {
+
+struct ScreenshotArgs {
+    std::string out = "ui.png";
+    std::string size = "1280x800";
+    std::string volume = fm::kDefaultVolumeSpec;
+    std::string pose, referencePose, view, compare = "difference";
+    std::uint64_t seed = 1;
+    bool match = false, help = false, timings = false;
+    int threads = 0;
+    int measureDrag = 0;
+};
+
+glm::ivec2 parseSize(const std::string& text) {
+    int w = 0, h = 0;
+    char x = 0, extra = 0;
+    std::istringstream in(text);
+    if (!(in >> w >> x >> h) || (x != 'x' && x != 'X') || (in >> extra) || w < 16 || h < 16 ||
+        w > 8192 || h > 8192)
+        throw fm::Error("--size \"" + text + "\": expected WIDTHxHEIGHT, each 16..8192");
+    return {w, h};
+}
+
+fm::app::View3d parseView(const std::string& text) {
+    fm::app::View3d view;
+    double az = 0, el = 0, zoom = 1;
+    char c1 = 0, c2 = 0, extra = 0;
+    std::istringstream in(text);
+    if (!(in >> az >> c1 >> el >> c2 >> zoom) || c1 != ',' || c2 != ',' || (in >> extra))
+        throw fm::Error("--view \"" + text + "\": expected az,el,zoom (degrees, degrees, factor)");
+    if (!(el >= -89.0 && el <= 89.0))
+        throw fm::Error("--view elevation must be within -89..89 degrees");
+    if (!(zoom >= 0.2 && zoom <= 8.0)) throw fm::Error("--view zoom must be within 0.2..8");
+    if (!(az >= -360.0 && az <= 360.0)) throw fm::Error("--view azimuth must be within -360..360");
+    view.azimuthDeg = float(az);
+    view.elevationDeg = float(el);
+    view.zoom = float(zoom);
+    return view;
+}
+
+fm::app::CompareMode parseCompare(const std::string& text) {
+    if (text == "difference") return fm::app::CompareMode::Difference;
+    if (text == "overlay") return fm::app::CompareMode::Overlay;
+    if (text == "checkerboard") return fm::app::CompareMode::Checkerboard;
+    throw fm::Error("--compare \"" + text + "\": expected difference, overlay or checkerboard");
+}
+
+void runScreenshot(const ScreenshotArgs& args) {
+    fm::app::HeadlessOptions options;
+    options.size = parseSize(args.size);
+    options.app.volumeSpec = args.volume;
+    options.app.seed = args.seed;
+    options.app.drrThreads = args.threads;
+    if (!args.pose.empty()) options.app.userPose = fm::parsePose(args.pose);
+    if (!args.referencePose.empty()) options.app.referencePose = fm::parsePose(args.referencePose);
+    if (!args.view.empty()) options.app.view = parseView(args.view);
+    options.compare = parseCompare(args.compare);
+    options.pressMatch = args.match;
+    options.showHelp = args.help;
+    options.app.showTimings = args.timings;
+    if (args.measureDrag > 0) {
+        // Frame times of a slider drag, exact-only against coarse-while-dragging.
+        auto backend = fm::app::createOsmesaBackend(options.size);
+        std::printf("backend: %s\n", backend->describe().c_str());
+        fm::app::App app(*backend, options.app);
+        app.waitForLoad();
+        if (!app.scene()) throw fm::Error(app.state().load.error);
+        for (int i = 0; i < 3; ++i) app.frame();
+        const auto exact = fm::app::measureSliderDrag(app, args.measureDrag, false);
+        const auto coarse = fm::app::measureSliderDrag(app, args.measureDrag, true);
+        std::printf("drag, exact DRR every frame:  %s\n", fm::app::formatDragTimes(exact).c_str());
+        std::printf("drag, coarse while dragging:  %s\n", fm::app::formatDragTimes(coarse).c_str());
+        std::printf("user DRR alone: exact %.1f ms, coarse (film /%d) %.1f ms\n",
+                    app.state().timings.lastExactMs, app.state().timings.coarseFactor,
+                    app.state().timings.lastCoarseMs);
+        return;
+    }
+    fm::app::writeHeadlessScreenshot(options, args.out);
+}
+
+FM_REGISTER_COMMAND("screenshot", 2, [](CLI::App& cli) {
+    auto* cmd = cli.add_subcommand("screenshot", "Render the whole app UI headless (OSMesa) to a "
+                                                 "PNG, deterministically");
+    auto a = std::make_shared<ScreenshotArgs>();
+    cmd->add_option("--out", a->out, "PNG to write")->capture_default_str();
+    cmd->add_option("--size", a->size, "WIDTHxHEIGHT in pixels")->capture_default_str();
+    cmd->add_option("--volume", a->volume, "CT file, DICOM folder or phantom:NAME")
+        ->capture_default_str();
+    cmd->add_option("--pose", a->pose, "your pose x,y,z,az,el,rot (mm, deg); default centred");
+    cmd->add_option("--reference-pose", a->referencePose,
+                    "the hidden reference pose x,y,z,az,el,rot; default: picked by --seed");
+    cmd->add_option("--view", a->view, "3D view camera az,el,zoom (deg, deg, factor)");
+    cmd->add_option("--seed", a->seed, "seed of the reference choice")->capture_default_str();
+    cmd->add_option("--compare", a->compare, "difference, overlay or checkerboard")
+        ->capture_default_str();
+    cmd->add_flag("--match", a->match, "press Match before the shot (verdict and hints)");
+    cmd->add_flag("--help-window", a->help, "show the Help window");
+    cmd->add_flag("--timings", a->timings,
+                  "show the render timings (they vary run to run: the image is then not "
+                  "reproducible)");
+    cmd->add_option("--threads", a->threads, "DRR threads (0 = all cores)")
+        ->check(CLI::NonNegativeNumber);
+    cmd->add_option("--measure-drag", a->measureDrag,
+                    "instead of a screenshot: drag the azimuth slider over N frames and report "
+                    "frame times, exact DRRs vs coarse while dragging")
+        ->check(CLI::NonNegativeNumber);
+    cmd->callback([a] { runScreenshot(*a); });
+    return cmd;
+});
+
+}  // namespace

@@ -1,0 +1,173 @@
+#include "cli/SearchCli.h"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include <stb/stb_image.h>
+
+#include "core/Error.h"
+#include "io/ReadVolume.h"
+
+namespace fm::cli {
+
+namespace {
+
+std::vector<double> parseNumbers(const std::string& text, const std::string& option) {
+    std::vector<double> values;
+    std::stringstream ss(text);
+    std::string item;
+    while (std::getline(ss, item, ',')) {
+        try {
+            std::size_t used = 0;
+            const double v = std::stod(item, &used);
+            if (used != item.size() || !std::isfinite(v)) throw std::invalid_argument(item);
+            values.push_back(v);
+        } catch (const std::exception&) {
+            throw Error(option + ": \"" + item + "\" is not a number");
+        }
+    }
+    return values;
+}
+
+}  // namespace
+
+void addSearchOptions(CLI::App* cmd, SearchArgs& a, bool withMethod) {
+    if (withMethod)
+        cmd->add_option("--method", a.method, "Global search: mc, pso, bees or cmaes")
+            ->capture_default_str();
+    cmd->add_option("--similarity", a.similarity,
+                    "Similarity: ncc, gncc (gradient NCC) or gd (gradient difference)")
+        ->capture_default_str();
+    cmd->add_option("--seed", a.seed, "Random seed (same seed, same result)")->capture_default_str();
+    cmd->add_option("--budget", a.budget, "Evaluations of the global search (default 600)");
+    cmd->add_option("--polish-budget", a.polishBudget,
+                    "Evaluations of the local polish per level (default 100)");
+    cmd->add_option("--levels", a.levels,
+                    "Detector downsampling factors, coarse to fine (default 4,2,1)");
+    cmd->add_option("--radius", a.radius,
+                    "Search radius: one number or u,v,depth mm,az,el,rot deg (default "
+                    "10,10,20,10,10,10)");
+    cmd->add_option("--threads", a.threads, "Threads (0 = all cores)")->capture_default_str();
+    cmd->add_option("--polish", a.polish, "Local refinement per level: nm (Nelder-Mead) or cmaes")
+        ->capture_default_str();
+    cmd->add_option("--values", a.values,
+                    "DRR values: mu (HU converted to attenuation) or raw (as stored)")
+        ->capture_default_str();
+}
+
+RegistrationSettings registrationSettings(const SearchArgs& a) {
+    RegistrationSettings s;
+    s.method = parseSearchMethod(a.method);
+    if (s.method == SearchMethod::NelderMead)
+        throw Error("--method: nm is the local polish, not a global search (use mc, pso, bees "
+                    "or cmaes)");
+    s.similarity = parseSimilarityMeasure(a.similarity);
+    s.polishMethod = parseSearchMethod(a.polish);
+    s.seed = a.seed;
+    if (a.budget < 0) throw Error("--budget must be positive");
+    if (a.budget > 0) s.globalEvaluations = a.budget;
+    if (a.polishBudget >= 0) s.polishEvaluations = a.polishBudget;
+    if (a.threads < 0) throw Error("--threads must be 0 (all cores) or more");
+    s.threads = a.threads;
+    if (!a.levels.empty()) {
+        s.levelFactors.clear();
+        for (double f : parseNumbers(a.levels, "--levels")) {
+            if (f != std::floor(f) || f < 1 || f > 64)
+                throw Error("--levels: factors must be whole numbers 1..64");
+            s.levelFactors.push_back(static_cast<int>(f));
+        }
+    }
+    if (!a.radius.empty()) {
+        const std::vector<double> r = parseNumbers(a.radius, "--radius");
+        if (r.size() != 1 && r.size() != 6)
+            throw Error("--radius: give one number or six (u,v,depth,az,el,rot)");
+        for (int i = 0; i < 6; ++i) {
+            s.searchRadius[i] = r.size() == 1 ? r[0] : r[i];
+            if (!(s.searchRadius[i] > 0.0)) throw Error("--radius: values must be positive");
+        }
+    }
+    return s;
+}
+
+std::string describeLevels(const RegistrationSettings& s) {
+    std::string text = "levels";
+    for (std::size_t i = 0; i < s.levelFactors.size(); ++i)
+        text += (i ? "," : " ") + std::to_string(s.levelFactors[i]);
+    text += ", budget " + std::to_string(s.globalEvaluations) + " + " +
+            std::to_string(s.polishEvaluations) + " per polish";
+    return text;
+}
+
+DrrVolumePtr prepareForSearch(const Volume& volume, const std::string& values) {
+    if (values != "mu" && values != "raw")
+        throw Error("--values must be mu or raw, got \"" + values + "\"");
+    DrrValueOptions options;
+    options.values = values == "raw" ? DrrValues::Raw : DrrValues::Mu;
+    return prepareDrrVolume(volume, options);
+}
+
+Image renderReference(const DrrVolume& volume, const ProjectionGeometry& geometry, int threads) {
+    DrrRenderOptions options;
+    options.output = DrrOutput::LineIntegral;
+    options.threads = threads;
+    return renderDrr(volume, geometry, options);
+}
+
+Image readReferenceImage(const std::string& path) {
+    const auto dot = path.find_last_of('.');
+    std::string ext = dot == std::string::npos ? "" : path.substr(dot);
+    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (ext == ".png") {
+        int w = 0, h = 0, channels = 0;
+        // 16-bit loading keeps 16-bit PNGs exact and widens 8-bit ones; no gamma is applied.
+        stbi_us* data = stbi_load_16(path.c_str(), &w, &h, &channels, 1);
+        if (!data)
+            throw Error(path + ": cannot read PNG (" + std::string(stbi_failure_reason()) + ")");
+        Image img(w, h);
+        for (std::size_t i = 0; i < img.pixels.size(); ++i) img.pixels[i] = float(data[i]) / 65535.0f;
+        stbi_image_free(data);
+        return img;
+    }
+    const Volume v = readVolume(path);
+    if (v.dims.z != 1)
+        throw Error(path + ": a reference image must be 2-D, this file holds " +
+                    std::to_string(v.dims.z) + " slices");
+    Image img(v.dims.x, v.dims.y);
+    img.spacing = {v.spacing.x, v.spacing.y};
+    img.pixels = v.values;
+    for (float p : img.pixels)
+        if (!std::isfinite(p)) throw Error(path + ": the image holds non-finite values");
+    return img;
+}
+
+void ProgressBar::update(const RegistrationProgress& p) {
+    const double fraction =
+        p.evaluationBudget > 0 ? std::min(1.0, double(p.evaluations) / p.evaluationBudget) : 0.0;
+    const std::string stage = std::to_string(p.level + 1) + "/" + std::to_string(p.levelCount) +
+                              " " + p.stage;
+    if (!interactive_) {
+        if (stage != lastStage_)
+            std::fprintf(stderr, "level %s (detector / %d)\n", stage.c_str(), p.factor);
+        lastStage_ = stage;
+        return;
+    }
+    if (p.seconds - lastShown_ < 0.1 && stage == lastStage_) return;
+    lastShown_ = p.seconds;
+    lastStage_ = stage;
+    constexpr int kWidth = 30;
+    const int filled = static_cast<int>(fraction * kWidth);
+    std::fprintf(stderr, "\r[%s%s] %3d%%  level %s  evals %d/%d  cost %.5f  %.1f s   ",
+                 std::string(filled, '#').c_str(), std::string(kWidth - filled, '.').c_str(),
+                 static_cast<int>(fraction * 100.0), stage.c_str(), p.evaluations,
+                 p.evaluationBudget, p.bestCost, p.seconds);
+    std::fflush(stderr);
+    drawn_ = true;
+}
+
+void ProgressBar::finish() {
+    if (drawn_) std::fprintf(stderr, "\n");
+    drawn_ = false;
+}
+
+}  // namespace fm::cli

@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# The headless paths of the CLI, with no display:
+#  1. `fluoromatch screenshot` writes a PNG of the requested size, and two runs give the same
+#     bytes (deterministic);
+#  2. `fluoromatch app` without DISPLAY says so and writes a headless screenshot (exit 0);
+#  3. a volume that cannot be read fails with the reader's message (exit 1), no PNG.
+set -uo pipefail
+FM=$1
+OUT=$(mktemp -d)
+trap 'rm -rf "$OUT"' EXIT
+fail() { echo "FAIL: $*"; exit 1; }
+png_size() { python3 -c "import struct,sys; d=open(sys.argv[1],'rb').read(24); \
+assert d[:8]==b'\x89PNG\r\n\x1a\n'; print('%dx%d' % struct.unpack('>II', d[16:24]))" "$1"; }
+
+"$FM" screenshot --out "$OUT/a.png" --size 640x400 --seed 5 || fail "screenshot exited $?"
+"$FM" screenshot --out "$OUT/b.png" --size 640x400 --seed 5 || fail "second screenshot exited $?"
+[ "$(png_size "$OUT/a.png")" = "640x400" ] || fail "screenshot is $(png_size "$OUT/a.png"), not 640x400"
+cmp -s "$OUT/a.png" "$OUT/b.png" || fail "two identical screenshot runs differ"
+
+msg=$(env -u DISPLAY -u WAYLAND_DISPLAY "$FM" app --headless-out "$OUT/fallback.png" 2>&1)
+rc=$?
+echo "$msg"
+[ $rc -eq 0 ] || fail "app without a display exited $rc"
+grep -q "no display" <<<"$msg" || fail "app without a display did not say so"
+[ -s "$OUT/fallback.png" ] || fail "app without a display wrote no screenshot"
+
+msg=$("$FM" screenshot --out "$OUT/bad.png" --volume "$OUT/missing.nii.gz" 2>&1)
+rc=$?
+echo "$msg"
+[ $rc -eq 1 ] || fail "an unreadable volume gave exit $rc, not 1"
+grep -q "missing.nii.gz" <<<"$msg" || fail "the error does not name the file"
+[ ! -e "$OUT/bad.png" ] || fail "a PNG was written for an unreadable volume"
+echo PASS

@@ -1,0 +1,340 @@
+#include "render/SceneRenderer.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "scene/DrrCache.h"
+#include "scene/LoadedScene.h"
+
+namespace fm::render {
+namespace {
+
+struct LineVertex {
+    glm::vec3 position;
+    glm::vec4 color;
+};
+
+const glm::vec4 kBoxColor{0.85f, 0.85f, 0.90f, 1.0f};
+const glm::vec4 kAxisColors[3] = {
+    {0.95f, 0.30f, 0.30f, 1.0f}, {0.35f, 0.90f, 0.35f, 1.0f}, {0.40f, 0.55f, 1.00f, 1.0f}};
+const glm::vec4 kConeColor{1.00f, 0.85f, 0.30f, 0.85f};
+const glm::vec4 kConeFaceColor{1.00f, 0.85f, 0.30f, 0.07f};
+const glm::vec4 kFilmFrameColor{0.60f, 0.80f, 1.00f, 1.0f};
+const glm::vec3 kBoneColor{0.93f, 0.89f, 0.80f};
+const glm::vec3 kSourceColor{1.00f, 0.80f, 0.20f};
+
+void line(std::vector<LineVertex>& out, glm::vec3 a, glm::vec3 b, glm::vec4 color) {
+    out.push_back({a, color});
+    out.push_back({b, color});
+}
+
+// Unit sphere (positions double as normals) for the source marker.
+void makeSphere(std::vector<glm::vec3>& vertices, std::vector<glm::uvec3>& triangles) {
+    constexpr int kRings = 12, kSegments = 24;
+    for (int r = 0; r <= kRings; ++r) {
+        const float theta = float(M_PI) * r / kRings;
+        for (int s = 0; s <= kSegments; ++s) {
+            const float phi = 2.0f * float(M_PI) * s / kSegments;
+            vertices.emplace_back(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi),
+                                  std::cos(theta));
+        }
+    }
+    for (int r = 0; r < kRings; ++r)
+        for (int s = 0; s < kSegments; ++s) {
+            const unsigned a = r * (kSegments + 1) + s, b = a + kSegments + 1;
+            triangles.emplace_back(a, b, a + 1);
+            triangles.emplace_back(a + 1, b, b + 1);
+        }
+}
+
+}  // namespace
+
+OrbitCamera orbitCamera(const app::View3d& view, double sceneRadiusMm, float aspect) {
+    constexpr float kFovDeg = 30.0f;
+    const float radius = float(std::max(sceneRadiusMm, 1.0));
+    const float distance = radius / std::sin(glm::radians(kFovDeg) * 0.5f) /
+                           std::max(view.zoom, 0.05f);
+    const float az = glm::radians(view.azimuthDeg), el = glm::radians(view.elevationDeg);
+    // LPS world: z is superior, so z is up; azimuth 0 looks from anterior (-y).
+    const glm::vec3 direction(std::sin(az) * std::cos(el), -std::cos(az) * std::cos(el),
+                              std::sin(el));
+    OrbitCamera camera;
+    camera.position = direction * distance;
+    const glm::vec3 up = std::abs(el) > glm::radians(89.0f) ? glm::vec3(0, 1, 0)
+                                                             : glm::vec3(0, 0, 1);
+    camera.view = glm::lookAt(camera.position, glm::vec3(0.0f), up);
+    camera.projection = glm::perspective(glm::radians(kFovDeg), std::max(aspect, 0.01f),
+                                         distance * 0.05f, distance + radius * 3.0f);
+    return camera;
+}
+
+SceneRenderer::SceneRenderer()
+    : meshShader_("mesh.vert.glsl", "mesh.frag.glsl"),
+      lineShader_("line.vert.glsl", "line.frag.glsl"),
+      filmShader_("film.vert.glsl", "film.frag.glsl") {
+    glGenVertexArrays(1, &meshVao_);
+    glGenBuffers(1, &meshVbo_);
+    glGenBuffers(1, &meshEbo_);
+
+    std::vector<glm::vec3> sphere;
+    std::vector<glm::uvec3> sphereTriangles;
+    makeSphere(sphere, sphereTriangles);
+    glGenVertexArrays(1, &sphereVao_);
+    glGenBuffers(1, &sphereVbo_);
+    glGenBuffers(1, &sphereEbo_);
+    glBindVertexArray(sphereVao_);
+    glBindBuffer(GL_ARRAY_BUFFER, sphereVbo_);
+    glBufferData(GL_ARRAY_BUFFER, sphere.size() * sizeof(glm::vec3), sphere.data(), GL_STATIC_DRAW);
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
+    glEnableVertexAttribArray(1);
+    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, sphereEbo_);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, sphereTriangles.size() * sizeof(glm::uvec3),
+                 sphereTriangles.data(), GL_STATIC_DRAW);
+    sphereIndexCount_ = GLsizei(sphereTriangles.size() * 3);
+
+    glGenVertexArrays(1, &lineVao_);
+    glGenBuffers(1, &lineVbo_);
+    glBindVertexArray(lineVao_);
+    glBindBuffer(GL_ARRAY_BUFFER, lineVbo_);
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(LineVertex), nullptr);
+    glEnableVertexAttribArray(1);
+    glVertexAttribPointer(1, 4, GL_FLOAT, GL_FALSE, sizeof(LineVertex),
+                          reinterpret_cast<void*>(offsetof(LineVertex, color)));
+
+    glGenVertexArrays(1, &filmVao_);
+    glGenBuffers(1, &filmVbo_);
+    glBindVertexArray(filmVao_);
+    glBindBuffer(GL_ARRAY_BUFFER, filmVbo_);
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 5 * sizeof(float), nullptr);
+    glEnableVertexAttribArray(1);
+    glVertexAttribPointer(1, 2, GL_FLOAT, GL_FALSE, 5 * sizeof(float),
+                          reinterpret_cast<void*>(3 * sizeof(float)));
+    glBindVertexArray(0);
+}
+
+SceneRenderer::~SceneRenderer() {
+    const GLuint buffers[] = {meshVbo_, meshEbo_, sphereVbo_, sphereEbo_, lineVbo_, filmVbo_};
+    glDeleteBuffers(6, buffers);
+    const GLuint arrays[] = {meshVao_, sphereVao_, lineVao_, filmVao_};
+    glDeleteVertexArrays(4, arrays);
+    if (msFbo_) glDeleteFramebuffers(1, &msFbo_);
+    if (resolveFbo_) glDeleteFramebuffers(1, &resolveFbo_);
+    if (msColor_) glDeleteRenderbuffers(1, &msColor_);
+    if (msDepth_) glDeleteRenderbuffers(1, &msDepth_);
+    if (resolveDepth_) glDeleteRenderbuffers(1, &resolveDepth_);
+    if (resolveTexture_) glDeleteTextures(1, &resolveTexture_);
+}
+
+void SceneRenderer::resize(glm::ivec2 size) {
+    if (size == size_ && msFbo_) return;
+    size_ = size;
+    if (!msFbo_) {
+        glGenFramebuffers(1, &msFbo_);
+        glGenRenderbuffers(1, &msColor_);
+        glGenRenderbuffers(1, &msDepth_);
+        glGenFramebuffers(1, &resolveFbo_);
+        glGenTextures(1, &resolveTexture_);
+        glGenRenderbuffers(1, &resolveDepth_);
+    }
+    glBindRenderbuffer(GL_RENDERBUFFER, msColor_);
+    glRenderbufferStorageMultisample(GL_RENDERBUFFER, kSamples, GL_RGBA8, size.x, size.y);
+    glBindRenderbuffer(GL_RENDERBUFFER, msDepth_);
+    glRenderbufferStorageMultisample(GL_RENDERBUFFER, kSamples, GL_DEPTH_COMPONENT24, size.x,
+                                     size.y);
+    glBindFramebuffer(GL_FRAMEBUFFER, msFbo_);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, msColor_);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, msDepth_);
+
+    glBindTexture(GL_TEXTURE_2D, resolveTexture_);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, size.x, size.y, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glBindFramebuffer(GL_FRAMEBUFFER, resolveFbo_);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, resolveTexture_, 0);
+    glBindRenderbuffer(GL_RENDERBUFFER, resolveDepth_);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, size.x, size.y);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, resolveDepth_);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+void SceneRenderer::uploadMesh(const app::LoadedScene& scene) {
+    if (scene.generation == meshGeneration_) return;
+    meshGeneration_ = scene.generation;
+    const Mesh& mesh = *scene.mesh;
+    std::vector<glm::vec3> interleaved;
+    interleaved.reserve(mesh.positions.size() * 2);
+    for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
+        interleaved.push_back(mesh.positions[i]);
+        interleaved.push_back(i < mesh.normals.size() ? mesh.normals[i] : glm::vec3(0, 0, 1));
+    }
+    glBindVertexArray(meshVao_);
+    glBindBuffer(GL_ARRAY_BUFFER, meshVbo_);
+    glBufferData(GL_ARRAY_BUFFER, interleaved.size() * sizeof(glm::vec3), interleaved.data(),
+                 GL_STATIC_DRAW);
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 2 * sizeof(glm::vec3), nullptr);
+    glEnableVertexAttribArray(1);
+    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 2 * sizeof(glm::vec3),
+                          reinterpret_cast<void*>(sizeof(glm::vec3)));
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, meshEbo_);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, mesh.triangles.size() * sizeof(glm::uvec3),
+                 mesh.triangles.data(), GL_STATIC_DRAW);
+    meshIndexCount_ = GLsizei(mesh.triangles.size() * 3);
+    glBindVertexArray(0);
+}
+
+void SceneRenderer::draw(const app::LoadedScene* scene, const Pose& pose, const app::View3d& view,
+                         GLuint filmTexture, glm::ivec2 size, bool multisample) {
+    size = glm::max(size, glm::ivec2(16));
+    resize(size);
+    labels_.clear();
+
+    glBindFramebuffer(GL_FRAMEBUFFER, multisample ? msFbo_ : resolveFbo_);
+    glViewport(0, 0, size.x, size.y);
+    glClearColor(0.11f, 0.12f, 0.14f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+
+    if (scene) {
+        // Isocenter frame: volume-world point p -> p - centre + offset.
+        const glm::dvec3 shift = pose.offset - scene->center;
+        auto toScene = [&](const glm::dvec3& p) { return glm::vec3(p + shift); };
+        const ProjectionGeometry g = app::appGeometry(*scene, pose);
+        const DetectorGeometry& d = g.detector;
+        const glm::dvec3 corners[4] = {d.pixelCenter(-0.5, -0.5), d.pixelCenter(d.size.x - 0.5, -0.5),
+                                       d.pixelCenter(d.size.x - 0.5, d.size.y - 0.5),
+                                       d.pixelCenter(-0.5, d.size.y - 0.5)};
+        const glm::vec3 source = toScene(g.source);
+        double radius = glm::length(source);
+        for (const auto& c : corners) radius = std::max(radius, double(glm::length(toScene(c))));
+        for (const auto& c : scene->boxCorners)
+            radius = std::max(radius, double(glm::length(toScene(c))));
+
+        const OrbitCamera camera = orbitCamera(view, radius, float(size.x) / float(size.y));
+        const glm::mat4 viewProjection = camera.projection * camera.view;
+        auto label = [&](glm::vec3 p, const std::string& text, glm::vec4 color) {
+            const glm::vec4 clip = viewProjection * glm::vec4(p, 1.0f);
+            if (clip.w <= 0.0f) return;
+            const glm::vec2 ndc = glm::vec2(clip) / clip.w;
+            labels_.push_back({{(ndc.x * 0.5f + 0.5f) * size.x, (0.5f - ndc.y * 0.5f) * size.y},
+                               text, color});
+        };
+
+        glEnable(GL_DEPTH_TEST);
+        glDisable(GL_CULL_FACE);
+        glDisable(GL_BLEND);
+
+        meshShader_.use();
+        meshShader_.set("uViewProjection", viewProjection);
+        meshShader_.set("uCameraPosition", camera.position);
+        if (view.showBone && meshIndexCount_ >= 0 && scene->mesh) {
+            uploadMesh(*scene);
+            meshShader_.set("uModel", glm::translate(glm::mat4(1.0f), glm::vec3(shift)));
+            meshShader_.set("uColor", kBoneColor);
+            meshShader_.set("uAmbient", 0.25f);
+            glBindVertexArray(meshVao_);
+            glDrawElements(GL_TRIANGLES, meshIndexCount_, GL_UNSIGNED_INT, nullptr);
+        }
+        if (view.showApparatus) {
+            const float markerRadius = float(radius) * 0.02f;
+            meshShader_.set("uModel", glm::scale(glm::translate(glm::mat4(1.0f), source),
+                                                 glm::vec3(markerRadius)));
+            meshShader_.set("uColor", kSourceColor);
+            meshShader_.set("uAmbient", 0.5f);
+            glBindVertexArray(sphereVao_);
+            glDrawElements(GL_TRIANGLES, sphereIndexCount_, GL_UNSIGNED_INT, nullptr);
+
+            // Film: a quad textured with the user's DRR; texture t = 0 is image row 0.
+            const float uv[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+            std::vector<float> quad;
+            for (int i : {0, 1, 2, 0, 2, 3}) {
+                const glm::vec3 p = toScene(corners[i]);
+                quad.insert(quad.end(), {p.x, p.y, p.z, uv[i][0], uv[i][1]});
+            }
+            filmShader_.use();
+            filmShader_.set("uViewProjection", viewProjection);
+            filmShader_.set("uImage", 0);
+            glActiveTexture(GL_TEXTURE0);
+            glBindTexture(GL_TEXTURE_2D, filmTexture);
+            glBindVertexArray(filmVao_);
+            glBindBuffer(GL_ARRAY_BUFFER, filmVbo_);
+            glBufferData(GL_ARRAY_BUFFER, quad.size() * sizeof(float), quad.data(), GL_STREAM_DRAW);
+            glDrawArrays(GL_TRIANGLES, 0, 6);
+        }
+
+        std::vector<LineVertex> lines;
+        if (view.showBox) {
+            for (int a = 0; a < 8; ++a)
+                for (int bit = 1; bit < 8; bit <<= 1)
+                    if (!(a & bit))
+                        line(lines, toScene(scene->boxCorners[a]),
+                             toScene(scene->boxCorners[a | bit]), kBoxColor);
+            // x/y/z axes from the first voxel corner, longer than the box (as in 2011).
+            const glm::vec3 o = toScene(scene->boxCorners[0]);
+            for (int axis = 0; axis < 3; ++axis) {
+                const glm::vec3 tip =
+                    o + (toScene(scene->boxCorners[1 << axis]) - o) * 1.35f;
+                line(lines, o, tip, kAxisColors[axis]);
+                label(tip, std::string(1, "xyz"[axis]), kAxisColors[axis]);
+            }
+        }
+        if (view.showApparatus) {
+            for (int i = 0; i < 4; ++i) {
+                line(lines, source, toScene(corners[i]), kConeColor);
+                line(lines, toScene(corners[i]), toScene(corners[(i + 1) % 4]), kFilmFrameColor);
+            }
+            line(lines, source, toScene(d.center()), glm::vec4(glm::vec3(kConeColor), 0.35f));
+            label(source, "source", glm::vec4(kSourceColor, 1.0f));
+            label(toScene(corners[2]), "film", kFilmFrameColor);
+        }
+        const std::size_t lineVertexCount = lines.size();
+        if (view.showApparatus)  // translucent cone faces, drawn last without depth writes
+            for (int i = 0; i < 4; ++i) {
+                lines.push_back({source, kConeFaceColor});
+                lines.push_back({toScene(corners[i]), kConeFaceColor});
+                lines.push_back({toScene(corners[(i + 1) % 4]), kConeFaceColor});
+            }
+        lineShader_.use();
+        lineShader_.set("uViewProjection", viewProjection);
+        glBindVertexArray(lineVao_);
+        glBindBuffer(GL_ARRAY_BUFFER, lineVbo_);
+        glBufferData(GL_ARRAY_BUFFER, lines.size() * sizeof(LineVertex), lines.data(),
+                     GL_STREAM_DRAW);
+        glEnable(GL_BLEND);
+        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        glDrawArrays(GL_LINES, 0, GLsizei(lineVertexCount));
+        glDepthMask(GL_FALSE);
+        glDrawArrays(GL_TRIANGLES, GLsizei(lineVertexCount), GLsizei(lines.size() - lineVertexCount));
+        glDepthMask(GL_TRUE);
+        glDisable(GL_BLEND);
+        glDisable(GL_DEPTH_TEST);
+        glBindVertexArray(0);
+    }
+
+    if (multisample) {
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, msFbo_);
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, resolveFbo_);
+        glBlitFramebuffer(0, 0, size.x, size.y, 0, 0, size.x, size.y, GL_COLOR_BUFFER_BIT,
+                          GL_NEAREST);
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+std::vector<std::uint8_t> SceneRenderer::readPixels() const {
+    std::vector<std::uint8_t> bottomUp(std::size_t(size_.x) * size_.y * 4), out(bottomUp.size());
+    glBindFramebuffer(GL_FRAMEBUFFER, resolveFbo_);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, size_.x, size_.y, GL_RGBA, GL_UNSIGNED_BYTE, bottomUp.data());
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    const std::size_t row = std::size_t(size_.x) * 4;
+    for (int y = 0; y < size_.y; ++y)
+        std::copy_n(&bottomUp[(size_.y - 1 - y) * row], row, &out[y * row]);
+    return out;
+}
+
+}  // namespace fm::render

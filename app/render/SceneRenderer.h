@@ -1,0 +1,78 @@
+#pragma once
+// The 3D view: the 2011 model figure made live. The bone surface, the CT box with its x/y/z
+// axes, the X-ray source, the film (textured with the user's DRR) and the ray cone, drawn
+// offscreen in the isocenter frame: the CT sits at its offset, the source and film turn with
+// azimuth, elevation and rotation. The result is a texture the UI shows.
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "geometry/Pose.h"
+#include "platform/Gl.h"
+#include "render/Shader.h"
+#include "state/AppState.h"
+
+namespace fm::app {
+struct LoadedScene;
+}
+
+namespace fm::render {
+
+struct SceneLabel {
+    glm::vec2 pixel;     // position in the view, pixels from the top-left
+    std::string text;
+    glm::vec4 color;
+};
+
+class SceneRenderer {
+public:
+    SceneRenderer();
+    ~SceneRenderer();
+    SceneRenderer(const SceneRenderer&) = delete;
+    SceneRenderer& operator=(const SceneRenderer&) = delete;
+
+    // Draws into the offscreen texture of the given size (re-created when the size changes).
+    // `filmTexture` is the user's DRR (0: a blank film). Restores the default framebuffer.
+    // `multisample` false draws straight into the shown texture (fast while interacting).
+    void draw(const app::LoadedScene* scene, const Pose& pose, const app::View3d& view,
+              GLuint filmTexture, glm::ivec2 size, bool multisample = true);
+
+    GLuint texture() const { return resolveTexture_; }
+    // The last drawn view as RGBA, row 0 = top (golden tests of the 3D view alone).
+    std::vector<std::uint8_t> readPixels() const;
+    glm::ivec2 size() const { return size_; }
+    // Labels for the axes, source and film at their projected positions (last draw).
+    const std::vector<SceneLabel>& labels() const { return labels_; }
+
+private:
+    void resize(glm::ivec2 size);
+    void uploadMesh(const app::LoadedScene& scene);
+
+    ShaderProgram meshShader_, lineShader_, filmShader_;
+    glm::ivec2 size_{0};
+    static constexpr int kSamples = 4;
+    GLuint msFbo_ = 0, msColor_ = 0, msDepth_ = 0;      // multisampled target
+    GLuint resolveFbo_ = 0, resolveTexture_ = 0;        // what the UI shows
+    GLuint resolveDepth_ = 0;                           // for single-sample drawing
+    GLuint meshVao_ = 0, meshVbo_ = 0, meshEbo_ = 0;
+    GLsizei meshIndexCount_ = 0;
+    std::uint64_t meshGeneration_ = 0;
+    GLuint sphereVao_ = 0, sphereVbo_ = 0, sphereEbo_ = 0;
+    GLsizei sphereIndexCount_ = 0;
+    GLuint lineVao_ = 0, lineVbo_ = 0;
+    GLuint filmVao_ = 0, filmVbo_ = 0;
+    std::vector<SceneLabel> labels_;
+};
+
+// The orbit camera of the 3D view for a scene of radius `sceneRadiusMm` around the isocenter.
+struct OrbitCamera {
+    glm::mat4 view{1.0f}, projection{1.0f};
+    glm::vec3 position{0.0f};
+};
+OrbitCamera orbitCamera(const app::View3d& view, double sceneRadiusMm, float aspect);
+
+}  // namespace fm::render

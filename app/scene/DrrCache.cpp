@@ -1,0 +1,39 @@
+#include "scene/DrrCache.h"
+
+#include <algorithm>
+#include <chrono>
+
+namespace fm::app {
+
+ProjectionGeometry appGeometry(const LoadedScene& scene, const Pose& pose, int downsample) {
+    ProjectionGeometry g = sceneGeometry(pose, scene.setup, scene.center);
+    return downsample > 1 ? g.downsampled(downsample) : g;
+}
+
+DrrRender DrrCache::get(const LoadedScene& scene, const Pose& pose, int downsample, DrrTrace trace,
+                        int threads) {
+    const DrrKey key{scene.generation, pose.toArray(), downsample, trace};
+    auto hit = std::find_if(entries_.begin(), entries_.end(),
+                            [&](const auto& e) { return e.key == key; });
+    if (hit != entries_.end()) {
+        DrrRender out{hit->image, hit->milliseconds, true};
+        std::rotate(entries_.begin(), hit, hit + 1);  // most recent first
+        return out;
+    }
+    DrrRenderOptions options;
+    options.trace = trace;
+    options.threads = threads;
+    // Approx steps at about the voxel size: accurate enough for a preview while dragging.
+    const Volume& v = *scene.volume;
+    options.approxStepMm = std::min({v.spacing.x, v.spacing.y, v.spacing.z}) * double(downsample);
+    const auto start = std::chrono::steady_clock::now();
+    Image image = renderDrr(*scene.drrVolume, appGeometry(scene, pose, downsample), options);
+    const double ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    ++renders_;
+    entries_.push_front({key, image, ms});
+    if (entries_.size() > capacity_) entries_.pop_back();
+    return {std::move(image), ms, false};
+}
+
+}  // namespace fm::app

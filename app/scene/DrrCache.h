@@ -1,0 +1,52 @@
+#pragma once
+// DRRs keyed by everything they depend on (scene, pose, detector resampling, trace mode), so a
+// DRR is rendered only when one of those changes. Holds the few most recent images.
+#include <array>
+#include <cstdint>
+#include <deque>
+
+#include "core/Image.h"
+#include "drr/Drr.h"
+#include "geometry/Pose.h"
+#include "scene/LoadedScene.h"
+
+namespace fm::app {
+
+struct DrrKey {
+    std::uint64_t sceneGeneration = 0;
+    std::array<double, 6> pose{};
+    int downsample = 1;               // detector factor (coarse preview > 1)
+    DrrTrace trace = DrrTrace::Exact;
+    bool operator==(const DrrKey&) const = default;
+};
+
+struct DrrRender {
+    Image image;
+    double milliseconds = 0.0;   // time the render took (also when served from the cache)
+    bool fromCache = false;
+};
+
+class DrrCache {
+public:
+    explicit DrrCache(std::size_t capacity = 4) : capacity_(capacity) {}
+    // The DRR of `pose` in `scene`, rendered now unless cached. `threads` as DrrRenderOptions.
+    DrrRender get(const LoadedScene& scene, const Pose& pose, int downsample, DrrTrace trace,
+                  int threads = 0);
+    std::size_t renders() const { return renders_; }  // how many were actually rendered
+    void clear() { entries_.clear(); }
+
+private:
+    std::size_t capacity_;
+    struct Entry {
+        DrrKey key;
+        Image image;
+        double milliseconds;
+    };
+    std::deque<Entry> entries_;  // most recent first
+    std::size_t renders_ = 0;
+};
+
+// The exact geometry the app renders for a pose in a scene (downsample 1 = full film).
+ProjectionGeometry appGeometry(const LoadedScene& scene, const Pose& pose, int downsample = 1);
+
+}  // namespace fm::app

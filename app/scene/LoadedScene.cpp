@@ -1,0 +1,102 @@
+#include "scene/LoadedScene.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+#include "core/Error.h"
+#include "match/PoseError.h"
+#include "mesh/MarchingCubes.h"
+#include "volume/VolumeSource.h"
+#include "volume/VolumeStats.h"
+
+namespace fm::app {
+namespace {
+
+std::atomic<std::uint64_t> nextGeneration{1};
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// Bone level: 300 HU for CTs; for volumes without units (e.g. the VTK head, bone ~1150 of
+// 0..3926) a level 60% of the way from the median to the 99th percentile.
+double boneIsoValue(const Volume& volume) {
+    if (volume.meta.units == ValueUnit::HounsfieldUnits) return 300.0;
+    const VolumeStats s = computeStats(volume, {50, 99});
+    return s.percentiles[0] + 0.6 * (s.percentiles[1] - s.percentiles[0]);
+}
+
+}  // namespace
+
+DrrValueOptions appDrrValueOptions(const Volume& volume) {
+    DrrValueOptions options;
+    // HU -> mu gives radiograph-like contrast; other units are integrated as stored.
+    options.values =
+        volume.meta.units == ValueUnit::HounsfieldUnits ? DrrValues::Mu : DrrValues::Raw;
+    return options;
+}
+
+std::shared_ptr<LoadedScene> buildScene(const std::string& spec, const SceneProgress& progress) {
+    auto scene = std::make_shared<LoadedScene>();
+    scene->spec = spec;
+
+    auto start = std::chrono::steady_clock::now();
+    progress("reading " + spec, 0.0f);
+    auto volume = std::make_shared<Volume>(loadVolume(spec));
+    scene->loadSeconds = secondsSince(start);
+
+    start = std::chrono::steady_clock::now();
+    progress("preparing the DRR volume", 0.35f);
+    scene->drrVolume = prepareDrrVolume(*volume, appDrrValueOptions(*volume));
+    scene->prepareSeconds = secondsSince(start);
+
+    start = std::chrono::steady_clock::now();
+    progress("meshing the bone (marching cubes)", 0.55f);
+    MarchingCubesOptions mc;
+    scene->isoValue = mc.isoValue = boneIsoValue(*volume);
+    scene->mesh = std::make_shared<Mesh>(marchingCubes(*volume, mc));
+    scene->meshSeconds = secondsSince(start);
+    progress("picking bone target points", 0.95f);
+    try {
+        scene->bonePoints = boneTargetPoints(*volume, scene->isoValue);
+    } catch (const Error&) {
+        scene->bonePoints.clear();  // no voxel reaches the bone level: no mTRE, no random pose
+    }
+    progress("done", 1.0f);
+
+    scene->center = volume->center();
+    for (int c = 0; c < 8; ++c) {
+        const glm::dvec3 ijk((c & 1) ? volume->dims.x - 0.5 : -0.5,
+                             (c & 2) ? volume->dims.y - 0.5 : -0.5,
+                             (c & 4) ? volume->dims.z - 0.5 : -0.5);
+        scene->boxCorners[c] = volume->indexToWorld(ijk);
+    }
+    const glm::dvec3 extent = volume->extent();
+    const double largest = std::max({extent.x, extent.y, extent.z});
+    // Offsets up to half the largest extent keep the CT in the beam; rounded to 10 mm.
+    scene->translationRangeMm = std::max(20.0, std::ceil(0.5 * largest / 10.0) * 10.0);
+
+    // The default film frames the knee phantom; a larger CT gets a larger film (same pixels) so
+    // its projection fits.
+    scene->setup = defaultSceneSetup();
+    const double magnification =
+        (scene->setup.sourceToIsocenterMm + scene->setup.isocenterToFilmMm) /
+        std::max(scene->setup.sourceToIsocenterMm, 1e-9);
+    const double needed = magnification * largest * 1.1;
+    const double have = std::min(scene->setup.filmSizeMm.x, scene->setup.filmSizeMm.y);
+    if (have > 0.0 && needed > have) scene->setup.filmSizeMm *= needed / have;
+
+    char text[256];
+    std::snprintf(text, sizeof(text), "%d x %d x %d voxels of %.3g x %.3g x %.3g mm\n%zu bone triangles (iso %.4g)",
+                  volume->dims.x, volume->dims.y, volume->dims.z, volume->spacing.x,
+                  volume->spacing.y, volume->spacing.z, scene->mesh->triangleCount(), scene->isoValue);
+    scene->summary = text;
+    scene->volume = std::move(volume);
+    scene->generation = nextGeneration++;
+    return scene;
+}
+
+}  // namespace fm::app

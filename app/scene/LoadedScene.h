@@ -1,0 +1,44 @@
+#pragma once
+// A CT ready for the app: the volume, its prepared DRR form, its bone surface and the fixed
+// parts of the X-ray scene. Built off the UI thread, then shared read-only.
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "drr/Drr.h"
+#include "geometry/Pose.h"
+#include "mesh/Mesh.h"
+#include "volume/Volume.h"
+
+namespace fm::app {
+
+struct LoadedScene {
+    std::string spec;                         // what the user named
+    std::uint64_t generation = 0;             // changes with every loaded scene (cache keys)
+    std::shared_ptr<const Volume> volume;
+    DrrVolumePtr drrVolume;
+    std::shared_ptr<const Mesh> mesh;         // bone surface, world mm
+    double isoValue = 0.0;                    // the surface level used
+    SceneSetup setup;                         // distances and film, fitted to the volume
+    glm::dvec3 center{0.0};                   // Volume::center()
+    std::array<glm::dvec3, 8> boxCorners{};   // voxel-box corners, world mm (bit i: +i axis)
+    double translationRangeMm = 100.0;        // slider range for the offsets
+    std::vector<glm::dvec3> bonePoints;       // mTRE targets (engine/match); empty if no bone
+    double loadSeconds = 0.0, prepareSeconds = 0.0, meshSeconds = 0.0;
+    std::string summary;                      // one line for the UI
+};
+
+// Progress of buildScene: stage name and fraction 0..1 over the stages.
+using SceneProgress = std::function<void(const std::string& stage, float fraction)>;
+
+// Loads `spec` (path or phantom:NAME), prepares the DRR volume and meshes the bone. Throws the
+// reader's fm::Error unchanged when the volume cannot be loaded.
+std::shared_ptr<LoadedScene> buildScene(const std::string& spec, const SceneProgress& progress);
+
+// The DRR options the app uses for every image (both reference and user).
+DrrValueOptions appDrrValueOptions(const Volume& volume);
+
+}  // namespace fm::app

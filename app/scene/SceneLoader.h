@@ -1,0 +1,75 @@
+#pragma once
+// Loads and meshes a CT on a background thread so the UI never freezes. One load at a time;
+// a request made while busy replaces any queued one and starts when the current one ends.
+// The two most recent scenes are kept (volume, DRR volume, mesh): re-opening one whose file has
+// not changed (same size and modification time) is instant.
+#include <chrono>
+#include <deque>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+
+#include "scene/LoadedScene.h"
+
+namespace fm::app {
+
+class SceneLoader {
+public:
+    SceneLoader() = default;
+    ~SceneLoader();
+    SceneLoader(const SceneLoader&) = delete;
+    SceneLoader& operator=(const SceneLoader&) = delete;
+
+    void start(const std::string& spec);
+
+    struct Progress {
+        bool busy = false;
+        std::string spec, stage;
+        float fraction = 0.0f;
+        double elapsedSeconds = 0.0;
+    };
+    Progress progress() const;
+
+    // A finished load: the scene, or the reader's error message (scene null).
+    struct Result {
+        std::string spec;
+        std::shared_ptr<LoadedScene> scene;
+        std::string error;
+    };
+    // The result of the last finished load, once; starts a queued request.
+    std::optional<Result> poll();
+    // Blocks until nothing is loading or queued, then returns the last result (headless runs).
+    std::optional<Result> wait();
+
+private:
+    void launch(const std::string& spec);  // mutex held by caller
+
+    mutable std::mutex mutex_;
+    std::thread worker_;
+    bool busy_ = false;
+    std::string spec_, stage_;
+    float fraction_ = 0.0f;
+    std::chrono::steady_clock::time_point started_;
+    std::optional<std::string> queued_;
+    std::optional<Result> finished_;
+
+    struct CacheEntry {
+        std::string key;  // spec + file size + modification time
+        std::shared_ptr<LoadedScene> scene;
+    };
+    std::deque<CacheEntry> recent_;  // most recent first
+    std::size_t cacheHits_ = 0;
+
+public:
+    std::size_t cacheHits() const {
+        std::lock_guard lock(mutex_);
+        return cacheHits_;
+    }
+};
+
+// What identifies a loaded file's content cheaply: the spec plus, for paths, size and time.
+std::string sceneCacheKey(const std::string& spec);
+
+}  // namespace fm::app

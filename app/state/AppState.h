@@ -1,0 +1,113 @@
+#pragma once
+// Everything the app shows and the user edits, as plain data. The UI panels read and edit it;
+// the App turns requests into engine calls; nothing here draws or computes.
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "geometry/Pose.h"
+
+namespace fm::app {
+
+// The six parameters in Pose::toArray() order.
+enum Parameter { kOffsetX = 0, kOffsetY, kOffsetZ, kAzimuth, kElevation, kRotation, kParameterCount };
+
+struct ParameterSpec {
+    const char* name;   // "x offset", "azimuth", ...
+    const char* unit;   // "mm" or "deg"
+    double min, max;
+};
+
+// The 2011 ranges for the angles; the translation range is set per volume (fits the CT).
+std::array<ParameterSpec, kParameterCount> parameterSpecs(double translationRangeMm);
+
+enum class CompareMode { Difference, Overlay, Checkerboard };
+
+struct DisplaySettings {
+    bool autoWindow = true;  // window/level follow the reference DRR's range
+    float window = 1.0f;     // width of the displayed value range
+    float level = 0.5f;      // centre of the displayed value range
+    CompareMode compare = CompareMode::Difference;
+};
+
+// The orbit camera of the 3D view (degrees around the isocenter; zoom 1 frames the scene).
+struct View3d {
+    float azimuthDeg = 35.0f;
+    float elevationDeg = 25.0f;
+    float zoom = 1.6f;
+    bool showBone = true;
+    bool showBox = true;
+    bool showApparatus = true;  // source, film and ray cone
+    static View3d defaults() { return {}; }
+};
+
+// What Match reported, kept for display (all numbers come from engine/match).
+struct MatchOutcome {
+    bool matched = false;
+    std::array<double, kParameterCount> error{};   // user minus reference, per parameter
+    std::array<int, kParameterCount> direction{};  // +1 too high, -1 too low, 0 within tolerance
+    int furthestParameter = -1;                    // the one furthest off (-1 when matched)
+    double poseErrorMm = 0.0;                      // mean target registration error over the bone
+    double ncc = 0.0;                              // image similarity of the two DRRs
+    std::string verdict;                           // one line: "The images match." / hint
+    int attempt = 0;                               // which attempt this was
+};
+
+struct LoadStatus {
+    bool loading = false;
+    std::string requestedSpec;    // what is being loaded
+    std::string stage;            // "reading", "preparing DRR volume", "meshing"
+    float progress = 0.0f;        // 0..1 over the stages
+    double elapsedSeconds = 0.0;
+    std::string loadedSpec;       // the scene on screen
+    std::string summary;          // dims, spacing, triangles of the scene on screen
+    std::string error;            // the reader's message when the last load failed
+};
+
+struct Timings {
+    double userDrrMs = 0.0;       // last user DRR render
+    bool userDrrCoarse = false;   // ... and whether it was the coarse preview
+    double lastExactMs = 0.0;
+    double lastCoarseMs = 0.0;
+    double referenceDrrMs = 0.0;
+    double frameMs = 0.0;         // CPU time of the last whole frame
+    int coarseFactor = 2;         // detector downsampling while dragging
+};
+
+// Things the UI asks for; the App consumes them after the UI pass.
+struct Requests {
+    bool newReference = false;
+    bool match = false;
+    bool reveal = false;
+    bool resetView = false;
+    std::optional<std::string> loadVolume;
+};
+
+struct AppState {
+    Pose userPose;
+    Pose referencePose;
+    bool referenceRevealed = false;
+    int attempts = 0;
+    std::optional<MatchOutcome> match;
+    bool matchIsStale = false;    // the pose moved since the last Match
+    std::string referenceSource;  // "data/reference_poses.txt #3" or "random pose"
+
+    double translationRangeMm = 100.0;
+    // The judge's tolerances (engine/match), shown with the verdict and in Help.
+    double toleranceOffsetMm = 0.0, toleranceAngleDeg = 0.0, toleranceMinNcc = 0.0;
+    DisplaySettings display;
+    View3d view;
+    bool showHelp = false;
+    bool showTimings = true;      // off for golden images: timings differ run to run
+    std::string volumePathField;
+    LoadStatus load;
+    Timings timings;
+
+    bool interacting = false;     // a parameter slider is being dragged: coarse preview
+    bool coarseWhileDragging = true;  // off: exact DRRs even while dragging (for measuring)
+    std::uint64_t frame = 0;
+    Requests requests;
+};
+
+}  // namespace fm::app

@@ -1,0 +1,268 @@
+#include "ui/App.h"
+
+#include <imgui.h>
+#include <imgui_impl_opengl3.h>
+
+#include <algorithm>
+#include <chrono>
+
+#include "platform/Gl.h"
+#include "render/SceneRenderer.h"
+#include "render/Texture.h"
+#include "scene/Matching.h"
+
+namespace fm::app {
+namespace {
+
+double msSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+        .count();
+}
+
+}  // namespace
+
+App::App(RenderBackend& backend, AppOptions options)
+    : backend_(backend), options_(std::move(options)), nextSeed_(options_.seed) {
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGui::StyleColorsDark();
+    ImGuiIO& io = ImGui::GetIO();
+    io.IniFilename = nullptr;  // fixed layout: nothing to remember between runs
+    backend_.initImGui();
+    ImGui_ImplOpenGL3_Init("#version 330 core");
+
+    referenceTexture_ = std::make_unique<render::Texture>();
+    userTexture_ = std::make_unique<render::Texture>();
+    compareTexture_ = std::make_unique<render::Texture>();
+    sceneRenderer_ = std::make_unique<render::SceneRenderer>();
+
+    if (options_.userPose) state_.userPose = *options_.userPose;
+    if (options_.view) state_.view = *options_.view;
+    state_.showTimings = options_.showTimings;
+    const MatchTolerancesView tolerances = matchTolerances();
+    state_.toleranceOffsetMm = tolerances.offsetMm;
+    state_.toleranceAngleDeg = tolerances.angleDeg;
+    state_.toleranceMinNcc = tolerances.minNcc;
+    state_.volumePathField = options_.volumeSpec;
+    state_.requests.loadVolume = options_.volumeSpec;
+}
+
+App::~App() {
+    sceneRenderer_.reset();
+    referenceTexture_.reset();
+    userTexture_.reset();
+    compareTexture_.reset();
+    ImGui_ImplOpenGL3_Shutdown();
+    backend_.shutdownImGui();
+    ImGui::DestroyContext();
+}
+
+void App::waitForLoad() {
+    processRequests();  // a load requested but not yet started
+    if (auto result = loader_.wait()) installLoadResult(std::move(*result));
+    state_.load.loading = false;
+}
+
+void App::installLoadResult(SceneLoader::Result result) {
+    if (!result.scene) {
+        // The current scene stays; the reader's message is shown as is.
+        state_.load.error = result.error;
+        return;
+    }
+    scene_ = std::move(result.scene);
+    state_.load.error.clear();
+    state_.load.loadedSpec = scene_->spec;
+    state_.load.summary = scene_->summary;
+    state_.translationRangeMm = scene_->translationRangeMm;
+    for (int a = 0; a < 3; ++a)
+        state_.userPose.offset[a] = std::clamp(state_.userPose.offset[a],
+                                               -scene_->translationRangeMm,
+                                               scene_->translationRangeMm);
+    referenceCache_.clear();
+    userCache_.clear();
+    referenceKey_.reset();
+    userKey_.reset();
+    if (firstScene_ && options_.referencePose) {
+        state_.referencePose = *options_.referencePose;
+        state_.referenceSource = "given on the command line";
+        state_.referenceRevealed = false;
+        state_.attempts = 0;
+        state_.match.reset();
+    } else {
+        newReference();
+    }
+    firstScene_ = false;
+}
+
+void App::newReference() {
+    if (!scene_) return;
+    const bool haveReference = referenceKey_.has_value();
+    const ReferenceChoice choice = chooseReference(*scene_, nextSeed_++,
+                                                   haveReference ? &state_.referencePose : nullptr);
+    state_.referencePose = choice.pose;
+    state_.referenceSource = choice.source;
+    state_.referenceRevealed = false;
+    state_.attempts = 0;
+    state_.match.reset();
+    state_.matchIsStale = false;
+}
+
+void App::processRequests() {
+    Requests requests = std::move(state_.requests);
+    state_.requests = {};
+    if (requests.resetView) state_.view = options_.view.value_or(View3d::defaults());
+    if (requests.reveal) state_.referenceRevealed = true;
+    if (requests.loadVolume) {
+        state_.load.error.clear();
+        loader_.start(*requests.loadVolume);
+    }
+    if (requests.newReference) newReference();
+    if (requests.match && scene_) {
+        // Judge the exact images, whatever the preview showed.
+        const Image user = userCache_.get(*scene_, state_.userPose, 1, DrrTrace::Exact,
+                                          options_.drrThreads).image;
+        const Image reference = referenceCache_.get(*scene_, state_.referencePose, 1,
+                                                    DrrTrace::Exact, options_.drrThreads).image;
+        ++state_.attempts;
+        MatchOutcome outcome =
+            evaluateMatch(*scene_, state_.userPose, state_.referencePose, user, reference);
+        outcome.attempt = state_.attempts;
+        state_.match = std::move(outcome);
+        state_.matchIsStale = false;
+    }
+}
+
+void App::updateImages() {
+    if (!scene_) return;
+    const int threads = options_.drrThreads;
+    const DrrKey referenceKey{scene_->generation, state_.referencePose.toArray(), 1,
+                              DrrTrace::Exact};
+    if (referenceKey_ != referenceKey) {
+        DrrRender r = referenceCache_.get(*scene_, state_.referencePose, 1, DrrTrace::Exact,
+                                          threads);
+        referenceDrr_ = std::move(r.image);
+        state_.timings.referenceDrrMs = r.milliseconds;
+        referenceKey_ = referenceKey;
+        ++referenceVersion_;
+    }
+
+    // While a slider is dragged: a coarser film and sampled rays; exact again on release.
+    const bool coarse = state_.interacting && state_.coarseWhileDragging;
+    const int factor = coarse ? state_.timings.coarseFactor : 1;
+    const DrrTrace trace = DrrTrace::Exact;
+    const DrrKey userKey{scene_->generation, state_.userPose.toArray(), factor, trace};
+    if (userKey_ != userKey) {
+        DrrRender r = userCache_.get(*scene_, state_.userPose, factor, trace, threads);
+        userDrr_ = std::move(r.image);
+        state_.timings.userDrrMs = r.milliseconds;
+        state_.timings.userDrrCoarse = coarse;
+        (coarse ? state_.timings.lastCoarseMs : state_.timings.lastExactMs) = r.milliseconds;
+        if (!r.fromCache) ++(coarse ? coarseUserRenders_ : exactUserRenders_);
+        userKey_ = userKey;
+        ++userVersion_;
+    }
+
+    if (state_.display.autoWindow) {
+        const render::WindowLevel wl = render::fullRange(referenceDrr_);
+        state_.display.window = wl.window;
+        state_.display.level = wl.level;
+    }
+    const DisplayKey key{referenceVersion_, userVersion_, state_.display.window,
+                         state_.display.level, state_.display.compare};
+    if (key == shownKey_) return;
+    const render::WindowLevel wl{state_.display.window, state_.display.level};
+    if (key.reference != shownKey_.reference || key.window != shownKey_.window ||
+        key.level != shownKey_.level)
+        referenceTexture_->upload(referenceDrr_.width, referenceDrr_.height,
+                                  render::windowedRgba(referenceDrr_, wl));
+    userTexture_->upload(userDrr_.width, userDrr_.height, render::windowedRgba(userDrr_, wl));
+    // The comparison needs equal sizes: during a coarse drag, compare with a coarse reference.
+    const Image& reference =
+        userDrr_.width == referenceDrr_.width
+            ? referenceDrr_
+            : referenceCache_.get(*scene_, state_.referencePose, factor, DrrTrace::Exact, threads)
+                  .image;
+    std::vector<std::uint8_t> rgba;
+    switch (state_.display.compare) {
+        case CompareMode::Difference: rgba = render::differenceRgba(reference, userDrr_, wl); break;
+        case CompareMode::Overlay: rgba = render::overlayRgba(reference, userDrr_, wl); break;
+        case CompareMode::Checkerboard:
+            rgba = render::checkerboardRgba(reference, userDrr_, wl, std::max(8, userDrr_.width / 8));
+            break;
+    }
+    if (!rgba.empty()) compareTexture_->upload(userDrr_.width, userDrr_.height, rgba);
+    shownKey_ = key;
+}
+
+void App::frame() {
+    const auto start = std::chrono::steady_clock::now();
+    backend_.newFrame();
+    for (auto& path : backend_.takeDroppedPaths()) {
+        state_.volumePathField = path;
+        state_.requests.loadVolume = path;
+    }
+    if (auto result = loader_.poll()) installLoadResult(std::move(*result));
+    const SceneLoader::Progress progress = loader_.progress();
+    state_.load.loading = progress.busy;
+    state_.load.requestedSpec = progress.spec;
+    state_.load.stage = progress.stage;
+    state_.load.progress = progress.fraction;
+    state_.load.elapsedSeconds = progress.elapsedSeconds;
+
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui::NewFrame();
+    state_.interacting = false;
+    UiTextures textures;
+    textures.reference = referenceTexture_->empty() ? 0 : referenceTexture_->id();
+    textures.user = userTexture_->empty() ? 0 : userTexture_->id();
+    textures.compare = compareTexture_->empty() ? 0 : compareTexture_->id();
+    textures.scene3d = sceneRenderer_->texture();
+    ui_.draw(state_, textures);
+
+    processRequests();
+    updateImages();
+
+    // The 3D view is redrawn only when something it shows changed; while the user drags a
+    // slider or orbits it skips multisampling (4x MSAA costs ~4x on llvmpipe).
+    const bool fast = state_.interacting || ImGui::IsMouseDown(ImGuiMouseButton_Left);
+    const SceneKey sceneKey{scene_ ? scene_->generation : 0, state_.userPose.toArray(),
+                            state_.view.azimuthDeg, state_.view.elevationDeg, state_.view.zoom,
+                            state_.view.showBone, state_.view.showBox,
+                            state_.view.showApparatus, ui_.sceneViewSize(), shownKey_.user,
+                            shownKey_.window, shownKey_.level, fast};
+    if (sceneKey != sceneKey_) {
+        sceneRenderer_->draw(scene_.get(), state_.userPose, state_.view,
+                             userTexture_->empty() ? 0 : userTexture_->id(), ui_.sceneViewSize(),
+                             !fast);
+        sceneKey_ = sceneKey;
+        ++sceneDraws_;
+    }
+    std::vector<std::pair<glm::vec2, std::string>> labels;
+    std::vector<glm::vec4> colors;
+    for (const auto& l : sceneRenderer_->labels()) {
+        labels.emplace_back(l.pixel, l.text);
+        colors.push_back(l.color);
+    }
+    ui_.drawSceneLabels(labels, colors);
+    ImGui::Render();
+
+    const glm::ivec2 fb = backend_.framebufferSize();
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, fb.x, fb.y);
+    glClearColor(0.06f, 0.06f, 0.07f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    backend_.present();
+    // Nothing moving: the window may sleep until the next event instead of redrawing.
+    backend_.setIdle(!state_.load.loading && !fast && !state_.interacting);
+    ++state_.frame;
+    state_.timings.frameMs = msSince(start);
+}
+
+render::RgbaImage App::capture() const {
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    const glm::ivec2 fb = backend_.framebufferSize();
+    return render::readFramebuffer(fb.x, fb.y);
+}
+
+}  // namespace fm::app

@@ -1,0 +1,106 @@
+#pragma once
+// The matching app: one frame loop shared by the window and the headless screenshot. The
+// backend (GLFW or OSMesa) is chosen by the caller; everything else is identical.
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <random>
+#include <string>
+
+#include "core/Image.h"
+#include "platform/RenderBackend.h"
+#include "render/ImageDisplay.h"
+#include "render/Screenshot.h"
+#include "scene/DrrCache.h"
+#include "scene/SceneLoader.h"
+#include "state/AppState.h"
+#include "ui/Ui.h"
+
+namespace fm::render {
+class Texture;
+class SceneRenderer;
+}  // namespace fm::render
+
+namespace fm::app {
+
+struct AppOptions {
+    std::string volumeSpec = "phantom:knee";
+    std::optional<Pose> userPose;
+    std::optional<Pose> referencePose;   // otherwise chosen by chooseReference(seed)
+    std::optional<View3d> view;
+    std::uint64_t seed = 1;              // reference choice; the window passes the clock
+    int drrThreads = 0;                  // 0 = all cores
+    bool showTimings = true;             // golden images turn them off (they vary)
+};
+
+class App {
+public:
+    App(RenderBackend& backend, AppOptions options);
+    ~App();
+    App(const App&) = delete;
+    App& operator=(const App&) = delete;
+
+    // One whole frame: input, UI, requests, DRRs, 3D view, ImGui draw, present.
+    void frame();
+    // Blocks until the background loader is idle and its result is installed (headless runs).
+    void waitForLoad();
+    // The last drawn frame (call after frame(), before the next one).
+    render::RgbaImage capture() const;
+
+    AppState& state() { return state_; }
+    const AppState& state() const { return state_; }
+    Ui& ui() { return ui_; }
+    const LoadedScene* scene() const { return scene_.get(); }
+    const Image& userDrr() const { return userDrr_; }
+    const Image& referenceDrr() const { return referenceDrr_; }
+    // How many user DRRs were actually rendered (not served from the cache), by kind.
+    int exactUserRenders() const { return exactUserRenders_; }
+    int coarseUserRenders() const { return coarseUserRenders_; }
+    int sceneDraws() const { return sceneDraws_; }  // how often the 3D view was redrawn
+    RenderBackend& backend() { return backend_; }
+    const render::SceneRenderer& sceneRenderer() const { return *sceneRenderer_; }
+
+private:
+    void installLoadResult(SceneLoader::Result result);
+    void processRequests();
+    void updateImages();
+    void newReference();
+
+    RenderBackend& backend_;
+    AppOptions options_;
+    AppState state_;
+    Ui ui_;
+    SceneLoader loader_;
+    std::shared_ptr<LoadedScene> scene_;
+    DrrCache referenceCache_{2}, userCache_{6};
+    Image referenceDrr_, userDrr_;
+    std::uint64_t referenceVersion_ = 0, userVersion_ = 0;
+    std::optional<DrrKey> referenceKey_, userKey_;  // what referenceDrr_ / userDrr_ hold
+    std::uint64_t nextSeed_ = 1;
+    bool firstScene_ = true;
+    int exactUserRenders_ = 0, coarseUserRenders_ = 0;
+    std::unique_ptr<render::Texture> referenceTexture_, userTexture_, compareTexture_;
+    std::unique_ptr<render::SceneRenderer> sceneRenderer_;
+    // What the textures show, to re-upload only on change.
+    struct DisplayKey {
+        std::uint64_t reference = 0, user = 0;
+        float window = 0, level = 0;
+        CompareMode compare = CompareMode::Difference;
+        bool operator==(const DisplayKey&) const = default;
+    } shownKey_;
+    struct SceneKey {
+        std::uint64_t generation = 0;
+        std::array<double, 6> pose{};
+        float azimuth = 0, elevation = 0, zoom = 0;
+        bool bone = false, box = false, apparatus = false;
+        glm::ivec2 size{0};
+        std::uint64_t film = 0;
+        float window = 0, level = 0;
+        bool fast = false;
+        bool operator==(const SceneKey&) const = default;
+    } sceneKey_;
+    int sceneDraws_ = 0;
+};
+
+}  // namespace fm::app

@@ -1,0 +1,59 @@
+#pragma once
+// The ImGui user interface: panes that read and edit AppState. No engine calls here: buttons
+// set AppState::requests, sliders edit the poses; the App does the work after the UI pass.
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "state/AppState.h"
+#include "ui/Layout.h"
+
+struct ImDrawList;
+
+namespace fm::app {
+
+// GL textures the panes show (0 = nothing yet).
+struct UiTextures {
+    unsigned reference = 0, user = 0, compare = 0, scene3d = 0;
+};
+
+// A widget's screen rectangle (pixels, top-left origin), for scripted tests.
+struct WidgetRect {
+    glm::vec2 min{0.0f}, max{0.0f};
+    glm::vec2 center() const { return 0.5f * (min + max); }
+};
+
+class Ui {
+public:
+    void draw(AppState& state, const UiTextures& textures);
+
+    // Where the 3D view image sits (for the renderer's size and the overlay labels).
+    glm::ivec2 sceneViewSize() const { return sceneViewSize_; }
+    // Text drawn over the 3D view at pixel positions inside it (after the scene is drawn).
+    void drawSceneLabels(const std::vector<std::pair<glm::vec2, std::string>>& labels,
+                         const std::vector<glm::vec4>& colors);
+
+    // Rectangles of named widgets from the last frame: "slider:azimuth", "input:azimuth",
+    // "button:match", "button:new-reference", "button:help", "view:3d", ...
+    std::optional<WidgetRect> rect(const std::string& id) const;
+    void record(const std::string& id);  // the last ImGui item, under `id`
+
+private:
+    void referencePane(AppState& state, const Pane& pane, unsigned texture);
+    void userPane(AppState& state, const Pane& pane, unsigned texture);
+    void scenePane(AppState& state, const Pane& pane, unsigned texture);
+    void parameterPane(AppState& state, const Pane& pane);
+    void comparePane(AppState& state, const Pane& pane, unsigned texture);
+    void matchPane(AppState& state, const Pane& pane);
+    void helpWindow(AppState& state);
+
+    std::map<std::string, WidgetRect> rects_;
+    glm::ivec2 sceneViewSize_{320, 320};
+    glm::vec2 sceneViewOrigin_{0.0f};
+    ImDrawList* sceneDrawList_ = nullptr;
+};
+
+}  // namespace fm::app

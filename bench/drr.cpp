@@ -1,0 +1,284 @@
+// DRR run time against error. Two modes:
+//   fm_bench_drr [google benchmark flags]   Google Benchmark on the default knee phantom
+//   fm_bench_drr --table [--csv=FILE] [--quick]
+//       for the knee phantom and the real CTs in the shared data folder (FM_DATA_DIR, default
+//       ../shared/data beside the repository), at 256x256 and 512x512 films, 1 and 2 threads,
+//       exact and approximate modes: ms per DRR (median of timed runs after one warm-up run,
+//       volume loading and preparation excluded; wall and CPU time) and the error against the slow
+//       reference renderer (long-double Siddon 1985 on the original grid): max and RMS of |DRR -
+//       ref| divided by the reference's peak value. Prints a table and writes CSV.
+// Preparation (conversion, crop, bricks) is timed separately, once per volume.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <benchmark/benchmark.h>
+
+#include "core/Error.h"
+#include "drr/Drr.h"
+#include "geometry/Pose.h"
+#include "io/ReadVolume.h"
+#include "phantom/Phantoms.h"
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+struct Scene {
+    std::string name;
+    fm::Volume volume;
+    fm::DrrValueOptions values;  // Mu for CTs in HU, Raw for the non-HU head
+};
+
+std::filesystem::path dataDir() {
+    if (const char* env = std::getenv("FM_DATA_DIR")) return env;
+    return std::filesystem::path(FM_SOURCE_DIR) / ".." / "shared" / "data";
+}
+
+fm::ProjectionGeometry sceneView(const fm::Volume& volume, int pixels) {
+    fm::SceneSetup setup = fm::defaultSceneSetup();
+    setup.filmPixels = {pixels, pixels};
+    fm::Pose pose;  // anterior view, as the 2011 default
+    pose.azimuthDeg = 20.0;
+    pose.elevationDeg = 10.0;
+    return fm::sceneGeometry(pose, setup, volume.center());
+}
+
+struct Mode {
+    std::string name;
+    fm::DrrRenderOptions render;
+    int downsample = 1;
+};
+
+std::vector<Mode> modes() {
+    std::vector<Mode> m;
+    fm::DrrRenderOptions exact;
+    m.push_back({"exact", exact});
+    fm::DrrRenderOptions plain = exact;
+    plain.skipEmptySpace = false;
+    m.push_back({"exact-noskip", plain});
+    m.push_back({"exact-down2", exact, 2});
+    m.push_back({"exact-down4", exact, 4});
+    for (double step : {1.0, 2.0, 4.0}) {
+        fm::DrrRenderOptions approx;
+        approx.trace = fm::DrrTrace::Approx;
+        approx.approxStepMm = step;
+        char name[32];
+        std::snprintf(name, sizeof name, "trilinear-%.0fmm", step);
+        m.push_back({name, approx});
+    }
+    return m;
+}
+
+double processCpuMs() {
+    timespec t;
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return t.tv_sec * 1e3 + t.tv_nsec * 1e-6;
+}
+
+double median(std::vector<double> x) {
+    std::nth_element(x.begin(), x.begin() + x.size() / 2, x.end());
+    return x[x.size() / 2];
+}
+
+struct Timing {
+    double wallMs;  // median wall time per DRR
+    double cpuMs;   // median CPU time per DRR summed over threads (robust on a busy machine)
+};
+
+Timing timeRuns(const std::function<void()>& run, double budgetSeconds) {
+    run();  // warm-up: page faults, caches
+    std::vector<double> wall, cpu;
+    const auto start = Clock::now();
+    while (wall.size() < 5 ||
+           (wall.size() < 31 &&
+            std::chrono::duration<double>(Clock::now() - start).count() < budgetSeconds)) {
+        const auto t0 = Clock::now();
+        const double c0 = processCpuMs();
+        run();
+        cpu.push_back(processCpuMs() - c0);
+        wall.push_back(std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
+    }
+    return {median(wall), median(cpu)};
+}
+
+struct ErrorStats {
+    double maxRel = 0, rmsRel = 0;
+};
+
+ErrorStats compare(const fm::Image& image, const fm::Image& ref) {
+    double peak = 0, maxDiff = 0, sum2 = 0;
+    for (std::size_t i = 0; i < ref.pixels.size(); ++i) {
+        peak = std::max(peak, double(std::abs(ref.pixels[i])));
+        const double d = double(image.pixels[i]) - double(ref.pixels[i]);
+        maxDiff = std::max(maxDiff, std::abs(d));
+        sum2 += d * d;
+    }
+    if (peak == 0) peak = 1;
+    return {maxDiff / peak, std::sqrt(sum2 / ref.pixels.size()) / peak};
+}
+
+std::vector<Scene> loadScenes(bool quick) {
+    std::vector<Scene> scenes;
+    scenes.push_back({"knee-phantom", fm::makePhantom("knee"), {}});
+    if (quick) return scenes;
+    const std::filesystem::path dir = dataDir();
+    struct Real {
+        const char* name;
+        const char* path;
+        bool hu;
+    };
+    const Real reals[] = {
+        {"totalseg-example-ct", "totalseg-example-ct/example_ct.nii.gz", true},
+        {"totalseg-aorta-lps", "totalseg-example-ct/ct_cropped_aorta_report.nii.gz", true},
+        {"dcmqa-ge-tilt", "dcmqa-ct-ge-tilt", true},
+        {"vtk-headsq-raw", "vtk-headsq-quarter/quarter.nhdr", false},
+    };
+    for (const Real& r : reals) {
+        const auto path = dir / r.path;
+        if (!std::filesystem::exists(path)) {
+            std::fprintf(stderr, "skipping %s: %s not found (set FM_DATA_DIR)\n", r.name,
+                         path.c_str());
+            continue;
+        }
+        try {
+            Scene s{r.name, fm::readVolume(path), {}};
+            // Not HU (0..3926, air ~0, see the data README): integrate the raw values; errors
+            // are relative to the peak, so the unit does not matter.
+            if (!r.hu) s.values.values = fm::DrrValues::Raw;
+            scenes.push_back(std::move(s));
+        } catch (const fm::Error& e) {
+            std::fprintf(stderr, "skipping %s: %s\n", r.name, e.what());
+        }
+    }
+    return scenes;
+}
+
+int runTable(const std::string& csvPath, bool quick) {
+    std::ofstream csv(csvPath);
+    if (!csv) {
+        std::fprintf(stderr, "cannot write %s\n", csvPath.c_str());
+        return 1;
+    }
+    csv << "volume,dims,kept_dims,detector,mode,threads,ms_median,cpu_ms_median,max_rel_error,"
+           "rms_rel_error\n";
+    std::printf("%-20s %-12s %-12s %-8s %-16s %3s %9s %9s %11s %11s\n", "volume", "dims", "kept",
+                "film", "mode", "thr", "ms/DRR", "cpu ms", "max rel err", "RMS rel err");
+    const std::vector<int> filmSizes = quick ? std::vector<int>{256} : std::vector<int>{256, 512};
+    for (const Scene& scene : loadScenes(quick)) {
+        std::map<int, fm::DrrVolumePtr> prepared;
+        for (int down : {1, 2, 4}) {
+            fm::DrrValueOptions o = scene.values;
+            o.downsample = down;
+            const auto t0 = Clock::now();
+            prepared[down] = fm::prepareDrrVolume(scene.volume, o);
+            const double prepMs =
+                std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+            const fm::DrrVolumeInfo info = fm::drrVolumeInfo(*prepared[down]);
+            std::printf(
+                "# %s downsample %d: prepared in %.1f ms; kept %dx%dx%d of %dx%dx%d, bricks %d "
+                "(%d empty, %d uniform)\n",
+                scene.name.c_str(), down, prepMs, info.dims.x, info.dims.y, info.dims.z,
+                scene.volume.dims.x, scene.volume.dims.y, scene.volume.dims.z, info.bricksTotal,
+                info.bricksEmpty, info.bricksUniform);
+        }
+        const fm::DrrVolumeInfo info = fm::drrVolumeInfo(*prepared[1]);
+        char dims[32], kept[32];
+        std::snprintf(dims, sizeof dims, "%dx%dx%d", scene.volume.dims.x, scene.volume.dims.y,
+                      scene.volume.dims.z);
+        std::snprintf(kept, sizeof kept, "%dx%dx%d", info.dims.x, info.dims.y, info.dims.z);
+        for (int film : filmSizes) {
+            const fm::ProjectionGeometry g = sceneView(scene.volume, film);
+            const fm::Image ref = fm::renderDrrReference(scene.volume, scene.values, g,
+                                                         fm::DrrOutput::LineIntegral, 2);
+            for (const Mode& mode : modes()) {
+                for (int threads : {1, 2}) {
+                    fm::DrrRenderOptions ro = mode.render;
+                    ro.threads = threads;
+                    const fm::DrrVolume& v = *prepared[mode.downsample];
+                    fm::Image image;
+                    const Timing t =
+                        timeRuns([&] { image = fm::renderDrr(v, g, ro); }, quick ? 0.3 : 1.0);
+                    const ErrorStats e = compare(image, ref);
+                    std::printf("%-20s %-12s %-12s %-8s %-16s %3d %9.2f %9.2f %11.2e %11.2e\n",
+                                scene.name.c_str(), dims, kept,
+                                (std::to_string(film) + "^2").c_str(), mode.name.c_str(), threads,
+                                t.wallMs, t.cpuMs, e.maxRel, e.rmsRel);
+                    std::fflush(stdout);
+                    csv << scene.name << ',' << dims << ',' << kept << ',' << film << 'x' << film
+                        << ',' << mode.name << ',' << threads << ',' << t.wallMs << ',' << t.cpuMs
+                        << ',' << e.maxRel << ',' << e.rmsRel << '\n';
+                }
+            }
+        }
+    }
+    std::printf("CSV written to %s\n", csvPath.c_str());
+    return 0;
+}
+
+// Google Benchmark: the default phantom, exact and approximate, 256/512, 1/2 threads.
+void registerBenchmarks() {
+    static const fm::Volume knee = fm::makePhantom("knee");
+    static const fm::DrrVolumePtr prepared = fm::prepareDrrVolume(knee, {});
+    for (const Mode& mode : modes()) {
+        if (mode.downsample != 1) continue;
+        for (int film : {256, 512})
+            for (int threads : {1, 2}) {
+                const std::string name = "DRR/knee/" + mode.name + "/" + std::to_string(film) +
+                                         "/threads:" + std::to_string(threads);
+                benchmark::RegisterBenchmark(
+                    name.c_str(),
+                    [mode, film, threads](benchmark::State& state) {
+                        const fm::ProjectionGeometry g = sceneView(knee, film);
+                        fm::DrrRenderOptions ro = mode.render;
+                        ro.threads = threads;
+                        for (auto _ : state)
+                            benchmark::DoNotOptimize(fm::renderDrr(*prepared, g, ro));
+                    })
+                    ->Unit(benchmark::kMillisecond)
+                    ->UseRealTime();
+            }
+    }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    bool table = false, quick = false;
+    std::string csv = "drr-bench.csv";
+    std::vector<char*> rest{argv[0]};
+    for (int i = 1; i < argc; ++i) {
+        const std::string arg = argv[i];
+        if (arg == "--table")
+            table = true;
+        else if (arg == "--quick")
+            quick = true;
+        else if (arg.rfind("--csv=", 0) == 0)
+            csv = arg.substr(6);
+        else
+            rest.push_back(argv[i]);
+    }
+    try {
+        if (table) return runTable(csv, quick);
+        int n = static_cast<int>(rest.size());
+        benchmark::Initialize(&n, rest.data());
+        registerBenchmarks();
+        benchmark::RunSpecifiedBenchmarks();
+        benchmark::Shutdown();
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "fm_bench_drr: %s\n", e.what());
+        return 1;
+    }
+    return 0;
+}

@@ -1,0 +1,121 @@
+// Marching-cubes speed on the knee phantom and the real CTs in ../shared/data, 1 and 2 threads.
+//   build-*/bench/fm_bench_mesh --benchmark_report_aggregates_only=true
+//                                                 # times (5 repetitions: mean, median, min);
+//                                                 # counters: triangles, vertices,
+//                                                 # watertight (1 = every CGAL check passed)
+//   build-*/bench/fm_bench_mesh --export=DIR      # also writes each volume as DIR/<name>.mha
+//                                                 # (float32) plus DIR/volumes.txt (name, iso)
+// The export feeds scripts/bench_vtk_flying_edges.py, which times VTK's vtkFlyingEdges3D on
+// exactly the same values and isovalues (docs/marching-cubes.md has the comparison).
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "io/ReadVolume.h"
+#include "io/VolumeWriter.h"
+#include "mesh/MarchingCubes.h"
+#include "mesh/MeshCheck.h"
+#include "phantom/Phantoms.h"
+
+namespace {
+
+struct BenchVolume {
+    std::string name;
+    std::string path;  // relative to the shared data folder; empty for the phantom
+    double iso;
+};
+
+const std::vector<BenchVolume> kVolumes = {
+    {"knee_phantom", "", 300.0},
+    {"headsq_quarter", "vtk-headsq-quarter/quarter.nhdr", 1150.0},  // not HU: VTK's bone level
+    {"totalseg_example_ct", "totalseg-example-ct/example_ct.nii.gz", 300.0},
+    {"totalseg_aorta_crop", "totalseg-example-ct/ct_cropped_aorta_report.nii.gz", 300.0},
+    {"totalseg_dicom", "totalseg-example-ct/example_ct_dicom", 300.0},
+    {"dcmqa_ge_tilt", "dcmqa-ct-ge-tilt", 300.0},
+};
+
+std::filesystem::path sharedData() {
+    if (const char* env = std::getenv("FM_DATA_DIR"); env && *env) return env;
+    return std::filesystem::path(FM_SOURCE_DIR).parent_path() / "shared" / "data";
+}
+
+fm::Volume load(const BenchVolume& b) {
+    if (b.path.empty()) return fm::makePhantom("knee");
+    return fm::readVolume(sharedData() / b.path);
+}
+
+void runMarchingCubes(benchmark::State& state, const fm::Volume* volume, double iso,
+                      int threads, bool check) {
+    fm::MarchingCubesOptions options;
+    options.isoValue = iso;
+    options.threads = threads;
+    fm::Mesh mesh;
+    for (auto _ : state) {
+        mesh = fm::marchingCubes(*volume, options);
+        benchmark::DoNotOptimize(mesh.triangles.data());
+    }
+    state.counters["triangles"] = static_cast<double>(mesh.triangleCount());
+    state.counters["vertices"] = static_cast<double>(mesh.vertexCount());
+    state.counters["voxels"] = static_cast<double>(volume->voxelCount());
+    if (check) state.counters["watertight"] = fm::checkMesh(mesh).watertight() ? 1.0 : 0.0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    benchmark::Initialize(&argc, argv);
+    std::string exportDir;
+    bool check = true;
+    for (int i = 1; i < argc; ++i) {
+        if (std::strncmp(argv[i], "--export=", 9) == 0) exportDir = argv[i] + 9;
+        else if (std::strcmp(argv[i], "--no-check") == 0) check = false;
+        else {
+            std::fprintf(stderr, "unknown argument %s (use --export=DIR, --no-check or "
+                                 "Google Benchmark flags)\n", argv[i]);
+            return 1;
+        }
+    }
+    // Volumes stay alive for the whole run (benchmarks hold pointers to them).
+    static std::map<std::string, fm::Volume> volumes;
+    std::ofstream list;
+    if (!exportDir.empty()) {
+        std::filesystem::create_directories(exportDir);
+        list.open(std::filesystem::path(exportDir) / "volumes.txt");
+    }
+    for (const auto& b : kVolumes) {
+        if (!b.path.empty() && !std::filesystem::exists(sharedData() / b.path)) {
+            std::fprintf(stderr, "skipping %s: %s not found\n", b.name.c_str(),
+                         (sharedData() / b.path).c_str());
+            continue;
+        }
+        const fm::Volume& v = volumes[b.name] = load(b);
+        if (list.is_open()) {
+            fm::writeMetaImage(v, std::filesystem::path(exportDir) / (b.name + ".mha"), false);
+            list << b.name << " " << b.iso << "\n";
+        }
+        for (int threads : {1, 2}) {
+            benchmark::RegisterBenchmark(
+                ("marchingCubes/" + b.name + "/threads:" + std::to_string(threads)).c_str(),
+                runMarchingCubes, &v, b.iso, threads, check)
+                ->Unit(benchmark::kMillisecond)
+                ->MinTime(0.2)
+                ->Repetitions(5)
+                // The machine is shared: the fastest repetition is the least disturbed one.
+                ->ComputeStatistics("min",
+                                    [](const std::vector<double>& v) {
+                                        return *std::min_element(v.begin(), v.end());
+                                    })
+                ->UseRealTime();
+        }
+    }
+    benchmark::RunSpecifiedBenchmarks();
+    benchmark::Shutdown();
+    return 0;
+}

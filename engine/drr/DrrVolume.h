@@ -1,0 +1,55 @@
+#pragma once
+// The prepared volume behind the opaque DrrVolumePtr (engine/drr only).
+//
+// Rays are traced in the "local" frame: millimetres along the volume's own i, j, k axes, with
+// the kept (cropped) box spanning [0, dims * spacing]: voxel (i, j, k) of `values` covers
+// [i*s.x, (i+1)*s.x) x ... (half-open, so a ray lying exactly on an inner face belongs to
+// the higher voxel). local = worldToLocal * (world - origin) + localShift.
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "drr/Drr.h"
+
+namespace fm {
+
+struct DrrVolume {
+    DrrValueOptions options;
+    glm::ivec3 dims{0};       // kept voxels
+    glm::ivec3 cropBegin{0};  // first kept voxel in the (downsampled) source grid
+    glm::dvec3 spacing{1.0};
+    glm::dvec3 invSpacing{1.0};  // 1 / spacing
+    // World -> local: the inverse of the direction matrix (the exact inverse rather than the
+    // transpose, because files store cosines with 6-8 digits), then the crop shift.
+    glm::dmat3 worldToLocal{1.0};
+    glm::dvec3 origin{0.0};      // world position of source-grid voxel (0,0,0)'s centre
+    glm::dvec3 localShift{0.0};  // spacing * (0.5 - cropBegin)
+    glm::dmat3 direction{1.0};   // to map the kept box back to the world (projected box)
+    // Converted (mu or raw), thresholded values of the kept voxels, i fastest, stored with one
+    // layer of zeros on every side (padded dims = dims + 2): the traversal may then read a
+    // neighbour of a border voxel without a bounds check (with zero weight). Use at().
+    std::vector<float> values;
+    glm::ivec3 paddedDims{2};
+    bool empty = true;
+
+    // Empty-space skipping: bricks of brickSize^3 voxels (the last ones along an axis may be
+    // partial). A brick is "uniform" when all its voxels hold the same value (0 = empty):
+    // the ray then needs one multiplication for the whole brick instead of a voxel walk.
+    int brickSize = 8;
+    int brickShift = 3;  // log2(brickSize) if a power of two (fast division), else -1
+    glm::ivec3 brickDims{0};
+    std::vector<float> brickValue;         // the common value of a uniform brick
+    std::vector<std::uint8_t> brickMixed;  // 1 = voxels differ: walk the voxels
+
+    std::ptrdiff_t at(int i, int j, int k) const {
+        return (i + 1) +
+               std::ptrdiff_t(paddedDims.x) * ((j + 1) + std::ptrdiff_t(paddedDims.y) * (k + 1));
+    }
+    glm::dvec3 worldToLocalPoint(const glm::dvec3& world) const {
+        return worldToLocal * (world - origin) + localShift;
+    }
+};
+
+}  // namespace fm

@@ -1,0 +1,379 @@
+// The fast DRR renderer: incremental Siddon traversal (Jacobs et al. 1998, Han et al. 1999)
+// in the volume's local frame, with empty-space skipping that keeps the result exact.
+//
+// Per ray (source S -> pixel centre P, parameter alpha in [0, 1]):
+//   1. clip alpha to the kept box (slab method): rays that miss give exactly 0;
+//   2. walk the voxels incrementally (Jacobs): next crossing per axis, step the smallest;
+//      when the ray enters a brick of the brick map whose voxels are all equal (0 = empty),
+//      switch to the same traversal over bricks (a coarse 3D-DDA) until it enters a mixed
+//      brick again: an empty brick costs nothing, a uniform brick one multiplication;
+//   3. sum (alpha_next - alpha) * value in double and multiply by |P - S| in mm at the end
+//      (ITK's SiddonJacobsRayCastInterpolator forgets that factor: its DRRs are not in mm).
+// The plain walk (no bricks) visits the same segments; only the summation order differs.
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+
+#include "core/Error.h"
+#include "core/Parallel.h"
+#include "drr/Drr.h"
+#include "drr/DrrVolume.h"
+
+namespace fm {
+namespace {
+
+// A ray whose direction component moves less than this (mm over the whole source-to-pixel
+// segment) along an axis is treated as exactly parallel to it: the neglected displacement is
+// ~1e-200 mm, and it keeps 1/d finite so that no 0 * inf = NaN can appear.
+constexpr double kParallelLimit = 1e-200;
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+// Chunks per thread for parallelFor: balances rows that hit a lot of bone against empty ones.
+constexpr int kChunksPerThread = 8;
+
+struct LocalRay {
+    glm::dvec3 q0;    // source, local mm
+    glm::dvec3 d;     // pixel - source, local mm
+    glm::dvec3 invD;  // 1/d (0 for parallel axes, never used there)
+    bool parallel[3];
+};
+
+LocalRay makeRay(const glm::dvec3& q0, const glm::dvec3& q1) {
+    LocalRay r;
+    r.q0 = q0;
+    r.d = q1 - q0;
+    for (int a = 0; a < 3; ++a) {
+        r.parallel[a] = std::abs(r.d[a]) < kParallelLimit;
+        r.invD[a] = r.parallel[a] ? 0.0 : 1.0 / r.d[a];
+    }
+    return r;
+}
+
+// Slab clipping of alpha in [0, 1] to the box [lo, hi] (half-open for parallel axes).
+bool clipRay(const LocalRay& r, const glm::dvec3& lo, const glm::dvec3& hi, double& aMin,
+             double& aMax) {
+    aMin = 0.0;
+    aMax = 1.0;
+    for (int a = 0; a < 3; ++a) {
+        if (r.parallel[a]) {
+            if (!(r.q0[a] >= lo[a] && r.q0[a] < hi[a])) return false;
+            continue;
+        }
+        double t0 = (lo[a] - r.q0[a]) * r.invD[a];
+        double t1 = (hi[a] - r.q0[a]) * r.invD[a];
+        if (t0 > t1) std::swap(t0, t1);
+        aMin = std::max(aMin, t0);
+        aMax = std::min(aMax, t1);
+    }
+    return aMax > aMin;
+}
+
+// Alpha where the ray leaves cell `index` (cells of `size` mm starting at 0) along an axis.
+inline double exitAlpha(const LocalRay& r, int a, int index, int step, double size) {
+    return (static_cast<double>(index + (step > 0 ? 1 : 0)) * size - r.q0[a]) * r.invD[a];
+}
+
+// Index of the cell (of 1/invSize mm) holding the ray at alpha, clamped to [lo, hi). A position
+// within an ulp of a plane may land on either side: the segment misattributed is ulps long.
+inline int cellAt(const LocalRay& r, int a, double alpha, double invSize, int lo, int hi) {
+    const double cell = std::floor((r.q0[a] + alpha * r.d[a]) * invSize);
+    return static_cast<int>(std::clamp(cell, double(lo), double(hi - 1)));
+}
+
+inline int smallestOf(const double next[3]) {
+    return next[0] < next[1] ? (next[0] < next[2] ? 0 : 2) : (next[1] < next[2] ? 1 : 2);
+}
+
+// The plain Siddon/Jacobs walk over every voxel of the kept grid between aBegin and aEnd,
+// adding alpha-length * value to acc. Crossing parameters advance incrementally (one add on
+// the loop's critical path); the rounding this accumulates is ~n ulps, far below 1e-9.
+void walkVoxels(const DrrVolume& v, const LocalRay& r, double aBegin, double aEnd, double& acc) {
+    int index[3], step[3];
+    double next[3], delta[3];
+    const std::ptrdiff_t stride[3] = {1, v.paddedDims.x,
+                                      std::ptrdiff_t(v.paddedDims.x) * v.paddedDims.y};
+    for (int a = 0; a < 3; ++a) {
+        index[a] = cellAt(r, a, aBegin, v.invSpacing[a], 0, v.dims[a]);
+        step[a] = r.parallel[a] ? 0 : (r.d[a] > 0.0 ? 1 : -1);
+        next[a] = r.parallel[a] ? kInfinity : exitAlpha(r, a, index[a], step[a], v.spacing[a]);
+        delta[a] = v.spacing[a] * std::abs(r.invD[a]);
+    }
+    std::ptrdiff_t linear = v.at(index[0], index[1], index[2]);
+    const float* values = v.values.data();
+    double alpha = aBegin;
+    for (;;) {
+        const int a = smallestOf(next);
+        const double aNext = std::min(next[a], aEnd);
+        if (aNext > alpha) {
+            acc += (aNext - alpha) * static_cast<double>(values[linear]);
+            alpha = aNext;
+        }
+        if (next[a] >= aEnd) break;
+        index[a] += step[a];
+        if (index[a] < 0 || index[a] >= v.dims[a]) break;  // only by rounding at the very end
+        linear += step[a] * stride[a];
+        next[a] += delta[a];
+    }
+}
+
+// The fast walk: the same segments as walkVoxels, with empty-space skipping. While the ray is
+// in mixed bricks it walks voxels (a countdown per axis tells when it enters the next brick);
+// when it enters a brick whose voxels are all equal (0 = empty) it switches to the same
+// traversal over bricks (a coarse 3D-DDA), adding value * length per brick, until it enters a
+// mixed brick again, where the voxel indices are re-derived: exactly on the entry axis, by
+// floor (clamped to the brick) on the others.
+// (A branch-free variant that walks slabs of the dominant axis, at most three segments per
+// slab, was measured 35% slower on the knee phantom: mostly-one-axis rays predict well.)
+void walkSkipping(const DrrVolume& v, const LocalRay& r, double aBegin, double aEnd, double& acc) {
+    const int B = v.brickSize;
+    int index[3], step[3], brick[3], remaining[3];
+    double next[3], delta[3], nextBrick[3];
+    const std::ptrdiff_t stride[3] = {1, v.paddedDims.x,
+                                      std::ptrdiff_t(v.paddedDims.x) * v.paddedDims.y};
+    const std::ptrdiff_t brickStride[3] = {1, v.brickDims.x,
+                                           std::ptrdiff_t(v.brickDims.x) * v.brickDims.y};
+    std::ptrdiff_t brickLinear = 0;
+    for (int a = 0; a < 3; ++a) {
+        index[a] = cellAt(r, a, aBegin, v.invSpacing[a], 0, v.dims[a]);
+        brick[a] = v.brickShift >= 0 ? index[a] >> v.brickShift : index[a] / B;
+        brickLinear += brick[a] * brickStride[a];
+        step[a] = r.parallel[a] ? 0 : (r.d[a] > 0.0 ? 1 : -1);
+        delta[a] = v.spacing[a] * std::abs(r.invD[a]);
+    }
+    auto brickExit = [&](int a) {
+        return r.parallel[a]
+                   ? kInfinity
+                   : (static_cast<double>((brick[a] + (step[a] > 0 ? 1 : 0)) * B) * v.spacing[a] -
+                      r.q0[a]) *
+                         r.invD[a];
+    };
+    const float* values = v.values.data();
+    double alpha = aBegin;
+    for (;;) {
+        if (!v.brickMixed[brickLinear]) {
+            for (int a = 0; a < 3; ++a) nextBrick[a] = brickExit(a);
+            int entered;
+            for (;;) {
+                const int a = smallestOf(nextBrick);
+                const double aNext = std::min(nextBrick[a], aEnd);
+                if (aNext > alpha) {
+                    const float value = v.brickValue[brickLinear];
+                    if (value != 0.0f) acc += (aNext - alpha) * static_cast<double>(value);
+                    alpha = aNext;
+                }
+                if (nextBrick[a] >= aEnd) return;
+                brick[a] += step[a];
+                if (brick[a] < 0 || brick[a] >= v.brickDims[a]) return;
+                brickLinear += step[a] * brickStride[a];
+                if (v.brickMixed[brickLinear]) {
+                    entered = a;
+                    break;
+                }
+                nextBrick[a] = brickExit(a);
+            }
+            for (int a = 0; a < 3; ++a) {
+                const int lo = brick[a] * B, hi = std::min(lo + B, v.dims[a]);
+                index[a] = a == entered ? (step[a] > 0 ? lo : hi - 1)
+                                        : cellAt(r, a, alpha, v.invSpacing[a], lo, hi);
+            }
+        }
+        // Exact voxel walk through mixed bricks. The per-axis state lives in scalars (not
+        // arrays) so that it stays in registers: one compare and one add per crossing.
+        std::ptrdiff_t linear = v.at(index[0], index[1], index[2]);
+        for (int a = 0; a < 3; ++a) {
+            if (r.parallel[a]) {
+                next[a] = kInfinity;
+                remaining[a] = 0;  // never stepped
+            } else {
+                next[a] = exitAlpha(r, a, index[a], step[a], v.spacing[a]);
+                remaining[a] =
+                    step[a] > 0 ? (brick[a] + 1) * B - index[a] : index[a] - brick[a] * B + 1;
+            }
+        }
+        double nx = next[0], ny = next[1], nz = next[2];
+        int ix = index[0], iy = index[1], iz = index[2];
+        int rx = remaining[0], ry = remaining[1], rz = remaining[2];
+        const std::ptrdiff_t ox = step[0] * stride[0], oy = step[1] * stride[1],
+                             oz = step[2] * stride[2];
+        bool leaveMixed = false;
+        // One crossing on axis AX: close the current segment, step to the neighbour voxel, and
+        // note when the step entered a brick that is not mixed.
+#define FM_DRR_CROSS(N, I, R, O, AX)                                                  \
+    {                                                                                 \
+        if (N >= aEnd) {                                                              \
+            acc += std::max(0.0, aEnd - alpha) * static_cast<double>(values[linear]); \
+            return;                                                                   \
+        }                                                                             \
+        /* max: a crossing re-derived by floor may precede alpha by an ulp */         \
+        acc += std::max(0.0, N - alpha) * static_cast<double>(values[linear]);        \
+        alpha = std::max(alpha, N);                                                   \
+        I += step[AX];                                                                \
+        if (static_cast<unsigned>(I) >= static_cast<unsigned>(v.dims[AX])) return;    \
+        linear += O;                                                                  \
+        N += delta[AX];                                                               \
+        if (--R == 0) {                                                               \
+            brick[AX] += step[AX];                                                    \
+            brickLinear += step[AX] * brickStride[AX];                                \
+            R = B;                                                                    \
+            leaveMixed = !v.brickMixed[brickLinear];                                  \
+        }                                                                             \
+    }
+        while (!leaveMixed) {
+            if (nx < ny) {
+                if (nx < nz)
+                    FM_DRR_CROSS(nx, ix, rx, ox, 0)
+                else
+                    FM_DRR_CROSS(nz, iz, rz, oz, 2)
+            } else {
+                if (ny < nz)
+                    FM_DRR_CROSS(ny, iy, ry, oy, 1)
+                else
+                    FM_DRR_CROSS(nz, iz, rz, oz, 2)
+            }
+        }
+#undef FM_DRR_CROSS
+        index[0] = ix;
+        index[1] = iy;
+        index[2] = iz;
+    }
+}
+
+// Trilinear interpolation with voxel centres at (i + 0.5) * spacing; zero outside the grid.
+double trilinear(const DrrVolume& v, const glm::dvec3& q) {
+    // Samples lie in the box grown by half a voxel (clipped), so x is in [-1, n]: the lower
+    // corner i0 is clamped to [-1, n-1] and all eight neighbours are inside the zero padding,
+    // with no bounds checks. Clamping only moves weight between a voxel and the padding at the
+    // outermost half voxel, where both interpolate towards zero anyway.
+    double f[3];
+    int i0[3];
+    for (int a = 0; a < 3; ++a) {
+        const double x = q[a] * v.invSpacing[a] - 0.5;
+        const double fl = std::clamp(std::floor(x), -1.0, double(v.dims[a] - 1));
+        i0[a] = static_cast<int>(fl);
+        f[a] = std::clamp(x - fl, 0.0, 1.0);
+    }
+    const float* p = v.values.data() + v.at(i0[0], i0[1], i0[2]);
+    const std::ptrdiff_t sy = v.paddedDims.x, sz = std::ptrdiff_t(v.paddedDims.x) * v.paddedDims.y;
+    const double c00 = p[0] + f[0] * (double(p[1]) - p[0]);
+    const double c10 = p[sy] + f[0] * (double(p[sy + 1]) - p[sy]);
+    const double c01 = p[sz] + f[0] * (double(p[sz + 1]) - p[sz]);
+    const double c11 = p[sz + sy] + f[0] * (double(p[sz + sy + 1]) - p[sz + sy]);
+    const double c0 = c00 + f[1] * (c10 - c00);
+    const double c1 = c01 + f[1] * (c11 - c01);
+    return c0 + f[2] * (c1 - c0);
+}
+
+struct PixelRange {
+    int col0, col1, row0, row1;  // [col0, col1) x [row0, row1)
+};
+
+// Pixels whose rays can reach the box [lo, hi] (local mm): the bounding rectangle of the box
+// corners projected from the source onto the detector plane, one pixel of margin for rounding.
+// The whole detector when a corner is not in front of the source (source inside the box or
+// beside it): the projection is then not a bounded convex polygon.
+PixelRange projectedBox(const DrrVolume& v, const ProjectionGeometry& g, const glm::dvec3& lo,
+                        const glm::dvec3& hi) {
+    const DetectorGeometry& det = g.detector;
+    PixelRange all{0, det.size.x, 0, det.size.y};
+    const glm::dvec3 n = glm::cross(det.u, det.v);
+    const double planeDistance = glm::dot(det.origin - g.source, n);
+    if (!(std::abs(planeDistance) > 0.0)) return all;
+    const glm::dmat3 localToWorld = glm::inverse(v.worldToLocal);
+    double cMin = kInfinity, cMax = -kInfinity, rMin = kInfinity, rMax = -kInfinity;
+    for (int corner = 0; corner < 8; ++corner) {
+        const glm::dvec3 q((corner & 1) ? hi.x : lo.x, (corner & 2) ? hi.y : lo.y,
+                           (corner & 4) ? hi.z : lo.z);
+        const glm::dvec3 world = localToWorld * (q - v.localShift) + v.origin;
+        const double along = glm::dot(world - g.source, n);
+        // The corner must be strictly on the detector's side of the source.
+        if (!(along * planeDistance > 0.0)) return all;
+        const glm::dvec3 p = g.source + (planeDistance / along) * (world - g.source);
+        const double c = glm::dot(p - det.origin, det.u) / det.spacing.x;
+        const double r = glm::dot(p - det.origin, det.v) / det.spacing.y;
+        cMin = std::min(cMin, c);
+        cMax = std::max(cMax, c);
+        rMin = std::min(rMin, r);
+        rMax = std::max(rMax, r);
+    }
+    auto clampTo = [](double x, int n) { return static_cast<int>(std::clamp(x, 0.0, double(n))); };
+    PixelRange range;
+    range.col0 = clampTo(std::floor(cMin) - 1.0, det.size.x);
+    range.col1 = clampTo(std::ceil(cMax) + 2.0, det.size.x);
+    range.row0 = clampTo(std::floor(rMin) - 1.0, det.size.y);
+    range.row1 = clampTo(std::ceil(rMax) + 2.0, det.size.y);
+    if (!(std::isfinite(cMin) && std::isfinite(cMax) && std::isfinite(rMin) && std::isfinite(rMax)))
+        return all;
+    return range;
+}
+
+// The exact line integral of one ray (local frame), without the |P - S| factor.
+double traceExact(const DrrVolume& v, const LocalRay& ray, bool skipEmptySpace) {
+    double aMin, aMax;
+    if (!clipRay(ray, glm::dvec3(0.0), glm::dvec3(v.dims) * v.spacing, aMin, aMax)) return 0.0;
+    double acc = 0.0;
+    if (skipEmptySpace)
+        walkSkipping(v, ray, aMin, aMax, acc);
+    else
+        walkVoxels(v, ray, aMin, aMax, acc);
+    return acc;
+}
+
+}  // namespace
+
+double drrLineIntegral(const DrrVolume& v, const glm::dvec3& source, const glm::dvec3& target,
+                       bool skipEmptySpace) {
+    if (v.empty) return 0.0;
+    const LocalRay ray = makeRay(v.worldToLocalPoint(source), v.worldToLocalPoint(target));
+    return traceExact(v, ray, skipEmptySpace) * glm::length(target - source);
+}
+
+Image renderDrr(const DrrVolume& v, const ProjectionGeometry& g, const DrrRenderOptions& options) {
+    g.validate("DRR geometry");
+    const bool approx = options.trace == DrrTrace::Approx;
+    if (approx && !(std::isfinite(options.approxStepMm) && options.approxStepMm > 0.0))
+        throw Error("DRR approximate step must be a positive number of mm");
+    const bool intensity = options.output == DrrOutput::Intensity;
+    const DetectorGeometry& det = g.detector;
+    Image image(det.size.x, det.size.y, intensity ? 1.0f : 0.0f);
+    image.spacing = det.spacing;
+    if (v.empty) return image;
+
+    // Trilinear samples see up to half a voxel beyond the kept box (fading to zero).
+    const glm::dvec3 boxLo = approx ? -0.5 * v.spacing : glm::dvec3(0.0);
+    const glm::dvec3 boxHi =
+        glm::dvec3(v.dims) * v.spacing + (approx ? 0.5 * v.spacing : glm::dvec3(0.0));
+    const PixelRange range = options.skipEmptySpace ? projectedBox(v, g, boxLo, boxHi)
+                                                    : PixelRange{0, det.size.x, 0, det.size.y};
+    if (range.col0 >= range.col1 || range.row0 >= range.row1) return image;
+
+    const glm::dvec3 q0 = v.worldToLocalPoint(g.source);
+    auto body = [&](int rowBegin, int rowEnd) {
+        for (int row = range.row0 + rowBegin; row < range.row0 + rowEnd; ++row) {
+            for (int col = range.col0; col < range.col1; ++col) {
+                const glm::dvec3 pixel = det.pixelCenter(col, row);
+                const double length = glm::length(pixel - g.source);
+                const LocalRay ray = makeRay(q0, v.worldToLocalPoint(pixel));
+                double acc = 0.0;
+                if (!approx) {
+                    acc = traceExact(v, ray, options.skipEmptySpace);
+                } else {
+                    double aMin, aMax;
+                    if (!clipRay(ray, boxLo, boxHi, aMin, aMax)) continue;
+                    const double span = (aMax - aMin) * length;
+                    const int samples =
+                        std::max(1, static_cast<int>(std::ceil(span / options.approxStepMm)));
+                    const double dAlpha = (aMax - aMin) / samples;
+                    for (int s = 0; s < samples; ++s)
+                        acc += trilinear(v, ray.q0 + (aMin + (s + 0.5) * dAlpha) * ray.d);
+                    acc *= dAlpha;
+                }
+                const double integral = acc * length;
+                image.at(col, row) = static_cast<float>(intensity ? std::exp(-integral) : integral);
+            }
+        }
+    };
+    parallelFor(range.row1 - range.row0, options.threads, body, kChunksPerThread);
+    return image;
+}
+
+}  // namespace fm

@@ -1,0 +1,166 @@
+#include "search/Evaluation.h"
+
+#include <algorithm>
+#include <cmath>
+#include <ctime>
+#include <limits>
+
+#include "core/Error.h"
+
+namespace fm {
+
+std::vector<StartBin> standardStartBins() { return {{0, 2}, {2, 5}, {5, 10}, {10, 20}}; }
+
+Pose startPoseInBin(const Pose& truth, const PoseModel& model,
+                    const std::vector<glm::dvec3>& targets, const StartBin& bin, Rng& rng) {
+    if (!(bin.lowMm >= 0.0 && bin.highMm > bin.lowMm))
+        throw Error("start bin must satisfy 0 <= low < high");
+    const ProjectionGeometry truthGeometry = model(truth);
+    const std::array<double, 6> base = truth.toArray();
+    for (int attempt = 0; attempt < 20; ++attempt) {
+        std::array<double, 6> dir;
+        double norm = 0.0;
+        for (double& d : dir) {
+            d = rng.normal();
+            norm += d * d;
+        }
+        norm = std::sqrt(norm);
+        for (double& d : dir) d /= norm;
+        const double goal = rng.uniform(bin.lowMm, bin.highMm);
+        auto poseAt = [&](double t) {
+            std::array<double, 6> p;
+            for (int i = 0; i < 6; ++i) p[i] = base[i] + t * dir[i];
+            return Pose::fromArray(p);
+        };
+        auto mtre = [&](double t) { return targetError(truthGeometry, model(poseAt(t)), targets).meanMm; };
+        // Bracket the goal, then bisect (mTRE grows with t along a line for these ranges).
+        double lo = 0.0, hi = 1.0;
+        while (mtre(hi) < goal && hi < 1e3) hi *= 2.0;
+        if (mtre(hi) < goal) continue;
+        for (int i = 0; i < 60; ++i) {
+            const double mid = 0.5 * (lo + hi);
+            (mtre(mid) < goal ? lo : hi) = mid;
+        }
+        const Pose p = poseAt(0.5 * (lo + hi));
+        const double reached = mtre(0.5 * (lo + hi));
+        if (reached >= bin.lowMm && reached <= bin.highMm) return p;
+    }
+    throw Error("could not place a start pose with an mTRE in [" + std::to_string(bin.lowMm) +
+                ", " + std::to_string(bin.highMm) + "] mm");
+}
+
+double median(std::vector<double> v) {
+    if (v.empty()) return std::numeric_limits<double>::quiet_NaN();
+    std::sort(v.begin(), v.end());
+    const std::size_t n = v.size();
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+std::vector<EvaluationTrial> runEvaluation(
+    const DrrVolumePtr& volume, const Image& reference, const PoseModel& model, const Pose& truth,
+    const std::vector<glm::dvec3>& targets, const EvaluationSettings& settings,
+    const std::function<void(const EvaluationTrial&, int, int)>& onTrial,
+    const std::atomic<bool>* stop) {
+    if (settings.startsPerBin < 1) throw Error("evaluation: starts per bin must be at least 1");
+    if (settings.methods.empty()) throw Error("evaluation: no methods");
+    // The same starts for every method.
+    Rng rng(settings.seed);
+    std::vector<std::vector<Pose>> starts(settings.bins.size());
+    for (std::size_t b = 0; b < settings.bins.size(); ++b)
+        for (int s = 0; s < settings.startsPerBin; ++s)
+            starts[b].push_back(startPoseInBin(truth, model, targets, settings.bins[b], rng));
+    const ProjectionGeometry truthGeometry = model(truth);
+    std::vector<EvaluationTrial> trials;
+    const int total = static_cast<int>(settings.methods.size() * settings.bins.size()) *
+                      settings.startsPerBin;
+    for (SearchMethod method : settings.methods) {
+        RegistrationSettings rs = settings.registration;
+        rs.method = method;
+        const Registration registration(volume, reference, model, rs);
+        for (std::size_t b = 0; b < settings.bins.size(); ++b)
+            for (int s = 0; s < settings.startsPerBin; ++s) {
+                if (stop && stop->load()) return trials;
+                const Pose& start = starts[b][s];
+                const std::clock_t cpu0 = std::clock();
+                const RegistrationResult r = registration.run(start, {}, stop);
+                const double cpu = double(std::clock() - cpu0) / CLOCKS_PER_SEC;
+                EvaluationTrial t;
+                t.method = method;
+                t.bin = static_cast<int>(b);
+                t.start = s;
+                t.startMtreMm = targetError(truthGeometry, model(start), targets).meanMm;
+                t.final = targetError(truthGeometry, model(r.pose), targets);
+                t.seconds = r.seconds;
+                t.cpuSeconds = cpu;
+                t.evaluations = r.evaluations;
+                t.success = t.final.meanMm < settings.successMm;
+                trials.push_back(t);
+                if (onTrial) onTrial(t, static_cast<int>(trials.size()), total);
+            }
+    }
+    return trials;
+}
+
+std::vector<EvaluationBinSummary> summarizeBins(const std::vector<EvaluationTrial>& trials,
+                                                const EvaluationSettings& settings) {
+    std::vector<EvaluationBinSummary> out;
+    for (SearchMethod m : settings.methods)
+        for (std::size_t b = 0; b < settings.bins.size(); ++b) {
+            EvaluationBinSummary s;
+            s.method = m;
+            s.bin = settings.bins[b];
+            std::vector<double> mtre, inPlane, outOfPlane, seconds, cpu;
+            int successes = 0;
+            for (const EvaluationTrial& t : trials) {
+                if (t.method != m || t.bin != static_cast<int>(b)) continue;
+                ++s.count;
+                successes += t.success;
+                mtre.push_back(t.final.meanMm);
+                inPlane.push_back(t.final.inPlaneMm);
+                outOfPlane.push_back(t.final.outOfPlaneMm);
+                seconds.push_back(t.seconds);
+                cpu.push_back(t.cpuSeconds);
+            }
+            if (s.count == 0) continue;
+            s.medianCpuSeconds = median(cpu);
+            s.successRate = double(successes) / s.count;
+            s.medianMtreMm = median(mtre);
+            s.medianInPlaneMm = median(inPlane);
+            s.medianOutOfPlaneMm = median(outOfPlane);
+            s.medianSeconds = median(seconds);
+            out.push_back(s);
+        }
+    return out;
+}
+
+std::vector<EvaluationMethodSummary> summarizeMethods(const std::vector<EvaluationTrial>& trials,
+                                                      const EvaluationSettings& settings) {
+    const std::vector<EvaluationBinSummary> bins = summarizeBins(trials, settings);
+    std::vector<EvaluationMethodSummary> out;
+    for (SearchMethod m : settings.methods) {
+        EvaluationMethodSummary s;
+        s.method = m;
+        // Capture range: the upper edge of the last bin of an unbroken run from the first bin
+        // in which the success rate reaches the threshold.
+        for (const EvaluationBinSummary& b : bins) {
+            if (b.method != m) continue;
+            if (b.successRate + 1e-12 < settings.captureSuccessRate) break;
+            s.captureRangeMm = b.bin.highMm;
+        }
+        std::vector<double> seconds;
+        int n = 0, ok = 0;
+        for (const EvaluationTrial& t : trials)
+            if (t.method == m) {
+                ++n;
+                ok += t.success;
+                seconds.push_back(t.seconds);
+            }
+        if (n == 0) continue;
+        s.successRate = double(ok) / n;
+        s.medianSeconds = median(seconds);
+        out.push_back(s);
+    }
+    return out;
+}
+
+}  // namespace fm

@@ -1,0 +1,88 @@
+#pragma once
+// The standard evaluation of 2D/3D registration (van de Kraats et al., IEEE TMI 24(9), 2005):
+// start poses at known initial mTRE, binned (0-2, 2-5, 5-10, 10-20 mm); N starts per bin; for
+// every method the success rate (final mTRE below 1 mm), the median final mTRE (and its in-plane
+// and out-of-plane parts), the time per registration and the capture range (the largest initial
+// mTRE below which every bin succeeds at least 95% of the time).
+//
+// Start poses: a random direction in the six parameters, with 1 mm of translation weighed like
+// 1 degree of rotation (so angle errors match translation errors, as in the protocol), scaled
+// by bisection until the start's mTRE equals a target drawn uniformly within the bin. Every
+// method gets the same starts.
+#include <functional>
+#include <vector>
+
+#include "search/Registration.h"
+#include "search/TargetError.h"
+
+namespace fm {
+
+struct StartBin {
+    double lowMm = 0.0;
+    double highMm = 0.0;
+};
+std::vector<StartBin> standardStartBins();  // 0-2, 2-5, 5-10, 10-20 mm
+
+// A start pose whose mTRE from `truth` lies within the bin. Throws fm::Error if no scale along
+// the drawn directions reaches the bin (targets degenerate).
+Pose startPoseInBin(const Pose& truth, const PoseModel& model,
+                    const std::vector<glm::dvec3>& targets, const StartBin& bin, Rng& rng);
+
+struct EvaluationSettings {
+    std::vector<SearchMethod> methods = globalSearchMethods();
+    std::vector<StartBin> bins = standardStartBins();
+    int startsPerBin = 10;
+    std::uint64_t seed = 1;
+    double successMm = 1.0;
+    double captureSuccessRate = 0.95;
+    RegistrationSettings registration;
+};
+
+struct EvaluationTrial {
+    SearchMethod method = SearchMethod::CmaEs;
+    int bin = 0;
+    int start = 0;  // index within the bin
+    double startMtreMm = 0.0;
+    TargetError final;
+    double seconds = 0.0;     // wall clock
+    double cpuSeconds = 0.0;  // processor time of the whole process (all threads)
+    int evaluations = 0;
+    bool success = false;
+};
+
+struct EvaluationBinSummary {
+    SearchMethod method = SearchMethod::CmaEs;
+    StartBin bin;
+    int count = 0;
+    double successRate = 0.0;
+    double medianMtreMm = 0.0;
+    double medianInPlaneMm = 0.0;
+    double medianOutOfPlaneMm = 0.0;
+    double medianSeconds = 0.0;
+    double medianCpuSeconds = 0.0;
+};
+
+struct EvaluationMethodSummary {
+    SearchMethod method = SearchMethod::CmaEs;
+    double captureRangeMm = 0.0;  // 0 if even the first bin falls short
+    double successRate = 0.0;     // over all starts
+    double medianSeconds = 0.0;
+};
+
+// Runs every method from every start against a reference DRR rendered at `truth`. `onTrial`
+// (optional) is called after each registration. Deterministic for a seed and thread count.
+std::vector<EvaluationTrial> runEvaluation(const DrrVolumePtr& volume, const Image& reference,
+                                           const PoseModel& model, const Pose& truth,
+                                           const std::vector<glm::dvec3>& targets,
+                                           const EvaluationSettings& settings,
+                                           const std::function<void(const EvaluationTrial&, int done, int total)>& onTrial = {},
+                                           const std::atomic<bool>* stop = nullptr);
+
+std::vector<EvaluationBinSummary> summarizeBins(const std::vector<EvaluationTrial>& trials,
+                                                const EvaluationSettings& settings);
+std::vector<EvaluationMethodSummary> summarizeMethods(const std::vector<EvaluationTrial>& trials,
+                                                      const EvaluationSettings& settings);
+
+double median(std::vector<double> values);  // NaN for none
+
+}  // namespace fm

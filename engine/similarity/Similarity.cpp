@@ -1,0 +1,52 @@
+#include "similarity/Similarity.h"
+
+#include "core/Error.h"
+#include "similarity/GradientDifference.h"
+#include "similarity/GradientNcc.h"
+#include "similarity/Ncc.h"
+
+namespace fm {
+
+const char* toString(SimilarityMeasure measure) {
+    switch (measure) {
+        case SimilarityMeasure::Ncc: return "ncc";
+        case SimilarityMeasure::GradientNcc: return "gncc";
+        case SimilarityMeasure::GradientDifference: return "gd";
+    }
+    return "?";
+}
+
+SimilarityMeasure parseSimilarityMeasure(const std::string& text) {
+    if (text == "ncc") return SimilarityMeasure::Ncc;
+    if (text == "gncc" || text == "gradient-ncc") return SimilarityMeasure::GradientNcc;
+    if (text == "gd" || text == "gradient-difference") return SimilarityMeasure::GradientDifference;
+    throw Error("unknown similarity measure '" + text + "' (expected ncc, gncc or gd)");
+}
+
+PreparedReference prepareReference(const Image& reference, SimilarityMeasure measure) {
+    PreparedReference p;
+    p.image = reference;
+    if (measure != SimilarityMeasure::Ncc) p.gradients = sobel(reference);
+    return p;
+}
+
+double similarity(SimilarityMeasure measure, const PreparedReference& reference,
+                  const Image& moving, const Mask* mask) {
+    const Image& ref = reference.image;
+    if (ref.width != moving.width || ref.height != moving.height)
+        throw Error("similarity: the moving image size differs from the reference size");
+    if (mask && (mask->width != ref.width || mask->height != ref.height))
+        throw Error("similarity: the mask size differs from the reference size");
+    switch (measure) {
+        case SimilarityMeasure::Ncc: return ncc(ref, moving, mask);
+        case SimilarityMeasure::GradientNcc:
+            return gradientNcc(reference.gradients, sobel(moving),
+                               interiorMask(ref.width, ref.height, mask));
+        case SimilarityMeasure::GradientDifference:
+            return gradientDifference(reference.gradients, sobel(moving),
+                                      interiorMask(ref.width, ref.height, mask));
+    }
+    return 0.0;
+}
+
+}  // namespace fm

@@ -1,0 +1,33 @@
+#pragma once
+// One entry point for the similarity measures used by the pose search. Higher is better:
+// NCC and gradient NCC lie in [-1, 1], gradient difference in (0, 1].
+#include <string>
+
+#include "core/Image.h"
+#include "similarity/Gradient.h"
+#include "similarity/Mask.h"
+
+namespace fm {
+
+enum class SimilarityMeasure {
+    Ncc,                 // intensities; fast, sensitive to soft tissue and background
+    GradientNcc,         // Sobel gradients; ignores constant offsets and linear ramps
+    GradientDifference,  // Penney 1998; robust to soft tissue and overlays
+};
+
+const char* toString(SimilarityMeasure measure);  // "ncc", "gncc", "gd"
+// Accepts "ncc", "gncc" (or "gradient-ncc"), "gd" (or "gradient-difference"); fm::Error else.
+SimilarityMeasure parseSimilarityMeasure(const std::string& text);
+
+// The fixed image, with what every comparison would otherwise recompute.
+struct PreparedReference {
+    Image image;
+    GradientImages gradients;  // empty for Ncc
+};
+PreparedReference prepareReference(const Image& reference, SimilarityMeasure measure);
+
+// Compares `moving` (same size as the reference) over `mask` (nullptr = all pixels).
+double similarity(SimilarityMeasure measure, const PreparedReference& reference,
+                  const Image& moving, const Mask* mask);
+
+}  // namespace fm

@@ -1,0 +1,270 @@
+// Registration on the knee phantom, the geometry helpers it relies on, and the target error.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "core/Error.h"
+#include "drr/Drr.h"
+#include "search/Evaluation.h"
+#include "search/PoseModel.h"
+#include "search/Registration.h"
+#include "search/TargetError.h"
+#include "match/PoseError.h"
+#include "volume/VolumeSource.h"
+
+namespace fm {
+namespace {
+
+// Geometry built from the same doubles along two routes agrees to rounding (~1e-13 mm at
+// these magnitudes); 1e-9 mm leaves room and still catches any real mistake.
+constexpr double kGeometryToleranceMm = 1e-9;
+// Success in the van de Kraats protocol: final mTRE below 1 mm.
+constexpr double kSuccessMtreMm = 1.0;
+
+struct Knee {
+    Volume volume = loadVolume("phantom:knee");
+    DrrVolumePtr prepared = prepareDrrVolume(volume, {});
+    SceneSetup setup = defaultSceneSetup();
+    PoseModel model = scenePoseModel(setup, volume.center());
+};
+
+const Knee& knee() {
+    static const Knee k;
+    return k;
+}
+
+Image render(const ProjectionGeometry& g, int threads = 0) {
+    DrrRenderOptions o;
+    o.threads = threads;
+    return renderDrr(*knee().prepared, g, o);
+}
+
+void expectNear(const glm::dvec3& a, const glm::dvec3& b, double tol) {
+    EXPECT_NEAR(a.x, b.x, tol);
+    EXPECT_NEAR(a.y, b.y, tol);
+    EXPECT_NEAR(a.z, b.z, tol);
+}
+
+TEST(TargetError, TranslationsSplitIntoInPlaneAndDepth) {
+    const ProjectionGeometry truth = sceneGeometry(Pose{}, defaultSceneSetup(), glm::dvec3(0.0));
+    const std::vector<glm::dvec3> targets{{0, 0, 0}, {10, 20, -30}, {-40, 5, 12}};
+    // Moving the camera by d along its own axes moves every target by -d in camera coordinates:
+    // |d| exactly, split by direction.
+    ProjectionGeometry shifted = truth;
+    const glm::dvec3 d = 3.0 * truth.detector.u + 4.0 * truth.detector.normal();
+    shifted.source += d;
+    shifted.detector.origin += d;
+    const TargetError e = targetError(truth, shifted, targets);
+    EXPECT_NEAR(e.meanMm, 5.0, 1e-9);
+    EXPECT_NEAR(e.inPlaneMm, 3.0, 1e-9);
+    EXPECT_NEAR(e.outOfPlaneMm, 4.0, 1e-9);
+    EXPECT_NEAR(targetError(truth, truth, targets).meanMm, 0.0, 1e-12);
+    EXPECT_THROW(targetError(truth, truth, {}), Error);
+}
+
+TEST(TargetError, AgreesWithThePoseBasedMtreOfMatch) {
+    // Two independent implementations of one definition: geometry-based here, pose-based in
+    // match/PoseError.h.
+    const auto targets = registrationTargets(knee().volume);
+    const Pose a = parsePose("1,-2,3,10,5,-4"), b = parsePose("-2,0.5,1,14,2,3");
+    const TargetError mine = targetError(knee().model(a), knee().model(b), targets);
+    const TargetRegistrationError theirs =
+        targetRegistrationError(a, b, knee().setup, knee().volume.center(), targets);
+    EXPECT_NEAR(mine.meanMm, theirs.meanMm, 1e-9);
+    EXPECT_NEAR(mine.inPlaneMm, theirs.meanInPlaneMm, 1e-9);
+    EXPECT_NEAR(mine.outOfPlaneMm, theirs.meanDepthMm, 1e-9);
+}
+
+TEST(TargetError, ParameterErrorWrapsAzimuth) {
+    Pose a, b;
+    a.azimuthDeg = 179.0;
+    b.azimuthDeg = -179.0;
+    b.offset.x = 2.5;
+    const auto d = parameterError(a, b);
+    EXPECT_NEAR(d[0], 2.5, 1e-12);
+    EXPECT_NEAR(d[3], 2.0, 1e-12);
+}
+
+TEST(PoseModel, FixedGeometryZeroPoseIsTheGivenGeometryAndMovesLikeTheScene) {
+    const SceneSetup setup = defaultSceneSetup();
+    const glm::dvec3 center{5.0, -7.0, 12.0};
+    // When the given geometry is the scene's zero-pose geometry, both models must agree at
+    // every pose.
+    const PoseModel scene = scenePoseModel(setup, center);
+    const PoseModel fixed = fixedGeometryPoseModel(scene(Pose{}), setup, center);
+    for (const Pose& p : {Pose{}, parsePose("3,-2,5,20,-10,7"), parsePose("-8,1,0,-95,45,-30")}) {
+        const ProjectionGeometry a = scene(p), b = fixed(p);
+        expectNear(a.source, b.source, kGeometryToleranceMm);
+        expectNear(a.detector.origin, b.detector.origin, kGeometryToleranceMm);
+        expectNear(a.detector.u, b.detector.u, kGeometryToleranceMm);
+        expectNear(a.detector.v, b.detector.v, kGeometryToleranceMm);
+    }
+}
+
+TEST(PoseModel, CroppedDetectorRendersExactlyThoseDrrPixels) {
+    const ProjectionGeometry g = knee().model(Pose{}).downsampled(4);
+    const Image full = render(g, 1);
+    const ProjectionGeometry crop = cropDetector(g, 10, 7, 30, 41);
+    const Image part = render(crop, 1);
+    ASSERT_EQ(part.width, 30);
+    ASSERT_EQ(part.height, 41);
+    // Each pixel is one ray from the same source to the same point: the same line integral up
+    // to the rounding of the moved origin (relative 1e-12 of a ~10 line integral).
+    for (int r = 0; r < 41; ++r)
+        for (int c = 0; c < 30; ++c) EXPECT_NEAR(part.at(c, r), full.at(c + 10, r + 7), 1e-4);
+    EXPECT_THROW(cropDetector(g, 60, 0, 10, 10), Error);
+    EXPECT_THROW(cropDetector(g, 0, 0, 0, 10), Error);
+}
+
+TEST(SearchCoordinates, TranslationsFollowTheStartCamera) {
+    const Pose start = parsePose("1,2,3,30,10,5");
+    const ProjectionGeometry g = knee().model(start);
+    const Pose moved = poseFromSearchPoint(start, g, {2.0, 0.0, 0.0, 0.0, 0.0, 0.0});
+    // Moving the CT by 2 mm along film u moves its projection along u and not along v.
+    const glm::dvec3 c = knee().volume.center();
+    const auto before = g.projectToPixel(c), after = knee().model(moved).projectToPixel(c);
+    ASSERT_TRUE(before && after);
+    EXPECT_GT(std::abs(after->x - before->x), 0.5);  // 2 mm x magnification 2 / 2.5 mm pixels
+    EXPECT_NEAR(after->y, before->y, 1e-9);
+    const Pose turned = poseFromSearchPoint(start, g, {0, 0, 0, 1.5, -2.0, 0.5});
+    EXPECT_NEAR(turned.azimuthDeg, 31.5, 1e-12);
+    EXPECT_NEAR(turned.elevationDeg, 8.0, 1e-12);
+    EXPECT_NEAR(turned.rotationDeg, 5.5, 1e-12);
+}
+
+TEST(Registration, CostIsLowestAtTheTruthAlongEachParameter) {
+    const Pose truth = parsePose("0,0,0,10,5,0");
+    const Image reference = render(knee().model(truth));
+    RegistrationSettings s;
+    s.levelFactors = {4};
+    const Registration reg(knee().prepared, reference, knee().model, s);
+    const double atTruth = reg.cost(truth, 0);
+    EXPECT_LT(atTruth, -0.95);  // a DRR against itself (up to pyramid averaging)
+    for (int p = 0; p < 6; ++p)
+        for (double step : {-3.0, 3.0}) {
+            auto a = truth.toArray();
+            a[p] += step;
+            EXPECT_GT(reg.cost(Pose::fromArray(a), 0), atTruth) << "parameter " << p;
+        }
+}
+
+TEST(Registration, RecoversThePhantomPoseFromA5mm5DegStart) {
+    const Pose truth = parsePose("0,0,0,10,5,0");
+    const Image reference = render(knee().model(truth));
+    const Pose start = parsePose("3,-3,2,13.5,2,-3");  // 3-3.5 mm and deg off per parameter
+    const auto targets = registrationTargets(knee().volume);
+    const double startMtre = targetError(knee().model(truth), knee().model(start), targets).meanMm;
+    EXPECT_GT(startMtre, 4.0);  // the start really is that far off
+    for (SearchMethod m : globalSearchMethods()) {
+        RegistrationSettings s;
+        s.method = m;
+        // Kept fast (it runs under the sanitizers too): 64 and 128 pixel levels only, which
+        // already reach about 0.5 mm; the full-resolution level is measured by `evaluate`.
+        s.levelFactors = {4, 2};
+        s.globalEvaluations = 400;
+        s.polishEvaluations = 120;
+        const Registration reg(knee().prepared, reference, knee().model, s);
+        const RegistrationResult r = reg.run(start);
+        const TargetError e = targetError(knee().model(truth), knee().model(r.pose), targets);
+        EXPECT_LT(e.meanMm, kSuccessMtreMm) << toString(m) << " ended at " << formatPose(r.pose);
+        EXPECT_LE(r.evaluations, reg.totalBudget());
+        EXPECT_FALSE(r.stopped);
+    }
+}
+
+TEST(Registration, DeterministicForASeedAndStoppable) {
+    const Pose truth{};
+    const Image reference = render(knee().model(truth));
+    RegistrationSettings s;
+    s.method = SearchMethod::ParticleSwarm;
+    s.levelFactors = {4, 2};
+    s.globalEvaluations = 120;
+    s.polishEvaluations = 30;
+    s.seed = 5;
+    const Registration reg(knee().prepared, reference, knee().model, s);
+    const Pose start = parsePose("2,1,-2,2,-1,1");
+    const RegistrationResult a = reg.run(start), b = reg.run(start);
+    EXPECT_EQ(a.pose.toArray(), b.pose.toArray());
+    EXPECT_EQ(a.costHistory, b.costHistory);
+
+    std::atomic<bool> stop{false};
+    int calls = 0;
+    int lastEvaluations = 0;
+    const RegistrationResult c = reg.run(
+        start,
+        [&](const RegistrationProgress& p) {
+            EXPECT_GE(p.evaluations, lastEvaluations);
+            EXPECT_LE(p.evaluations, p.evaluationBudget);
+            lastEvaluations = p.evaluations;
+            if (++calls == 2) stop = true;
+        },
+        &stop);
+    EXPECT_TRUE(c.stopped);
+    EXPECT_EQ(calls, 2);
+    EXPECT_LT(c.evaluations, a.evaluations);
+}
+
+TEST(Registration, RejectsBadInput) {
+    const Image reference = render(knee().model(Pose{}));
+    RegistrationSettings s;
+    EXPECT_THROW(Registration(knee().prepared, Image(), knee().model, s), Error);
+    EXPECT_THROW(Registration(knee().prepared, Image(100, 100, 1.0f), knee().model, s), Error);
+    s.levelFactors = {2, 4};
+    EXPECT_THROW(Registration(knee().prepared, reference, knee().model, s), Error);
+    s.levelFactors = {3};
+    EXPECT_THROW(Registration(knee().prepared, reference, knee().model, s), Error);
+    s.levelFactors = {4, 2};
+    s.searchRadius[2] = 0.0;
+    EXPECT_THROW(Registration(knee().prepared, reference, knee().model, s), Error);
+}
+
+TEST(Evaluation, StartPosesLandInTheirBins) {
+    const auto targets = registrationTargets(knee().volume);
+    const Pose truth = parsePose("0,0,0,10,5,0");
+    Rng rng(3);
+    for (const StartBin& bin : standardStartBins())
+        for (int i = 0; i < 5; ++i) {
+            const Pose p = startPoseInBin(truth, knee().model, targets, bin, rng);
+            const double e = targetError(knee().model(truth), knee().model(p), targets).meanMm;
+            EXPECT_GE(e, bin.lowMm);
+            EXPECT_LE(e, bin.highMm);
+        }
+}
+
+TEST(Evaluation, SummariesFollowTheDefinitions) {
+    EvaluationSettings s;
+    s.methods = {SearchMethod::CmaEs, SearchMethod::MonteCarlo};
+    s.bins = {{0, 2}, {2, 5}, {5, 10}};
+    std::vector<EvaluationTrial> trials;
+    auto add = [&](SearchMethod m, int bin, double mtre, double seconds) {
+        EvaluationTrial t;
+        t.method = m;
+        t.bin = bin;
+        t.final.meanMm = mtre;
+        t.seconds = seconds;
+        t.success = mtre < s.successMm;
+        trials.push_back(t);
+    };
+    // cmaes: all succeed in bins 0 and 1, half in bin 2 -> capture range 5 mm.
+    add(SearchMethod::CmaEs, 0, 0.2, 1.0), add(SearchMethod::CmaEs, 0, 0.4, 3.0);
+    add(SearchMethod::CmaEs, 1, 0.3, 2.0), add(SearchMethod::CmaEs, 1, 0.5, 2.0);
+    add(SearchMethod::CmaEs, 2, 0.6, 1.0), add(SearchMethod::CmaEs, 2, 7.0, 1.0);
+    // mc: fails in bin 0 already -> capture range 0, even though bin 1 succeeds.
+    add(SearchMethod::MonteCarlo, 0, 3.0, 1.0), add(SearchMethod::MonteCarlo, 0, 0.1, 1.0);
+    add(SearchMethod::MonteCarlo, 1, 0.1, 1.0);
+    const auto bins = summarizeBins(trials, s);
+    ASSERT_EQ(bins.size(), 5u);  // mc has no trial in bin 2
+    EXPECT_DOUBLE_EQ(bins[0].medianMtreMm, 0.3);
+    EXPECT_DOUBLE_EQ(bins[0].medianSeconds, 2.0);
+    EXPECT_DOUBLE_EQ(bins[2].successRate, 0.5);
+    const auto methods = summarizeMethods(trials, s);
+    ASSERT_EQ(methods.size(), 2u);
+    EXPECT_DOUBLE_EQ(methods[0].captureRangeMm, 5.0);
+    EXPECT_DOUBLE_EQ(methods[0].successRate, 5.0 / 6.0);
+    EXPECT_DOUBLE_EQ(methods[1].captureRangeMm, 0.0);
+    EXPECT_TRUE(std::isnan(median({})));
+    EXPECT_DOUBLE_EQ(median({3.0, 1.0, 2.0}), 2.0);
+}
+
+}  // namespace
+}  // namespace fm
