@@ -12,8 +12,9 @@ void BM_KneeDefault(benchmark::State& state) {
     fm::KneePhantomParams p;
     p.threads = static_cast<int>(state.range(0));
     for (auto _ : state) benchmark::DoNotOptimize(fm::makeKneePhantom(p).values.data());
-    state.counters["voxels/s"] = benchmark::Counter(
-        static_cast<double>(p.dims.x) * p.dims.y * p.dims.z, benchmark::Counter::kIsIterationInvariantRate);
+    state.counters["voxels/s"] =
+        benchmark::Counter(static_cast<double>(p.dims.x) * p.dims.y * p.dims.z,
+                           benchmark::Counter::kIsIterationInvariantRate);
 }
 BENCHMARK(BM_KneeDefault)->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond)->UseRealTime();
 

@@ -36,8 +36,8 @@ void runApp(const AppArgs& args) {
     std::printf("window: %s\n", backend->describe().c_str());
     fm::app::AppOptions options;
     options.volumeSpec = args.volume;
-    options.seed = static_cast<std::uint64_t>(
-        std::chrono::system_clock::now().time_since_epoch().count());
+    options.seed =
+        static_cast<std::uint64_t>(std::chrono::system_clock::now().time_since_epoch().count());
     fm::app::App app(*backend, options);
     int frames = 0;
     double totalMs = 0.0;
@@ -46,19 +46,22 @@ void runApp(const AppArgs& args) {
         totalMs += app.state().timings.frameMs;
         ++frames;
     }
-    std::printf("drew %d frames (mean %.1f ms of CPU per frame)\n", frames,
-                frames ? totalMs / frames : 0.0);
+    std::printf("drew %d frames (mean %.1f ms per frame); scene: %s\n", frames,
+                frames ? totalMs / frames : 0.0,
+                app.scene() ? app.scene()->spec.c_str() : "not loaded yet");
 }
 
 FM_REGISTER_COMMAND("app", 1, [](CLI::App& cli) {
-    auto* cmd = cli.add_subcommand("app", "The matching app: reference DRR, your DRR, six "
-                                          "parameters, 3D view (default command)");
+    auto* cmd = cli.add_subcommand("app",
+                                   "The matching app: reference DRR, your DRR, six "
+                                   "parameters, 3D view (default command)");
     auto args = std::make_shared<AppArgs>();
     cmd->add_option("--volume", args->volume,
                     "CT file, DICOM folder or phantom:NAME to open at start")
         ->capture_default_str();
-    cmd->add_option("--frames", args->frames, "exit after N frames (smoke tests); 0 = run until "
-                                              "the window is closed")
+    cmd->add_option("--frames", args->frames,
+                    "exit after N frames (smoke tests); 0 = run until "
+                    "the window is closed")
         ->check(CLI::NonNegativeNumber);
     cmd->add_flag("--require-window", args->requireWindow,
                   "fail instead of falling back to a headless screenshot without a display");

@@ -31,6 +31,7 @@ struct DrrArgs {
     double stepMm = 1.0;
     int threads = 0;
     int repeat = 1;
+    bool noSkip = false;
     std::string out;
     std::string raw;
 };
@@ -79,6 +80,11 @@ void runDrr(const DrrArgs& a) {
     if (a.thresholdHU && !std::isfinite(*a.thresholdHU))
         throw fm::Error("--threshold must be a finite number");
 
+    if (a.intensity && a.values == "raw")
+        std::fprintf(stderr,
+                     "fluoromatch: note: --intensity with --values raw is exp(-value * mm), "
+                     "only a transmitted fraction when the values are attenuations in 1/mm\n");
+
     auto start = std::chrono::steady_clock::now();
     const fm::Volume volume = fm::loadVolume(a.volume);
     const double loadMs = msSince(start);
@@ -97,6 +103,7 @@ void runDrr(const DrrArgs& a) {
     renderOptions.trace = a.mode == "approx" ? fm::DrrTrace::Approx : fm::DrrTrace::Exact;
     renderOptions.approxStepMm = a.stepMm;
     renderOptions.threads = a.threads;
+    renderOptions.skipEmptySpace = !a.noSkip;
 
     fm::Image image;
     std::vector<double> times;
@@ -124,6 +131,7 @@ void runDrr(const DrrArgs& a) {
     std::printf(", %s, %s", a.intensity ? "intensity exp(-integral)" : "line integral",
                 a.mode.c_str());
     if (a.mode == "approx") std::printf(" (step %g mm)", a.stepMm);
+    if (a.noSkip) std::printf(", no empty-space skipping");
     std::printf(", %d thread%s\n", threads, threads == 1 ? "" : "s");
     std::printf("prepare   %.2f ms\n", prepareMs);
     if (a.repeat == 1)
@@ -184,6 +192,9 @@ FM_REGISTER_COMMAND("drr", 20, [](CLI::App& app) {
         ->capture_default_str();
     cmd->add_option("--repeat", a->repeat, "Render this many times and report the fastest (timing)")
         ->capture_default_str();
+    cmd->add_flag("--no-skip", a->noSkip,
+                  "Plain traversal of every voxel and pixel, without empty-space skipping (to "
+                  "check that skipping changes nothing)");
     cmd->add_option("--out", a->out, "PNG to write, windowed for viewing");
     cmd->add_option("--raw", a->raw,
                     "Float32 image with the exact values and the detector spacing (.mha)");

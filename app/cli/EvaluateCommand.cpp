@@ -1,12 +1,12 @@
 // `fluoromatch evaluate`: the van de Kraats et al. (2005) protocol for every search method on one
 // volume: starts at known initial mTRE bins, success rate, median final mTRE split into in-plane
 // and out-of-plane parts, capture range and time per registration. See docs/search.md.
+#include <unistd.h>
 #include <cstdio>
 #include <fstream>
 #include <memory>
 #include <sstream>
 #include <string>
-#include <unistd.h>
 
 #include "cli/CommandRegistry.h"
 #include "cli/SearchCli.h"
@@ -57,10 +57,10 @@ void runEvaluate(const EvaluateArgs& a) {
 
     std::printf("volume     %s (%d x %d x %d), truth %s, %zu mTRE targets\n", a.volume.c_str(),
                 volume.dims.x, volume.dims.y, volume.dims.z, a.truth.c_str(), targets.size());
-    std::printf("protocol   %d starts per bin, seed %llu, success = final mTRE < %.1f mm, %d "
-                "threads\n",
-                a.starts, static_cast<unsigned long long>(settings.seed), settings.successMm,
-                threads);
+    std::printf(
+        "protocol   %d starts per bin, seed %llu, success = final mTRE < %.1f mm, %d "
+        "threads\n",
+        a.starts, static_cast<unsigned long long>(settings.seed), settings.successMm, threads);
     std::printf("search     %s, %s\n", fm::toString(settings.registration.similarity),
                 fm::cli::describeLevels(settings.registration).c_str());
     std::fflush(stdout);
@@ -77,8 +77,8 @@ void runEvaluate(const EvaluateArgs& a) {
                 csv << fm::toString(t.method) << ',' << b.lowMm << ',' << b.highMm << ',' << t.start
                     << ',' << t.startMtreMm << ',' << t.final.meanMm << ',' << t.final.inPlaneMm
                     << ',' << t.final.outOfPlaneMm << ',' << t.seconds << ',' << t.cpuSeconds << ','
-                    << t.evaluations
-                    << ',' << (t.success ? 1 : 0) << std::endl;  // flushed: partial runs count
+                    << t.evaluations << ',' << (t.success ? 1 : 0)
+                    << std::endl;  // flushed: partial runs count
             }
             if (interactive || done == total || done % 10 == 0)
                 std::fprintf(stderr, "%sregistration %d/%d (%s)%s", interactive ? "\r" : "", done,
@@ -100,15 +100,17 @@ void runEvaluate(const EvaluateArgs& a) {
     for (const auto& m : fm::summarizeMethods(trials, settings))
         std::printf("%-6s %11.0f mm %15.0f%% %14.3f s\n", fm::toString(m.method), m.captureRangeMm,
                     100.0 * m.successRate, m.medianSeconds);
-    std::printf("(capture range: largest initial mTRE up to which every bin reaches %.0f%% "
-                "success)\n",
-                100.0 * settings.captureSuccessRate);
+    std::printf(
+        "(capture range: largest initial mTRE up to which every bin reaches %.0f%% "
+        "success)\n",
+        100.0 * settings.captureSuccessRate);
 }
 
 FM_REGISTER_COMMAND("evaluate", 41, [](CLI::App& app) {
     auto* cmd = app.add_subcommand(
-        "evaluate", "Evaluate the search methods (van de Kraats 2005 protocol): success rate, "
-                    "median mTRE, capture range, time");
+        "evaluate",
+        "Evaluate the search methods (van de Kraats 2005 protocol): success rate, "
+        "median mTRE, capture range, time");
     auto a = std::make_shared<EvaluateArgs>();
     cmd->add_option("--volume", a->volume, "CT file, DICOM folder or phantom:NAME")
         ->capture_default_str();

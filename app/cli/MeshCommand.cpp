@@ -67,10 +67,11 @@ void runMesh(const MeshArgs& a) {
     }
     fm::writeMesh(mesh, a.out);
     const auto sizes = fm::componentSizes(mesh);
-    std::printf("wrote %s: %zu triangles, %zu vertices, %zu components (iso %.6g; load %.0f ms, "
-                "marching cubes %.1f ms)\n",
-                a.out.c_str(), mesh.triangleCount(), mesh.vertexCount(), sizes.size(), a.iso,
-                loadMs, meshMs);
+    std::printf(
+        "wrote %s: %zu triangles, %zu vertices, %zu components (iso %.6g; load %.0f ms, "
+        "marching cubes %.1f ms)\n",
+        a.out.c_str(), mesh.triangleCount(), mesh.vertexCount(), sizes.size(), a.iso, loadMs,
+        meshMs);
     if (a.check) {
         const auto checkStart = std::chrono::steady_clock::now();
         const fm::MeshCheckReport r = fm::checkMesh(mesh);
@@ -84,8 +85,8 @@ void runMesh(const MeshArgs& a) {
 }
 
 FM_REGISTER_COMMAND("mesh", 60, [](CLI::App& app) {
-    auto* cmd = app.add_subcommand(
-        "mesh", "Bone surface by marching cubes, written as .ply, .stl or .obj");
+    auto* cmd =
+        app.add_subcommand("mesh", "Bone surface by marching cubes, written as .ply, .stl or .obj");
     auto a = std::make_shared<MeshArgs>();
     cmd->add_option("--volume", a->volume,
                     "CT file (.nii[.gz], .mha/.mhd, .nrrd/.nhdr, .vtk), DICOM folder, or "

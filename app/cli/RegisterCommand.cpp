@@ -1,12 +1,12 @@
 // `fluoromatch register`: automatic pose search of a CT against one reference image, either a
 // DRR rendered at a known pose (--reference-pose: the truth is known and the error reported) or
 // an image file with its projection geometry (--reference IMG --geometry g.json).
+#include <unistd.h>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <memory>
 #include <string>
-#include <unistd.h>
 
 #include "cli/CommandRegistry.h"
 #include "cli/SearchCli.h"
@@ -52,7 +52,8 @@ void runRegister(const RegisterArgs& a) {
         model = fm::scenePoseModel(setup, volume.center());
         reference = fm::cli::renderReference(*prepared, model(*truth));
     } else {
-        model = fm::fixedGeometryPoseModel(fm::readGeometryFile(a.geometry), setup, volume.center());
+        model =
+            fm::fixedGeometryPoseModel(fm::readGeometryFile(a.geometry), setup, volume.center());
         reference = fm::cli::readReferenceImage(a.reference);
         if (!a.truth.empty()) truth = fm::parsePose(a.truth);
     }
@@ -64,8 +65,8 @@ void runRegister(const RegisterArgs& a) {
         std::printf("reference   DRR at pose %s (%d x %d)\n", fm::formatPose(*truth).c_str(),
                     reference.width, reference.height);
     else
-        std::printf("reference   %s (%d x %d), geometry %s\n", a.reference.c_str(),
-                    reference.width, reference.height, a.geometry.c_str());
+        std::printf("reference   %s (%d x %d), geometry %s\n", a.reference.c_str(), reference.width,
+                    reference.height, a.geometry.c_str());
     std::printf("start       %s\n", fm::formatPose(start).c_str());
     std::printf("search      %s, %s, seed %llu, %s\n", fm::toString(settings.method),
                 fm::toString(settings.similarity), static_cast<unsigned long long>(settings.seed),
@@ -73,8 +74,8 @@ void runRegister(const RegisterArgs& a) {
 
     const fm::Registration registration(prepared, reference, model, settings);
     fm::cli::ProgressBar bar(isatty(fileno(stderr)) != 0);
-    const fm::RegistrationResult result = registration.run(
-        start, [&](const fm::RegistrationProgress& p) { bar.update(p); });
+    const fm::RegistrationResult result =
+        registration.run(start, [&](const fm::RegistrationProgress& p) { bar.update(p); });
     bar.finish();
 
     std::printf("\nfinal pose  %s\n", fm::formatPose(result.pose).c_str());
@@ -89,9 +90,10 @@ void runRegister(const RegisterArgs& a) {
         const auto targets = fm::registrationTargets(volume);
         const fm::TargetError before = fm::targetError(model(*truth), model(start), targets);
         const fm::TargetError after = fm::targetError(model(*truth), model(result.pose), targets);
-        std::printf("\nmTRE        start %.3f mm -> final %.3f mm (in-plane %.3f mm, "
-                    "out-of-plane %.3f mm; %zu targets)\n",
-                    before.meanMm, after.meanMm, after.inPlaneMm, after.outOfPlaneMm, targets.size());
+        std::printf(
+            "\nmTRE        start %.3f mm -> final %.3f mm (in-plane %.3f mm, "
+            "out-of-plane %.3f mm; %zu targets)\n",
+            before.meanMm, after.meanMm, after.inPlaneMm, after.outOfPlaneMm, targets.size());
     }
     std::printf("time        %.3f s (%d evaluations, %.2f ms each)%s\n", result.seconds,
                 result.evaluations, 1000.0 * result.seconds / std::max(1, result.evaluations),

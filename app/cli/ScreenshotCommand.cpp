@@ -91,8 +91,9 @@ void runScreenshot(const ScreenshotArgs& args) {
 }
 
 FM_REGISTER_COMMAND("screenshot", 2, [](CLI::App& cli) {
-    auto* cmd = cli.add_subcommand("screenshot", "Render the whole app UI headless (OSMesa) to a "
-                                                 "PNG, deterministically");
+    auto* cmd = cli.add_subcommand("screenshot",
+                                   "Render the whole app UI headless (OSMesa) to a "
+                                   "PNG, deterministically");
     auto a = std::make_shared<ScreenshotArgs>();
     cmd->add_option("--out", a->out, "PNG to write")->capture_default_str();
     cmd->add_option("--size", a->size, "WIDTHxHEIGHT in pixels")->capture_default_str();

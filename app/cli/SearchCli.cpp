@@ -39,7 +39,8 @@ void addSearchOptions(CLI::App* cmd, SearchArgs& a, bool withMethod) {
     cmd->add_option("--similarity", a.similarity,
                     "Similarity: ncc, gncc (gradient NCC) or gd (gradient difference)")
         ->capture_default_str();
-    cmd->add_option("--seed", a.seed, "Random seed (same seed, same result)")->capture_default_str();
+    cmd->add_option("--seed", a.seed, "Random seed (same seed, same result)")
+        ->capture_default_str();
     cmd->add_option("--budget", a.budget, "Evaluations of the global search (default 600)");
     cmd->add_option("--polish-budget", a.polishBudget,
                     "Evaluations of the local polish per level (default 100)");
@@ -60,8 +61,9 @@ RegistrationSettings registrationSettings(const SearchArgs& a) {
     RegistrationSettings s;
     s.method = parseSearchMethod(a.method);
     if (s.method == SearchMethod::NelderMead)
-        throw Error("--method: nm is the local polish, not a global search (use mc, pso, bees "
-                    "or cmaes)");
+        throw Error(
+            "--method: nm is the local polish, not a global search (use mc, pso, bees "
+            "or cmaes)");
     s.similarity = parseSimilarityMeasure(a.similarity);
     s.polishMethod = parseSearchMethod(a.polish);
     s.seed = a.seed;
@@ -125,7 +127,8 @@ Image readReferenceImage(const std::string& path) {
         if (!data)
             throw Error(path + ": cannot read PNG (" + std::string(stbi_failure_reason()) + ")");
         Image img(w, h);
-        for (std::size_t i = 0; i < img.pixels.size(); ++i) img.pixels[i] = float(data[i]) / 65535.0f;
+        for (std::size_t i = 0; i < img.pixels.size(); ++i)
+            img.pixels[i] = float(data[i]) / 65535.0f;
         stbi_image_free(data);
         return img;
     }
@@ -144,8 +147,8 @@ Image readReferenceImage(const std::string& path) {
 void ProgressBar::update(const RegistrationProgress& p) {
     const double fraction =
         p.evaluationBudget > 0 ? std::min(1.0, double(p.evaluations) / p.evaluationBudget) : 0.0;
-    const std::string stage = std::to_string(p.level + 1) + "/" + std::to_string(p.levelCount) +
-                              " " + p.stage;
+    const std::string stage =
+        std::to_string(p.level + 1) + "/" + std::to_string(p.levelCount) + " " + p.stage;
     if (!interactive_) {
         if (stage != lastStage_)
             std::fprintf(stderr, "level %s (detector / %d)\n", stage.c_str(), p.factor);

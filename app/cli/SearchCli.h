@@ -16,13 +16,14 @@ struct SearchArgs {
     std::string method = "cmaes";
     std::string similarity = "gncc";
     std::uint64_t seed = 1;
-    int budget = 0;        // global search evaluations (0 = the default)
-    int polishBudget = -1; // per polish level (-1 = the default)
-    std::string levels;    // e.g. "4,2" (empty = the default)
-    std::string radius;    // "t" or "u,v,depth,az,el,rot" (empty = the default)
+    int budget = 0;         // global search evaluations (0 = the default)
+    int polishBudget = -1;  // per polish level (-1 = the default)
+    std::string levels;     // e.g. "4,2" (empty = the default)
+    std::string radius;     // "t" or "u,v,depth,az,el,rot" (empty = the default)
     int threads = 0;
     std::string values = "mu";
-    std::string polish = "nm";  // local refinement method  // how voxel values become attenuation: mu (HU -> 1/mm) or raw
+    std::string polish = "nm";  // local refinement method  // how voxel values become attenuation:
+                                // mu (HU -> 1/mm) or raw
 };
 
 // --method, --similarity, --seed, --budget, --polish-budget, --levels, --radius, --threads,
@@ -42,12 +43,12 @@ Image readReferenceImage(const std::string& path);
 // "[#####.....]  52%  level 1/2 polish  evals 480/900  cost -0.9712" on stderr, \r-updated
 // at most every 0.1 s when `interactive`, otherwise one line per stage.
 class ProgressBar {
-public:
+  public:
     explicit ProgressBar(bool interactive) : interactive_(interactive) {}
     void update(const RegistrationProgress& p);
     void finish();
 
-private:
+  private:
     bool interactive_;
     double lastShown_ = -1.0;
     std::string lastStage_;

@@ -22,7 +22,7 @@ void onGlfwError(int code, const char* description) {
 }
 
 class GlfwWindowBackend final : public RenderBackend {
-public:
+  public:
     explicit GlfwWindowBackend(GLFWwindow* window) : window_(window) {
         glfwSetWindowUserPointer(window_, this);
         glfwSetDropCallback(window_, [](GLFWwindow* w, int count, const char** paths) {
@@ -69,7 +69,7 @@ public:
         return out;
     }
 
-private:
+  private:
     GLFWwindow* window_;
     std::vector<std::string> dropped_;
     bool idle_ = false;

@@ -17,7 +17,7 @@ GLADapiproc loadProc(const char* name) {
 }
 
 class OsmesaBackend final : public RenderBackend {
-public:
+  public:
     explicit OsmesaBackend(glm::ivec2 size) : context_(size.x, size.y) {
         if (!gladLoadGL(loadProc)) throw Error("OSMesa: could not load the GL 3.3 core functions");
     }
@@ -42,8 +42,8 @@ public:
 
     void newFrame() override {
         ImGuiIO& io = ImGui::GetIO();
-        io.DisplaySize = ImVec2(static_cast<float>(context_.width()),
-                                static_cast<float>(context_.height()));
+        io.DisplaySize =
+            ImVec2(static_cast<float>(context_.width()), static_cast<float>(context_.height()));
         io.DisplayFramebufferScale = ImVec2(1, 1);
         io.DeltaTime = 1.0f / 60.0f;  // fixed: deterministic animations and repeat timing
         io.MousePos = ImVec2(input_.mousePos.x, input_.mousePos.y);
@@ -68,7 +68,7 @@ public:
 
     void setFrameInput(const FrameInput& input) override { input_ = input; }
 
-private:
+  private:
     OsmesaContext context_;
     FrameInput input_;
 };

@@ -7,7 +7,7 @@
 namespace fm::app {
 
 class OsmesaContext {
-public:
+  public:
     using Proc = void (*)();
     // A GL 3.3 core context rendering into a width x height RGBA buffer. Throws fm::Error.
     OsmesaContext(int width, int height);
@@ -20,7 +20,7 @@ public:
     int width() const { return width_; }
     int height() const { return height_; }
 
-private:
+  private:
     void* context_ = nullptr;
     int width_, height_;
     std::vector<unsigned char> buffer_;

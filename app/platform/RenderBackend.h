@@ -15,14 +15,14 @@ struct FrameInput {
     glm::vec2 mousePos{-1e6f, -1e6f};  // far outside = no mouse
     bool mouseDown[3] = {false, false, false};
     float wheel = 0.0f;
-    std::string text;          // characters typed this frame
-    std::vector<int> keys;     // ImGuiKey_* held down this frame (Enter, Backspace, ...)
+    std::string text;       // characters typed this frame
+    std::vector<int> keys;  // ImGuiKey_* held down this frame (Enter, Backspace, ...)
     bool ctrl = false;
     std::vector<std::string> dropped;  // paths dropped onto the "window" this frame
 };
 
 class RenderBackend {
-public:
+  public:
     virtual ~RenderBackend() = default;
 
     // "GLFW window" or "OSMesa (headless)", plus the GL version/renderer.

@@ -13,7 +13,9 @@ float windowed(float value, const WindowLevel& wl) {
     return std::isfinite(t) ? std::clamp(t, 0.0f, 1.0f) : 0.0f;
 }
 
-std::uint8_t toByte(float t) { return static_cast<std::uint8_t>(std::lround(t * 255.0f)); }
+std::uint8_t toByte(float t) {
+    return static_cast<std::uint8_t>(std::lround(t * 255.0f));
+}
 
 }  // namespace
 

@@ -54,16 +54,16 @@ void makeSphere(std::vector<glm::vec3>& vertices, std::vector<glm::uvec3>& trian
 OrbitCamera orbitCamera(const app::View3d& view, double sceneRadiusMm, float aspect) {
     constexpr float kFovDeg = 30.0f;
     const float radius = float(std::max(sceneRadiusMm, 1.0));
-    const float distance = radius / std::sin(glm::radians(kFovDeg) * 0.5f) /
-                           std::max(view.zoom, 0.05f);
+    const float distance =
+        radius / std::sin(glm::radians(kFovDeg) * 0.5f) / std::max(view.zoom, 0.05f);
     const float az = glm::radians(view.azimuthDeg), el = glm::radians(view.elevationDeg);
     // LPS world: z is superior, so z is up; azimuth 0 looks from anterior (-y).
     const glm::vec3 direction(std::sin(az) * std::cos(el), -std::cos(az) * std::cos(el),
                               std::sin(el));
     OrbitCamera camera;
     camera.position = direction * distance;
-    const glm::vec3 up = std::abs(el) > glm::radians(89.0f) ? glm::vec3(0, 1, 0)
-                                                             : glm::vec3(0, 0, 1);
+    const glm::vec3 up =
+        std::abs(el) > glm::radians(89.0f) ? glm::vec3(0, 1, 0) : glm::vec3(0, 0, 1);
     camera.view = glm::lookAt(camera.position, glm::vec3(0.0f), up);
     camera.projection = glm::perspective(glm::radians(kFovDeg), std::max(aspect, 0.01f),
                                          distance * 0.05f, distance + radius * 3.0f);
@@ -206,9 +206,9 @@ void SceneRenderer::draw(const app::LoadedScene* scene, const Pose& pose, const 
         auto toScene = [&](const glm::dvec3& p) { return glm::vec3(p + shift); };
         const ProjectionGeometry g = app::appGeometry(*scene, pose);
         const DetectorGeometry& d = g.detector;
-        const glm::dvec3 corners[4] = {d.pixelCenter(-0.5, -0.5), d.pixelCenter(d.size.x - 0.5, -0.5),
-                                       d.pixelCenter(d.size.x - 0.5, d.size.y - 0.5),
-                                       d.pixelCenter(-0.5, d.size.y - 0.5)};
+        const glm::dvec3 corners[4] = {
+            d.pixelCenter(-0.5, -0.5), d.pixelCenter(d.size.x - 0.5, -0.5),
+            d.pixelCenter(d.size.x - 0.5, d.size.y - 0.5), d.pixelCenter(-0.5, d.size.y - 0.5)};
         const glm::vec3 source = toScene(g.source);
         double radius = glm::length(source);
         for (const auto& c : corners) radius = std::max(radius, double(glm::length(toScene(c))));
@@ -221,8 +221,8 @@ void SceneRenderer::draw(const app::LoadedScene* scene, const Pose& pose, const 
             const glm::vec4 clip = viewProjection * glm::vec4(p, 1.0f);
             if (clip.w <= 0.0f) return;
             const glm::vec2 ndc = glm::vec2(clip) / clip.w;
-            labels_.push_back({{(ndc.x * 0.5f + 0.5f) * size.x, (0.5f - ndc.y * 0.5f) * size.y},
-                               text, color});
+            labels_.push_back(
+                {{(ndc.x * 0.5f + 0.5f) * size.x, (0.5f - ndc.y * 0.5f) * size.y}, text, color});
         };
 
         glEnable(GL_DEPTH_TEST);
@@ -277,8 +277,7 @@ void SceneRenderer::draw(const app::LoadedScene* scene, const Pose& pose, const 
             // x/y/z axes from the first voxel corner, longer than the box (as in 2011).
             const glm::vec3 o = toScene(scene->boxCorners[0]);
             for (int axis = 0; axis < 3; ++axis) {
-                const glm::vec3 tip =
-                    o + (toScene(scene->boxCorners[1 << axis]) - o) * 1.35f;
+                const glm::vec3 tip = o + (toScene(scene->boxCorners[1 << axis]) - o) * 1.35f;
                 line(lines, o, tip, kAxisColors[axis]);
                 label(tip, std::string(1, "xyz"[axis]), kAxisColors[axis]);
             }
@@ -309,7 +308,8 @@ void SceneRenderer::draw(const app::LoadedScene* scene, const Pose& pose, const 
         glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
         glDrawArrays(GL_LINES, 0, GLsizei(lineVertexCount));
         glDepthMask(GL_FALSE);
-        glDrawArrays(GL_TRIANGLES, GLsizei(lineVertexCount), GLsizei(lines.size() - lineVertexCount));
+        glDrawArrays(GL_TRIANGLES, GLsizei(lineVertexCount),
+                     GLsizei(lines.size() - lineVertexCount));
         glDepthMask(GL_TRUE);
         glDisable(GL_BLEND);
         glDisable(GL_DEPTH_TEST);

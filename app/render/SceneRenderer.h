@@ -23,13 +23,13 @@ struct LoadedScene;
 namespace fm::render {
 
 struct SceneLabel {
-    glm::vec2 pixel;     // position in the view, pixels from the top-left
+    glm::vec2 pixel;  // position in the view, pixels from the top-left
     std::string text;
     glm::vec4 color;
 };
 
 class SceneRenderer {
-public:
+  public:
     SceneRenderer();
     ~SceneRenderer();
     SceneRenderer(const SceneRenderer&) = delete;
@@ -48,16 +48,16 @@ public:
     // Labels for the axes, source and film at their projected positions (last draw).
     const std::vector<SceneLabel>& labels() const { return labels_; }
 
-private:
+  private:
     void resize(glm::ivec2 size);
     void uploadMesh(const app::LoadedScene& scene);
 
     ShaderProgram meshShader_, lineShader_, filmShader_;
     glm::ivec2 size_{0};
     static constexpr int kSamples = 4;
-    GLuint msFbo_ = 0, msColor_ = 0, msDepth_ = 0;      // multisampled target
-    GLuint resolveFbo_ = 0, resolveTexture_ = 0;        // what the UI shows
-    GLuint resolveDepth_ = 0;                           // for single-sample drawing
+    GLuint msFbo_ = 0, msColor_ = 0, msDepth_ = 0;  // multisampled target
+    GLuint resolveFbo_ = 0, resolveTexture_ = 0;    // what the UI shows
+    GLuint resolveDepth_ = 0;                       // for single-sample drawing
     GLuint meshVao_ = 0, meshVbo_ = 0, meshEbo_ = 0;
     GLsizei meshIndexCount_ = 0;
     std::uint64_t meshGeneration_ = 0;

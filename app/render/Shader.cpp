@@ -9,7 +9,8 @@ namespace {
 
 GLuint compile(GLenum type, const char* name) {
     const char* text = embeddedShader(name);
-    if (!text) throw Error(std::string("shader shaders/") + name + " is not embedded in the binary");
+    if (!text)
+        throw Error(std::string("shader shaders/") + name + " is not embedded in the binary");
     const GLuint shader = glCreateShader(type);
     glShaderSource(shader, 1, &text, nullptr);
     glCompileShader(shader);

@@ -12,7 +12,7 @@ namespace fm::render {
 const char* embeddedShader(const char* name);
 
 class ShaderProgram {
-public:
+  public:
     ShaderProgram() = default;
     // Compiles shaders/<vertexName> and shaders/<fragmentName>; throws fm::Error with the GL log.
     ShaderProgram(const char* vertexName, const char* fragmentName);
@@ -29,7 +29,7 @@ public:
     void set(const char* name, int i) const;
     GLuint id() const { return id_; }
 
-private:
+  private:
     GLuint id_ = 0;
 };
 

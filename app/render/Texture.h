@@ -8,7 +8,7 @@
 namespace fm::render {
 
 class Texture {
-public:
+  public:
     Texture();
     ~Texture();
     Texture(const Texture&) = delete;
@@ -21,7 +21,7 @@ public:
     int height() const { return height_; }
     bool empty() const { return width_ == 0; }
 
-private:
+  private:
     GLuint id_ = 0;
     int width_ = 0, height_ = 0;
 };

@@ -13,8 +13,8 @@ ProjectionGeometry appGeometry(const LoadedScene& scene, const Pose& pose, int d
 DrrRender DrrCache::get(const LoadedScene& scene, const Pose& pose, int downsample, DrrTrace trace,
                         int threads) {
     const DrrKey key{scene.generation, pose.toArray(), downsample, trace};
-    auto hit = std::find_if(entries_.begin(), entries_.end(),
-                            [&](const auto& e) { return e.key == key; });
+    auto hit =
+        std::find_if(entries_.begin(), entries_.end(), [&](const auto& e) { return e.key == key; });
     if (hit != entries_.end()) {
         DrrRender out{hit->image, hit->milliseconds, true};
         std::rotate(entries_.begin(), hit, hit + 1);  // most recent first

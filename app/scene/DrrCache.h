@@ -15,19 +15,19 @@ namespace fm::app {
 struct DrrKey {
     std::uint64_t sceneGeneration = 0;
     std::array<double, 6> pose{};
-    int downsample = 1;               // detector factor (coarse preview > 1)
+    int downsample = 1;  // detector factor (coarse preview > 1)
     DrrTrace trace = DrrTrace::Exact;
     bool operator==(const DrrKey&) const = default;
 };
 
 struct DrrRender {
     Image image;
-    double milliseconds = 0.0;   // time the render took (also when served from the cache)
+    double milliseconds = 0.0;  // time the render took (also when served from the cache)
     bool fromCache = false;
 };
 
 class DrrCache {
-public:
+  public:
     explicit DrrCache(std::size_t capacity = 4) : capacity_(capacity) {}
     // The DRR of `pose` in `scene`, rendered now unless cached. `threads` as DrrRenderOptions.
     DrrRender get(const LoadedScene& scene, const Pose& pose, int downsample, DrrTrace trace,
@@ -35,7 +35,7 @@ public:
     std::size_t renders() const { return renders_; }  // how many were actually rendered
     void clear() { entries_.clear(); }
 
-private:
+  private:
     std::size_t capacity_;
     struct Entry {
         DrrKey key;

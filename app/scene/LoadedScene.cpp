@@ -21,21 +21,28 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-// Bone level: 300 HU for CTs; for volumes without units (e.g. the VTK head, bone ~1150 of
+// Bone level: 300 HU for CTs; for volumes in other units (e.g. the VTK head, bone ~1150 of
 // 0..3926) a level 60% of the way from the median to the 99th percentile.
 double boneIsoValue(const Volume& volume) {
-    if (volume.meta.units == ValueUnit::HounsfieldUnits) return 300.0;
+    if (looksLikeHounsfield(volume)) return 300.0;
     const VolumeStats s = computeStats(volume, {50, 99});
     return s.percentiles[0] + 0.6 * (s.percentiles[1] - s.percentiles[0]);
 }
 
 }  // namespace
 
+bool looksLikeHounsfield(const Volume& volume) {
+    if (volume.meta.units == ValueUnit::HounsfieldUnits) return true;
+    if (volume.meta.units != ValueUnit::Unknown) return false;
+    // Many files do not say (NIfTI without scl_slope): air at about -1000 in at least 1% of
+    // the voxels is the mark of HU; no other common CT scale goes that far below zero.
+    return computeStats(volume, {1}).percentiles[0] <= -900.0;
+}
+
 DrrValueOptions appDrrValueOptions(const Volume& volume) {
     DrrValueOptions options;
     // HU -> mu gives radiograph-like contrast; other units are integrated as stored.
-    options.values =
-        volume.meta.units == ValueUnit::HounsfieldUnits ? DrrValues::Mu : DrrValues::Raw;
+    options.values = looksLikeHounsfield(volume) ? DrrValues::Mu : DrrValues::Raw;
     return options;
 }
 
@@ -90,9 +97,11 @@ std::shared_ptr<LoadedScene> buildScene(const std::string& spec, const SceneProg
     if (have > 0.0 && needed > have) scene->setup.filmSizeMm *= needed / have;
 
     char text[256];
-    std::snprintf(text, sizeof(text), "%d x %d x %d voxels of %.3g x %.3g x %.3g mm\n%zu bone triangles (iso %.4g)",
+    std::snprintf(text, sizeof(text),
+                  "%d x %d x %d voxels of %.3g x %.3g x %.3g mm\n%zu bone triangles (iso %.4g)",
                   volume->dims.x, volume->dims.y, volume->dims.z, volume->spacing.x,
-                  volume->spacing.y, volume->spacing.z, scene->mesh->triangleCount(), scene->isoValue);
+                  volume->spacing.y, volume->spacing.z, scene->mesh->triangleCount(),
+                  scene->isoValue);
     scene->summary = text;
     scene->volume = std::move(volume);
     scene->generation = nextGeneration++;

@@ -16,19 +16,19 @@
 namespace fm::app {
 
 struct LoadedScene {
-    std::string spec;                         // what the user named
-    std::uint64_t generation = 0;             // changes with every loaded scene (cache keys)
+    std::string spec;              // what the user named
+    std::uint64_t generation = 0;  // changes with every loaded scene (cache keys)
     std::shared_ptr<const Volume> volume;
     DrrVolumePtr drrVolume;
-    std::shared_ptr<const Mesh> mesh;         // bone surface, world mm
-    double isoValue = 0.0;                    // the surface level used
-    SceneSetup setup;                         // distances and film, fitted to the volume
-    glm::dvec3 center{0.0};                   // Volume::center()
-    std::array<glm::dvec3, 8> boxCorners{};   // voxel-box corners, world mm (bit i: +i axis)
-    double translationRangeMm = 100.0;        // slider range for the offsets
-    std::vector<glm::dvec3> bonePoints;       // mTRE targets (engine/match); empty if no bone
+    std::shared_ptr<const Mesh> mesh;        // bone surface, world mm
+    double isoValue = 0.0;                   // the surface level used
+    SceneSetup setup;                        // distances and film, fitted to the volume
+    glm::dvec3 center{0.0};                  // Volume::center()
+    std::array<glm::dvec3, 8> boxCorners{};  // voxel-box corners, world mm (bit i: +i axis)
+    double translationRangeMm = 100.0;       // slider range for the offsets
+    std::vector<glm::dvec3> bonePoints;      // mTRE targets (engine/match); empty if no bone
     double loadSeconds = 0.0, prepareSeconds = 0.0, meshSeconds = 0.0;
-    std::string summary;                      // one line for the UI
+    std::string summary;  // one line for the UI
 };
 
 // Progress of buildScene: stage name and fraction 0..1 over the stages.
@@ -37,6 +37,9 @@ using SceneProgress = std::function<void(const std::string& stage, float fractio
 // Loads `spec` (path or phantom:NAME), prepares the DRR volume and meshes the bone. Throws the
 // reader's fm::Error unchanged when the volume cannot be loaded.
 std::shared_ptr<LoadedScene> buildScene(const std::string& spec, const SceneProgress& progress);
+
+// True for HU volumes, and for volumes without units whose 1st percentile is air (<= -900).
+bool looksLikeHounsfield(const Volume& volume);
 
 // The DRR options the app uses for every image (both reference and user).
 DrrValueOptions appDrrValueOptions(const Volume& volume);

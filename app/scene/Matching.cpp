@@ -18,7 +18,9 @@ std::filesystem::path referencePosesFile() {
     return std::filesystem::path(FM_DATA_DIR_DEFAULT) / "reference_poses.txt";
 }
 
-bool samePose(const Pose& a, const Pose& b) { return a.toArray() == b.toArray(); }
+bool samePose(const Pose& a, const Pose& b) {
+    return a.toArray() == b.toArray();
+}
 
 }  // namespace
 
@@ -77,9 +79,9 @@ MatchOutcome evaluateMatch(const LoadedScene& scene, const Pose& user, const Pos
     }
     m.furthestParameter = verdict.parametersWithinTolerance ? -1 : verdict.worstParameter;
     if (!scene.bonePoints.empty())
-        m.poseErrorMm = targetRegistrationError(reference, user, scene.setup, scene.center,
-                                                scene.bonePoints)
-                            .meanMm;
+        m.poseErrorMm =
+            targetRegistrationError(reference, user, scene.setup, scene.center, scene.bonePoints)
+                .meanMm;
     return m;
 }
 

@@ -1,9 +1,39 @@
 #include "scene/SceneLoader.h"
 
+#include <deque>
 #include <exception>
 #include <filesystem>
 
 namespace fm::app {
+namespace {
+
+// Recently loaded scenes, shared by every loader in the process (scenes are read-only).
+class RecentScenes {
+  public:
+    std::shared_ptr<LoadedScene> find(const std::string& key) {
+        std::lock_guard lock(mutex_);
+        for (const auto& [k, scene] : entries_)
+            if (k == key) return scene;
+        return nullptr;
+    }
+    void add(const std::string& key, std::shared_ptr<LoadedScene> scene) {
+        constexpr std::size_t kKeptScenes = 2;  // bounded: a large CT can take GBs
+        std::lock_guard lock(mutex_);
+        entries_.emplace_front(key, std::move(scene));
+        if (entries_.size() > kKeptScenes) entries_.pop_back();
+    }
+
+  private:
+    std::mutex mutex_;
+    std::deque<std::pair<std::string, std::shared_ptr<LoadedScene>>> entries_;
+};
+
+RecentScenes& recentScenes() {
+    static RecentScenes scenes;
+    return scenes;
+}
+
+}  // namespace
 
 SceneLoader::~SceneLoader() {
     {
@@ -37,12 +67,10 @@ std::string sceneCacheKey(const std::string& spec) {
 void SceneLoader::launch(const std::string& spec) {
     if (worker_.joinable()) worker_.join();  // the previous worker has finished: busy_ is false
     const std::string key = sceneCacheKey(spec);
-    for (const CacheEntry& e : recent_)
-        if (e.key == key) {
-            finished_ = Result{spec, e.scene, {}};
-            ++cacheHits_;
-            return;
-        }
+    if (auto scene = recentScenes().find(key)) {
+        finished_ = Result{spec, std::move(scene), {}};
+        return;
+    }
     busy_ = true;
     spec_ = spec;
     stage_ = "starting";
@@ -62,11 +90,7 @@ void SceneLoader::launch(const std::string& spec) {
             result.error = "unknown error while loading " + spec;
         }
         std::lock_guard lock(mutex_);
-        if (result.scene) {
-            recent_.push_front({sceneCacheKey(spec), result.scene});
-            constexpr std::size_t kKeptScenes = 2;
-            if (recent_.size() > kKeptScenes) recent_.pop_back();
-        }
+        if (result.scene) recentScenes().add(sceneCacheKey(spec), result.scene);
         finished_ = std::move(result);
         busy_ = false;
     });

@@ -1,10 +1,9 @@
 #pragma once
 // Loads and meshes a CT on a background thread so the UI never freezes. One load at a time;
 // a request made while busy replaces any queued one and starts when the current one ends.
-// The two most recent scenes are kept (volume, DRR volume, mesh): re-opening one whose file has
-// not changed (same size and modification time) is instant.
+// The two most recent scenes are kept process-wide (volume, DRR volume, mesh): re-opening one
+// whose file has not changed (same size and modification time) is instant.
 #include <chrono>
-#include <deque>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -16,7 +15,7 @@
 namespace fm::app {
 
 class SceneLoader {
-public:
+  public:
     SceneLoader() = default;
     ~SceneLoader();
     SceneLoader(const SceneLoader&) = delete;
@@ -43,7 +42,7 @@ public:
     // Blocks until nothing is loading or queued, then returns the last result (headless runs).
     std::optional<Result> wait();
 
-private:
+  private:
     void launch(const std::string& spec);  // mutex held by caller
 
     mutable std::mutex mutex_;
@@ -54,19 +53,6 @@ private:
     std::chrono::steady_clock::time_point started_;
     std::optional<std::string> queued_;
     std::optional<Result> finished_;
-
-    struct CacheEntry {
-        std::string key;  // spec + file size + modification time
-        std::shared_ptr<LoadedScene> scene;
-    };
-    std::deque<CacheEntry> recent_;  // most recent first
-    std::size_t cacheHits_ = 0;
-
-public:
-    std::size_t cacheHits() const {
-        std::lock_guard lock(mutex_);
-        return cacheHits_;
-    }
 };
 
 // What identifies a loaded file's content cheaply: the spec plus, for paths, size and time.

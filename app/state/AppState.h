@@ -11,11 +11,19 @@
 namespace fm::app {
 
 // The six parameters in Pose::toArray() order.
-enum Parameter { kOffsetX = 0, kOffsetY, kOffsetZ, kAzimuth, kElevation, kRotation, kParameterCount };
+enum Parameter {
+    kOffsetX = 0,
+    kOffsetY,
+    kOffsetZ,
+    kAzimuth,
+    kElevation,
+    kRotation,
+    kParameterCount
+};
 
 struct ParameterSpec {
-    const char* name;   // "x offset", "azimuth", ...
-    const char* unit;   // "mm" or "deg"
+    const char* name;  // "x offset", "azimuth", ...
+    const char* unit;  // "mm" or "deg"
     double min, max;
 };
 
@@ -56,23 +64,23 @@ struct MatchOutcome {
 
 struct LoadStatus {
     bool loading = false;
-    std::string requestedSpec;    // what is being loaded
-    std::string stage;            // "reading", "preparing DRR volume", "meshing"
-    float progress = 0.0f;        // 0..1 over the stages
+    std::string requestedSpec;  // what is being loaded
+    std::string stage;          // "reading", "preparing DRR volume", "meshing"
+    float progress = 0.0f;      // 0..1 over the stages
     double elapsedSeconds = 0.0;
-    std::string loadedSpec;       // the scene on screen
-    std::string summary;          // dims, spacing, triangles of the scene on screen
-    std::string error;            // the reader's message when the last load failed
+    std::string loadedSpec;  // the scene on screen
+    std::string summary;     // dims, spacing, triangles of the scene on screen
+    std::string error;       // the reader's message when the last load failed
 };
 
 struct Timings {
-    double userDrrMs = 0.0;       // last user DRR render
-    bool userDrrCoarse = false;   // ... and whether it was the coarse preview
+    double userDrrMs = 0.0;      // last user DRR render
+    bool userDrrCoarse = false;  // ... and whether it was the coarse preview
     double lastExactMs = 0.0;
     double lastCoarseMs = 0.0;
     double referenceDrrMs = 0.0;
-    double frameMs = 0.0;         // CPU time of the last whole frame
-    int coarseFactor = 2;         // detector downsampling while dragging
+    double frameMs = 0.0;  // CPU time of the last whole frame
+    int coarseFactor = 2;  // detector downsampling while dragging
 };
 
 // Things the UI asks for; the App consumes them after the UI pass.
@@ -99,12 +107,12 @@ struct AppState {
     DisplaySettings display;
     View3d view;
     bool showHelp = false;
-    bool showTimings = true;      // off for golden images: timings differ run to run
+    bool showTimings = true;  // off for golden images: timings differ run to run
     std::string volumePathField;
     LoadStatus load;
     Timings timings;
 
-    bool interacting = false;     // a parameter slider is being dragged: coarse preview
+    bool interacting = false;         // a parameter slider is being dragged: coarse preview
     bool coarseWhileDragging = true;  // off: exact DRRs even while dragging (for measuring)
     std::uint64_t frame = 0;
     Requests requests;

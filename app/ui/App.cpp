@@ -75,9 +75,8 @@ void App::installLoadResult(SceneLoader::Result result) {
     state_.load.summary = scene_->summary;
     state_.translationRangeMm = scene_->translationRangeMm;
     for (int a = 0; a < 3; ++a)
-        state_.userPose.offset[a] = std::clamp(state_.userPose.offset[a],
-                                               -scene_->translationRangeMm,
-                                               scene_->translationRangeMm);
+        state_.userPose.offset[a] = std::clamp(
+            state_.userPose.offset[a], -scene_->translationRangeMm, scene_->translationRangeMm);
     referenceCache_.clear();
     userCache_.clear();
     referenceKey_.reset();
@@ -97,8 +96,8 @@ void App::installLoadResult(SceneLoader::Result result) {
 void App::newReference() {
     if (!scene_) return;
     const bool haveReference = referenceKey_.has_value();
-    const ReferenceChoice choice = chooseReference(*scene_, nextSeed_++,
-                                                   haveReference ? &state_.referencePose : nullptr);
+    const ReferenceChoice choice =
+        chooseReference(*scene_, nextSeed_++, haveReference ? &state_.referencePose : nullptr);
     state_.referencePose = choice.pose;
     state_.referenceSource = choice.source;
     state_.referenceRevealed = false;
@@ -119,10 +118,12 @@ void App::processRequests() {
     if (requests.newReference) newReference();
     if (requests.match && scene_) {
         // Judge the exact images, whatever the preview showed.
-        const Image user = userCache_.get(*scene_, state_.userPose, 1, DrrTrace::Exact,
-                                          options_.drrThreads).image;
-        const Image reference = referenceCache_.get(*scene_, state_.referencePose, 1,
-                                                    DrrTrace::Exact, options_.drrThreads).image;
+        const Image user =
+            userCache_.get(*scene_, state_.userPose, 1, DrrTrace::Exact, options_.drrThreads).image;
+        const Image reference =
+            referenceCache_
+                .get(*scene_, state_.referencePose, 1, DrrTrace::Exact, options_.drrThreads)
+                .image;
         ++state_.attempts;
         MatchOutcome outcome =
             evaluateMatch(*scene_, state_.userPose, state_.referencePose, user, reference);
@@ -138,8 +139,8 @@ void App::updateImages() {
     const DrrKey referenceKey{scene_->generation, state_.referencePose.toArray(), 1,
                               DrrTrace::Exact};
     if (referenceKey_ != referenceKey) {
-        DrrRender r = referenceCache_.get(*scene_, state_.referencePose, 1, DrrTrace::Exact,
-                                          threads);
+        DrrRender r =
+            referenceCache_.get(*scene_, state_.referencePose, 1, DrrTrace::Exact, threads);
         referenceDrr_ = std::move(r.image);
         state_.timings.referenceDrrMs = r.milliseconds;
         referenceKey_ = referenceKey;
@@ -184,10 +185,15 @@ void App::updateImages() {
                   .image;
     std::vector<std::uint8_t> rgba;
     switch (state_.display.compare) {
-        case CompareMode::Difference: rgba = render::differenceRgba(reference, userDrr_, wl); break;
-        case CompareMode::Overlay: rgba = render::overlayRgba(reference, userDrr_, wl); break;
+        case CompareMode::Difference:
+            rgba = render::differenceRgba(reference, userDrr_, wl);
+            break;
+        case CompareMode::Overlay:
+            rgba = render::overlayRgba(reference, userDrr_, wl);
+            break;
         case CompareMode::Checkerboard:
-            rgba = render::checkerboardRgba(reference, userDrr_, wl, std::max(8, userDrr_.width / 8));
+            rgba =
+                render::checkerboardRgba(reference, userDrr_, wl, std::max(8, userDrr_.width / 8));
             break;
     }
     if (!rgba.empty()) compareTexture_->upload(userDrr_.width, userDrr_.height, rgba);
@@ -225,11 +231,19 @@ void App::frame() {
     // The 3D view is redrawn only when something it shows changed; while the user drags a
     // slider or orbits it skips multisampling (4x MSAA costs ~4x on llvmpipe).
     const bool fast = state_.interacting || ImGui::IsMouseDown(ImGuiMouseButton_Left);
-    const SceneKey sceneKey{scene_ ? scene_->generation : 0, state_.userPose.toArray(),
-                            state_.view.azimuthDeg, state_.view.elevationDeg, state_.view.zoom,
-                            state_.view.showBone, state_.view.showBox,
-                            state_.view.showApparatus, ui_.sceneViewSize(), shownKey_.user,
-                            shownKey_.window, shownKey_.level, fast};
+    const SceneKey sceneKey{scene_ ? scene_->generation : 0,
+                            state_.userPose.toArray(),
+                            state_.view.azimuthDeg,
+                            state_.view.elevationDeg,
+                            state_.view.zoom,
+                            state_.view.showBone,
+                            state_.view.showBox,
+                            state_.view.showApparatus,
+                            ui_.sceneViewSize(),
+                            shownKey_.user,
+                            shownKey_.window,
+                            shownKey_.level,
+                            fast};
     if (sceneKey != sceneKey_) {
         sceneRenderer_->draw(scene_.get(), state_.userPose, state_.view,
                              userTexture_->empty() ? 0 : userTexture_->id(), ui_.sceneViewSize(),

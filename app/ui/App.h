@@ -27,15 +27,15 @@ namespace fm::app {
 struct AppOptions {
     std::string volumeSpec = "phantom:knee";
     std::optional<Pose> userPose;
-    std::optional<Pose> referencePose;   // otherwise chosen by chooseReference(seed)
+    std::optional<Pose> referencePose;  // otherwise chosen by chooseReference(seed)
     std::optional<View3d> view;
-    std::uint64_t seed = 1;              // reference choice; the window passes the clock
-    int drrThreads = 0;                  // 0 = all cores
-    bool showTimings = true;             // golden images turn them off (they vary)
+    std::uint64_t seed = 1;   // reference choice; the window passes the clock
+    int drrThreads = 0;       // 0 = all cores
+    bool showTimings = true;  // golden images turn them off (they vary)
 };
 
 class App {
-public:
+  public:
     App(RenderBackend& backend, AppOptions options);
     ~App();
     App(const App&) = delete;
@@ -61,7 +61,7 @@ public:
     RenderBackend& backend() { return backend_; }
     const render::SceneRenderer& sceneRenderer() const { return *sceneRenderer_; }
 
-private:
+  private:
     void installLoadResult(SceneLoader::Result result);
     void processRequests();
     void updateImages();

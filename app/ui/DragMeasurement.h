@@ -12,7 +12,7 @@ namespace fm::app {
 struct DragTimes {
     int frames = 0;
     double meanFrameMs = 0.0, medianFrameMs = 0.0, maxFrameMs = 0.0;  // whole frames
-    double meanDrrMs = 0.0;     // user DRR renders during the drag
+    double meanDrrMs = 0.0;  // user DRR renders during the drag
     int drrRenders = 0;
     double releaseFrameMs = 0.0;  // the frame after release (exact render when previewing)
 };

@@ -16,8 +16,8 @@ namespace fm::app {
 struct HeadlessOptions {
     AppOptions app;
     glm::ivec2 size{1280, 800};
-    int settleFrames = 3;        // frames drawn after the load so the layout is stable
-    bool pressMatch = false;     // press Match before the shot (shows verdict and hints)
+    int settleFrames = 3;     // frames drawn after the load so the layout is stable
+    bool pressMatch = false;  // press Match before the shot (shows verdict and hints)
     bool showHelp = false;
     CompareMode compare = CompareMode::Difference;
 };

@@ -4,18 +4,17 @@
 #include <imgui_stdlib.h>
 
 #include <algorithm>
-#include <cstdarg>
 #include <cmath>
+#include <cstdarg>
 #include <cstdint>
 #include <cstdio>
 
 namespace fm::app {
 namespace {
 
-constexpr ImGuiWindowFlags kPaneFlags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
-                                        ImGuiWindowFlags_NoCollapse |
-                                        ImGuiWindowFlags_NoSavedSettings |
-                                        ImGuiWindowFlags_NoBringToFrontOnFocus;
+constexpr ImGuiWindowFlags kPaneFlags =
+    ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBringToFrontOnFocus;
 const ImVec4 kGood{0.45f, 0.90f, 0.45f, 1.0f};
 const ImVec4 kWarn{1.00f, 0.70f, 0.30f, 1.0f};
 const ImVec4 kBad{1.00f, 0.40f, 0.40f, 1.0f};
@@ -51,12 +50,18 @@ void poseLine(const Pose& pose) {
 
 double& poseValue(Pose& pose, int parameter) {
     switch (parameter) {
-        case kOffsetX: return pose.offset.x;
-        case kOffsetY: return pose.offset.y;
-        case kOffsetZ: return pose.offset.z;
-        case kAzimuth: return pose.azimuthDeg;
-        case kElevation: return pose.elevationDeg;
-        default: return pose.rotationDeg;
+        case kOffsetX:
+            return pose.offset.x;
+        case kOffsetY:
+            return pose.offset.y;
+        case kOffsetZ:
+            return pose.offset.z;
+        case kAzimuth:
+            return pose.azimuthDeg;
+        case kElevation:
+            return pose.elevationDeg;
+        default:
+            return pose.rotationDeg;
     }
 }
 
@@ -146,11 +151,12 @@ void Ui::scenePane(AppState& state, const Pane& pane, unsigned texture) {
     if (ImGui::IsItemActive() && ImGui::IsMouseDragging(ImGuiMouseButton_Left, 0.0f)) {
         const ImVec2 delta = ImGui::GetIO().MouseDelta;
         state.view.azimuthDeg = std::remainder(state.view.azimuthDeg - delta.x * 0.4f, 360.0f);
-        state.view.elevationDeg = std::clamp(state.view.elevationDeg + delta.y * 0.4f, -89.0f, 89.0f);
+        state.view.elevationDeg =
+            std::clamp(state.view.elevationDeg + delta.y * 0.4f, -89.0f, 89.0f);
     }
     if (hovered && ImGui::GetIO().MouseWheel != 0.0f)
-        state.view.zoom = std::clamp(state.view.zoom * std::pow(1.1f, ImGui::GetIO().MouseWheel),
-                                     0.2f, 8.0f);
+        state.view.zoom =
+            std::clamp(state.view.zoom * std::pow(1.1f, ImGui::GetIO().MouseWheel), 0.2f, 8.0f);
     ImDrawList* list = ImGui::GetWindowDrawList();
     if (texture)  // the offscreen GL image is bottom-up: flip vertically
         list->AddImage(toImTexture(texture), origin, ImVec2(origin.x + size.x, origin.y + size.y),
@@ -189,11 +195,12 @@ void Ui::parameterPane(AppState& state, const Pane& pane) {
     beginPane("Parameters", pane);
     const auto specs = parameterSpecs(state.translationRangeMm);
     const float labelWidth = ImGui::CalcTextSize("elevation ").x;
-    const float inputWidth = ImGui::CalcTextSize("-0000.00").x + 2 * ImGui::GetStyle().FramePadding.x;
+    const float inputWidth =
+        ImGui::CalcTextSize("-0000.00").x + 2 * ImGui::GetStyle().FramePadding.x;
     const float unitWidth = ImGui::CalcTextSize("deg").x;
     const float spacing = ImGui::GetStyle().ItemSpacing.x;
-    const float sliderWidth = std::max(
-        40.0f, ImGui::GetContentRegionAvail().x - labelWidth - inputWidth - unitWidth - 3 * spacing);
+    const float sliderWidth = std::max(40.0f, ImGui::GetContentRegionAvail().x - labelWidth -
+                                                  inputWidth - unitWidth - 3 * spacing);
     for (int p = 0; p < kParameterCount; ++p) {
         const ParameterSpec& spec = specs[p];
         const std::string id = idName(spec.name);
@@ -230,13 +237,14 @@ void Ui::parameterPane(AppState& state, const Pane& pane) {
     ImGui::TextUnformatted("CT");
     ImGui::SameLine();
     ImGui::SetNextItemWidth(std::max(60.0f, ImGui::GetContentRegionAvail().x -
-                                                 ImGui::CalcTextSize("Open Knee").x - 5 * spacing));
-    const bool enter = ImGui::InputTextWithHint("##volume", "file, DICOM folder or phantom:NAME",
-                                                &state.volumePathField,
-                                                ImGuiInputTextFlags_EnterReturnsTrue);
+                                                ImGui::CalcTextSize("Open Knee").x - 5 * spacing));
+    const bool enter =
+        ImGui::InputTextWithHint("##volume", "file, DICOM folder or phantom:NAME",
+                                 &state.volumePathField, ImGuiInputTextFlags_EnterReturnsTrue);
     record("input:volume");
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Type a path and press Enter, or drop a CT file or folder onto the window");
+        ImGui::SetTooltip(
+            "Type a path and press Enter, or drop a CT file or folder onto the window");
     ImGui::SameLine();
     if ((ImGui::Button("Open") || enter) && !state.volumePathField.empty())
         state.requests.loadVolume = state.volumePathField;
@@ -253,8 +261,8 @@ void Ui::parameterPane(AppState& state, const Pane& pane) {
         ImGui::ProgressBar(load.progress, ImVec2(-1.0f, 0.0f), overlay);
         ImGui::TextColored(kDim, "Loading %s ...", load.requestedSpec.c_str());
     } else {
-        ImGui::TextColored(kDim, "%s", load.loadedSpec.empty() ? "No CT loaded"
-                                                                : load.loadedSpec.c_str());
+        ImGui::TextColored(kDim, "%s",
+                           load.loadedSpec.empty() ? "No CT loaded" : load.loadedSpec.c_str());
         ImGui::TextColored(kDim, "%s", load.summary.c_str());
     }
     if (!load.error.empty()) ImGui::TextColored(kBad, "%s", load.error.c_str());
@@ -332,18 +340,21 @@ void Ui::matchPane(AppState& state, const Pane& pane) {
 
     bool reveal = state.referenceRevealed;
     if (ImGui::Checkbox("Reveal the reference parameters", &reveal)) {
-        if (reveal) state.requests.reveal = true;
-        else state.referenceRevealed = false;
+        if (reveal)
+            state.requests.reveal = true;
+        else
+            state.referenceRevealed = false;
     }
     record("checkbox:reveal");
 
     if (!state.match) {
-        ImGui::TextWrapped("Move the six parameters until your DRR matches the reference, then "
-                           "press Match.");
-        dimWrapped("A match: every offset within %.3g mm, every angle within %.3g deg, and NCC "
-                   "of the images at least %.3g.",
-                           state.toleranceOffsetMm, state.toleranceAngleDeg,
-                           state.toleranceMinNcc);
+        ImGui::TextWrapped(
+            "Move the six parameters until your DRR matches the reference, then "
+            "press Match.");
+        dimWrapped(
+            "A match: every offset within %.3g mm, every angle within %.3g deg, and NCC "
+            "of the images at least %.3g.",
+            state.toleranceOffsetMm, state.toleranceAngleDeg, state.toleranceMinNcc);
     } else {
         const MatchOutcome& m = *state.match;
         ImGui::PushTextWrapPos(0.0f);
@@ -407,27 +418,32 @@ void Ui::helpWindow(AppState& state) {
             "press Match.");
         ImGui::Spacing();
         ImGui::TextUnformatted("The six parameters:");
-        bulletWrapped("x, y, z offset (mm): where the CT's centre sits relative to the "
-                          "isocenter, the point between source and film.");
-        bulletWrapped("azimuth (-180..180 deg) and elevation (-90..90 deg): where the X-ray "
-                          "source stands on its sphere around the isocenter.");
+        bulletWrapped(
+            "x, y, z offset (mm): where the CT's centre sits relative to the "
+            "isocenter, the point between source and film.");
+        bulletWrapped(
+            "azimuth (-180..180 deg) and elevation (-90..90 deg): where the X-ray "
+            "source stands on its sphere around the isocenter.");
         bulletWrapped("rotation (-90..90 deg): the film's turn in its own plane.");
         ImGui::Spacing();
         ImGui::TextUnformatted("Controls:");
         bulletWrapped("Drag a slider, or type a number in the field beside it.");
-        bulletWrapped("Match: compares your pose with the hidden one; within tolerance the "
-                          "images match, otherwise each parameter gets a hint (too high / too "
-                          "low) and the one furthest off is named. Attempts are counted.");
-        bulletWrapped("A match needs every offset within %.3g mm and every angle within "
-                          "%.3g deg of the hidden pose, and the images to correlate (NCC >= %.3g).",
-                          state.toleranceOffsetMm, state.toleranceAngleDeg,
-                          state.toleranceMinNcc);
+        bulletWrapped(
+            "Match: compares your pose with the hidden one; within tolerance the "
+            "images match, otherwise each parameter gets a hint (too high / too "
+            "low) and the one furthest off is named. Attempts are counted.");
+        bulletWrapped(
+            "A match needs every offset within %.3g mm and every angle within "
+            "%.3g deg of the hidden pose, and the images to correlate (NCC >= %.3g).",
+            state.toleranceOffsetMm, state.toleranceAngleDeg, state.toleranceMinNcc);
         bulletWrapped("New reference image: another hidden pose. Reveal shows its values.");
-        bulletWrapped("Compare: difference, overlay or checkerboard of the two images, with "
-                          "window and level.");
+        bulletWrapped(
+            "Compare: difference, overlay or checkerboard of the two images, with "
+            "window and level.");
         bulletWrapped("3D view: drag to orbit, mouse wheel to zoom, Reset view.");
-        bulletWrapped("Open another CT: type a path (file, DICOM folder or phantom:NAME) or "
-                          "drop it onto the window.");
+        bulletWrapped(
+            "Open another CT: type a path (file, DICOM folder or phantom:NAME) or "
+            "drop it onto the window.");
         if (ImGui::Button("Close")) state.showHelp = false;
         record("button:close-help");
     }

@@ -27,7 +27,7 @@ struct WidgetRect {
 };
 
 class Ui {
-public:
+  public:
     void draw(AppState& state, const UiTextures& textures);
 
     // Where the 3D view image sits (for the renderer's size and the overlay labels).
@@ -41,7 +41,7 @@ public:
     std::optional<WidgetRect> rect(const std::string& id) const;
     void record(const std::string& id);  // the last ImGui item, under `id`
 
-private:
+  private:
     void referencePane(AppState& state, const Pane& pane, unsigned texture);
     void userPane(AppState& state, const Pane& pane, unsigned texture);
     void scenePane(AppState& state, const Pane& pane, unsigned texture);

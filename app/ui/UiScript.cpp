@@ -33,7 +33,9 @@ void UiScript::click(glm::vec2 position) {
     frame();
 }
 
-void UiScript::clickWidget(const std::string& id) { click(widget(id).center()); }
+void UiScript::clickWidget(const std::string& id) {
+    click(widget(id).center());
+}
 
 void UiScript::drag(glm::vec2 from, glm::vec2 to, int steps) {
     input_.mousePos = from;

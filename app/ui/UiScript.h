@@ -11,25 +11,25 @@
 namespace fm::app {
 
 class UiScript {
-public:
+  public:
     explicit UiScript(App& app) : app_(app) {}
 
     void idle(int frames = 1);
-    void moveTo(glm::vec2 position);                  // one frame
-    void click(glm::vec2 position);                   // three frames
+    void moveTo(glm::vec2 position);  // one frame
+    void click(glm::vec2 position);   // three frames
     void clickWidget(const std::string& id);
     // Press at `from`, move to `to` in `steps` frames, release (steps + 2 frames).
     void drag(glm::vec2 from, glm::vec2 to, int steps);
-    void type(const std::string& text);               // one frame
-    void pressKey(int imguiKey, bool ctrl = false);   // down one frame, then up one frame
-    void drop(const std::string& path);               // a file dropped onto the window
-    void wheel(glm::vec2 position, float amount);     // one frame
+    void type(const std::string& text);              // one frame
+    void pressKey(int imguiKey, bool ctrl = false);  // down one frame, then up one frame
+    void drop(const std::string& path);              // a file dropped onto the window
+    void wheel(glm::vec2 position, float amount);    // one frame
 
     // Centre / rectangle of a widget recorded by the UI in the last frame; throws fm::Error if
     // the UI did not draw it.
     WidgetRect widget(const std::string& id) const;
 
-private:
+  private:
     void frame();
     App& app_;
     FrameInput input_;

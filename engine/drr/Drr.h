@@ -40,15 +40,17 @@ enum class DrrOutput {
 };
 
 enum class DrrTrace {
-    Exact,   // Siddon/Jacobs exact voxel traversal with empty-space skipping
-    Approx,  // trilinear sampling at stepMm (for previews; error measured in bench/)
+    Exact,  // Siddon/Jacobs exact voxel traversal with empty-space skipping
+    // Trilinear sampling at approxStepMm. Measured slower than Exact on the CPU at 1-4 mm
+    // steps (docs/benchmarks-drr.md); for fast previews prefer DrrValueOptions::downsample.
+    Approx,
 };
 
 struct DrrRenderOptions {
     DrrOutput output = DrrOutput::LineIntegral;
     DrrTrace trace = DrrTrace::Exact;
     double approxStepMm = 1.0;  // sample spacing along the ray for Approx
-    int threads = 0;            // 0 = all cores; result identical for a given thread count
+    int threads = 0;            // 0 = all cores; the image is bit-identical for any count
     // Added: false = plain traversal of every voxel of the (cropped) box and every pixel
     // (no bricks, no projected-box pixel limit). Same result up to summation order; for tests.
     bool skipEmptySpace = true;

@@ -20,7 +20,7 @@ namespace {
 // the conventional "air" floor of CT numbers.
 constexpr float kHounsfieldAir = -1024.0f;
 
-std::vector<DicomSeries> scanFolder(const std::filesystem::path& folder) {
+std::vector<DicomSeries> scanFolder(const std::filesystem::path& folder, int threads) {
     const std::string what = folder.string();
     std::error_code ec;
     if (!std::filesystem::exists(folder, ec)) throw Error(what + ": folder does not exist");
@@ -42,9 +42,24 @@ std::vector<DicomSeries> scanFolder(const std::filesystem::path& folder) {
                     (hasSubfolders ? std::string(" (sub-folders are not searched)") : ""));
     std::sort(files.begin(), files.end());
 
+    // Headers are read in parallel into per-file slots; the first error in name order is
+    // reported, so neither the result nor the message depends on scheduling.
+    std::vector<std::optional<DicomSliceHeader>> slots(files.size());
+    std::vector<std::string> errors(files.size());
+    parallelFor(static_cast<int>(files.size()), threads, [&](int begin, int end) {
+        for (int f = begin; f < end; ++f) {
+            try {
+                slots[f] = readDicomSliceHeader(files[f]);
+            } catch (const std::exception& e) {
+                errors[f] = e.what();
+            }
+        }
+    });
+    for (const auto& message : errors)
+        if (!message.empty()) throw Error(message);
     std::vector<DicomSliceHeader> headers;
-    for (const auto& file : files)
-        if (auto header = readDicomSliceHeader(file)) headers.push_back(std::move(*header));
+    for (auto& slot : slots)
+        if (slot) headers.push_back(std::move(*slot));
     if (headers.empty())
         throw Error(what + ": no DICOM image among the folder's " + std::to_string(files.size()) +
                     " files" + (hasSubfolders ? " (sub-folders are not searched)" : ""));
@@ -62,7 +77,7 @@ bool isHounsfield(const DicomSliceHeader& h) {
 
 std::vector<DicomSeriesInfo> listDicomSeries(const std::filesystem::path& folder) {
     std::vector<DicomSeriesInfo> list;
-    for (const auto& series : scanFolder(folder))
+    for (const auto& series : scanFolder(folder, 0))
         list.push_back({series.key, series.keyIsUid, series.slices.size(), series.summary()});
     return list;
 }
@@ -73,7 +88,7 @@ Volume readDicomSeries(const std::filesystem::path& folder) {
 
 Volume readDicomSeries(const std::filesystem::path& folder, const DicomReadOptions& options) {
     const std::string what = folder.string();
-    std::vector<DicomSeries> all = scanFolder(folder);
+    std::vector<DicomSeries> all = scanFolder(folder, options.threads);
 
     std::size_t chosen = 0;
     if (!options.seriesInstanceUid.empty()) {

@@ -72,6 +72,8 @@ DicomSliceGeometry dicomSliceGeometry(const DicomSliceHeader& header);
 // included) and applies the modality rescale. Returns rows * columns floats, column index
 // fastest. Stored values equal to the PixelPaddingValue become `paddingValue`.
 // Throws fm::Error naming the file on missing, short or undecodable pixel data.
+// `header` must come from readDicomSliceHeader, which checked the file's byte structure
+// (DicomFileCheck.h) before GDCM parsed it.
 std::vector<float> readDicomSlicePixels(const DicomSliceHeader& header, float paddingValue);
 
 // Silences GDCM's own warning/error printing (we report failures as fm::Error instead).

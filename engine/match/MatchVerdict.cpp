@@ -69,8 +69,8 @@ MatchVerdict judgeMatch(const Pose& reference, const Pose& user, double ncc,
         msg.precision(3);
         msg << ncc << ".";
     } else if (!verdict.parametersWithinTolerance) {
-        msg << "No match yet: " << worst.text << " (off by " << std::abs(worst.error) << " "
-            << unit << ", tolerance " << worst.tolerance << " " << unit << ").";
+        msg << "No match yet: " << worst.text << " (off by " << std::abs(worst.error) << " " << unit
+            << ", tolerance " << worst.tolerance << " " << unit << ").";
     } else {
         msg << "No match: the parameters are within tolerance but the images differ (NCC ";
         msg.precision(3);

@@ -43,8 +43,8 @@ struct MatchVerdict {
     bool imagesAgree = false;  // ncc >= minNcc
     double ncc = 0.0;
     std::array<ParameterHint, kPoseParameterCount> hints;
-    int worstParameter = 0;   // largest |error| / tolerance (Pose::toArray() order)
-    std::string message;      // one line for the user
+    int worstParameter = 0;  // largest |error| / tolerance (Pose::toArray() order)
+    std::string message;     // one line for the user
 };
 
 // `ncc` is the similarity of the reference and the user's DRR (see imageAgreement()).

@@ -22,7 +22,9 @@ const char* poseParameterName(int index) {
     return kNames[index];
 }
 
-const char* poseParameterUnit(int index) { return isAngleParameter(index) ? "deg" : "mm"; }
+const char* poseParameterUnit(int index) {
+    return isAngleParameter(index) ? "deg" : "mm";
+}
 
 bool isAngleParameter(int index) {
     checkIndex(index);
@@ -58,8 +60,8 @@ std::vector<glm::dvec3> boneTargetPoints(const Volume& volume, double threshold,
         if (v >= threshold) ++count;
     if (count == 0) {
         std::ostringstream msg;
-        msg << "bone target points: no voxel of " << volume.meta.source << " reaches "
-            << threshold << " (is the bone threshold right for this volume's units?)";
+        msg << "bone target points: no voxel of " << volume.meta.source << " reaches " << threshold
+            << " (is the bone threshold right for this volume's units?)";
         throw Error(msg.str());
     }
     const std::size_t stride = (count + maxPoints - 1) / maxPoints;

@@ -11,7 +11,9 @@
 namespace fm {
 
 namespace {
-double roundToTenth(double v) { return std::round(v * 10.0) / 10.0; }
+double roundToTenth(double v) {
+    return std::round(v * 10.0) / 10.0;
+}
 }  // namespace
 
 void validateRandomPoseOptions(const RandomPoseOptions& o) {

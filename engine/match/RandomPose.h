@@ -13,12 +13,12 @@
 namespace fm {
 
 struct RandomPoseOptions {
-    double maxOffsetMm = 30.0;     // each offset uniform in [-max, max]
-    double maxElevationDeg = 45.0; // uniform in [-max, max]; azimuth covers the full circle
-    double maxRotationDeg = 30.0;  // uniform in [-max, max]
-    double minBoxCoverage = 0.10;  // bone bounding rectangle / film area, at least
-    double minPointsOnFilm = 0.95; // fraction of bone points on the film, at least
-    int maxTries = 1000;           // candidates drawn before giving up
+    double maxOffsetMm = 30.0;      // each offset uniform in [-max, max]
+    double maxElevationDeg = 45.0;  // uniform in [-max, max]; azimuth covers the full circle
+    double maxRotationDeg = 30.0;   // uniform in [-max, max]
+    double minBoxCoverage = 0.10;   // bone bounding rectangle / film area, at least
+    double minPointsOnFilm = 0.95;  // fraction of bone points on the film, at least
+    int maxTries = 1000;            // candidates drawn before giving up
 };
 
 // Throws fm::Error naming the field for negative or non-finite limits, limits beyond the 2011

@@ -7,7 +7,7 @@
 namespace fm {
 
 class SplitMix64 {
-public:
+  public:
     explicit SplitMix64(std::uint64_t seed) : state_(seed) {}
 
     std::uint64_t next() {
@@ -21,7 +21,7 @@ public:
     // Uniform in [lo, hi).
     double uniform(double lo, double hi) { return lo + (hi - lo) * uniform(); }
 
-private:
+  private:
     std::uint64_t state_;
 };
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <memory>
 #include <sstream>
 #include <vector>
 
@@ -57,8 +58,8 @@ struct RowInfo {
 };
 
 struct Placement {
-    glm::dmat3 toWorld;      // direction * diag(spacing)
-    glm::mat3 gradToWorld;   // direction * diag(1 / spacing)
+    glm::dmat3 toWorld;     // direction * diag(spacing)
+    glm::mat3 gradToWorld;  // direction * diag(1 / spacing)
     glm::dvec3 origin;
 };
 
@@ -69,8 +70,7 @@ struct EdgeVertex {
 
 // Vertex on the edge leaving local point (ux, uy, uz) along `axis`. Normals are the
 // interpolated central-difference gradient, negated (pointing to lower values: outward).
-EdgeVertex makeEdgeVertex(const Grid& g, const Placement& place, int ux, int uy, int uz,
-                          int axis) {
+EdgeVertex makeEdgeVertex(const Grid& g, const Placement& place, int ux, int uy, int uz, int axis) {
     const glm::ivec3 a(ux, uy, uz);
     glm::ivec3 b = a;
     b[axis] += 1;
@@ -100,7 +100,8 @@ EdgeVertex makeEdgeVertex(const Grid& g, const Placement& place, int ux, int uy,
                        g.value(b.x, b.y, b.z + 1) - g.value(b.x, b.y, b.z - 1));
     }
     float t = (g.iso - v0) / (v1 - v0);  // v0 and v1 lie on different sides, so v1 != v0
-    t = std::clamp(t, kEdgeMargin, 1.0f - kEdgeMargin);
+    // Written so that NaN (a NaN or infinite voxel value) lands on the margin, not in the mesh.
+    t = t > kEdgeMargin ? (t < 1.0f - kEdgeMargin ? t : 1.0f - kEdgeMargin) : kEdgeMargin;
     glm::dvec3 voxel = glm::dvec3(a + g.lo - 1);
     voxel[axis] += t;
     EdgeVertex out;
@@ -123,7 +124,8 @@ EdgeVertex makeEdgeVertex(const Grid& g, const Placement& place, int ux, int uy,
 inline unsigned ownedBits(const std::uint8_t* cls, std::size_t pi, std::size_t rowStride,
                           std::size_t sliceStride) {
     const unsigned b = cls[pi];
-    return (b ^ cls[pi + 1]) | ((b ^ cls[pi + rowStride]) << 1) | ((b ^ cls[pi + sliceStride]) << 2);
+    return (b ^ cls[pi + 1]) | ((b ^ cls[pi + rowStride]) << 1) |
+           ((b ^ cls[pi + sliceStride]) << 2);
 }
 
 inline unsigned cubeCase(const std::uint8_t* cls, std::size_t pi, std::size_t rowStride,
@@ -141,8 +143,7 @@ void checkOptions(const Volume& volume, const MarchingCubesOptions& o, glm::ivec
     volume.validate("marching cubes: volume '" + volume.meta.source + "'");
     if (volume.values.size() != volume.voxelCount())
         throw Error("marching cubes: volume '" + volume.meta.source + "' holds no values");
-    if (!std::isfinite(o.isoValue))
-        throw Error("marching cubes: isovalue must be finite");
+    if (!std::isfinite(o.isoValue)) throw Error("marching cubes: isovalue must be finite");
     if (o.padValue && !(*o.padValue < o.isoValue))
         throw Error("marching cubes: pad value must be below the isovalue");
     if (o.keepLargestComponents < 0)
@@ -157,8 +158,8 @@ void checkOptions(const Volume& volume, const MarchingCubesOptions& o, glm::ivec
             std::ostringstream msg;
             msg << "marching cubes: region of interest (" << lo.x << "," << lo.y << "," << lo.z
                 << ")-(" << hi.x << "," << hi.y << "," << hi.z
-                << ") is empty or outside the volume of " << volume.dims.x << " x "
-                << volume.dims.y << " x " << volume.dims.z << " voxels";
+                << ") is empty or outside the volume of " << volume.dims.x << " x " << volume.dims.y
+                << " x " << volume.dims.z << " voxels";
             throw Error(msg.str());
         }
     }
@@ -185,36 +186,66 @@ Mesh marchingCubes(const Volume& volume, const MarchingCubesOptions& options) {
     // Pass 1: classify every ROI voxel (inside = value >= iso), note where each row has inside
     // points, and the ROI minimum for the padding value. Padding stays 0 (outside). The arrays
     // get kWordSlack spare bytes so that 8-byte reads at the last row stay in bounds.
+    // Both byte arrays are left uninitialised and written in full by the parallel passes: a
+    // zeroing memset up front would touch every page twice (it cost ~20% on large CTs).
     constexpr std::size_t kWordSlack = 8;
-    std::vector<std::uint8_t> cls(sliceStride * g.p.z + kWordSlack, 0);
-    // Per point: its crossed owned edges (bits x, y, z), filled by pass 2.
-    std::vector<std::uint8_t> owned(cls.size(), 0);
+    const std::size_t byteCount = sliceStride * g.p.z + kWordSlack;
+    const std::unique_ptr<std::uint8_t[]> clsStore(new std::uint8_t[byteCount]);
+    // Per point: its crossed owned edges (bits x, y, z), written by pass 2.
+    const std::unique_ptr<std::uint8_t[]> ownedStore(new std::uint8_t[byteCount]);
+    std::uint8_t* const cls = clsStore.get();
+    std::uint8_t* const owned = ownedStore.get();
+    // Padding slices, the slice past the last cube layer, and the slack: all outside / none.
+    std::memset(cls, 0, sliceStride);
+    std::memset(cls + sliceStride * (g.p.z - 1), 0, sliceStride + kWordSlack);
+    std::memset(owned + sliceStride * (g.p.z - 1), 0, sliceStride + kWordSlack);
     std::vector<RowInfo> rows(static_cast<std::size_t>(g.p.y) * g.p.z);
     std::vector<float> layerMin(g.p.z, std::numeric_limits<float>::infinity());
     const float iso = g.iso;
-    parallelFor(g.m.z, threads, [&](int begin, int end) {
-        for (int uz = begin + 1; uz <= end; ++uz) {
-            float lowest = std::numeric_limits<float>::infinity();
-            for (int uy = 1; uy <= g.m.y; ++uy) {
-                const float* src = &volume.values[volume.index(lo.x, lo.y + uy - 1, lo.z + uz - 1)];
-                std::uint8_t* dst = &cls[g.pointIndex(1, uy, uz)];
-                float rowLowest = std::numeric_limits<float>::infinity();
-                for (int x = 0; x < g.m.x; ++x) {
-                    dst[x] = src[x] >= iso;
-                    rowLowest = std::min(rowLowest, src[x]);
+    parallelFor(
+        g.m.z, threads,
+        [&](int begin, int end) {
+            for (int uz = begin + 1; uz <= end; ++uz) {
+                float lowest = std::numeric_limits<float>::infinity();
+                // Padding rows and row ends of this slice.
+                std::memset(&cls[g.pointIndex(0, 0, uz)], 0, rowStride);
+                std::memset(&cls[g.pointIndex(0, g.p.y - 1, uz)], 0, rowStride);
+                for (int uy = 1; uy <= g.m.y; ++uy) {
+                    cls[g.pointIndex(0, uy, uz)] = 0;
+                    cls[g.pointIndex(g.p.x - 1, uy, uz)] = 0;
                 }
-                lowest = std::min(lowest, rowLowest);
-                const void* firstInside = std::memchr(dst, 1, g.m.x);
-                if (!firstInside) continue;
-                int last = g.m.x - 1;
-                while (!dst[last]) --last;
-                RowInfo& row = rows[g.rowIndex(uy, uz)];
-                row.insideFirst = static_cast<int>(static_cast<const std::uint8_t*>(firstInside) - dst) + 1;
-                row.insideLast = last + 1;
+                for (int uy = 1; uy <= g.m.y; ++uy) {
+                    const float* src =
+                        &volume.values[volume.index(lo.x, lo.y + uy - 1, lo.z + uz - 1)];
+                    std::uint8_t* dst = &cls[g.pointIndex(1, uy, uz)];
+                    // Locals: byte stores may alias anything, which would otherwise force
+                    // reloading iso and the row length every voxel (and block vectorising).
+                    const float isoHere = iso;
+                    const int width = g.m.x;
+                    for (int x = 0; x < width; ++x) dst[x] = src[x] >= isoHere;
+                    // Minimum in 8 independent lanes: a single running minimum is a serial
+                    // dependency the compiler may not vectorise (NaN semantics).
+                    float lane[8];
+                    std::fill(lane, lane + 8, std::numeric_limits<float>::infinity());
+                    int x = 0;
+                    for (; x + 8 <= width; x += 8)
+                        for (int k = 0; k < 8; ++k) lane[k] = std::min(lane[k], src[x + k]);
+                    for (; x < width; ++x) lane[0] = std::min(lane[0], src[x]);
+                    const float rowLowest = *std::min_element(lane, lane + 8);
+                    lowest = std::min(lowest, rowLowest);
+                    const void* firstInside = std::memchr(dst, 1, width);
+                    if (!firstInside) continue;
+                    int last = width - 1;
+                    while (!dst[last]) --last;
+                    RowInfo& row = rows[g.rowIndex(uy, uz)];
+                    row.insideFirst =
+                        static_cast<int>(static_cast<const std::uint8_t*>(firstInside) - dst) + 1;
+                    row.insideLast = last + 1;
+                }
+                layerMin[uz] = lowest;
             }
-            layerMin[uz] = lowest;
-        }
-    }, 4);
+        },
+        4);
     if (options.padValue) {
         g.pad = static_cast<float>(*options.padValue);
     } else {
@@ -234,49 +265,55 @@ Mesh marchingCubes(const Volume& volume, const MarchingCubesOptions& options) {
     // point rows it touches: the rest are all outside and are skipped), the crossed edges its
     // point row owns, and its triangle count.
     const int cubeRowsY = g.m.y + 1, cubeRowsZ = g.m.z + 1;
-    parallelFor(cubeRowsZ, threads, [&](int begin, int end) {
-        for (int uz = begin; uz < end; ++uz) {
-            for (int uy = 0; uy < cubeRowsY; ++uy) {
-                RowInfo& row = rows[g.rowIndex(uy, uz)];
-                int first = std::numeric_limits<int>::max(), last = -1;
-                for (int dz = 0; dz < 2; ++dz)
-                    for (int dy = 0; dy < 2; ++dy) {
-                        const RowInfo& q = rows[g.rowIndex(uy + dy, uz + dz)];
-                        first = std::min(first, q.insideFirst);
-                        last = std::max(last, q.insideLast);
+    parallelFor(
+        cubeRowsZ, threads,
+        [&](int begin, int end) {
+            for (int uz = begin; uz < end; ++uz) {
+                for (int uy = 0; uy < cubeRowsY; ++uy) {
+                    RowInfo& row = rows[g.rowIndex(uy, uz)];
+                    int first = std::numeric_limits<int>::max(), last = -1;
+                    for (int dz = 0; dz < 2; ++dz)
+                        for (int dy = 0; dy < 2; ++dy) {
+                            const RowInfo& q = rows[g.rowIndex(uy + dy, uz + dz)];
+                            first = std::min(first, q.insideFirst);
+                            last = std::max(last, q.insideLast);
+                        }
+                    const std::size_t base = g.pointIndex(0, uy, uz);
+                    // Owned edges default to none; the loop below fills the visited points.
+                    std::memset(owned + base, 0, rowStride);
+                    if (uy + 1 == cubeRowsY) std::memset(owned + base + rowStride, 0, rowStride);
+                    if (last < 0) continue;
+                    row.cubeFirst = first - 1;
+                    row.cubeLast = last;
+                    std::uint32_t edges = 0, triangles = 0;
+                    const std::uint8_t* r0 = cls + base;
+                    const std::uint8_t* r1 = r0 + rowStride;
+                    const std::uint8_t* r2 = r0 + sliceStride;
+                    const std::uint8_t* r3 = r2 + rowStride;
+                    std::uint8_t* own = owned + base;
+                    for (int ux = row.cubeFirst; ux <= row.cubeLast;) {
+                        // Cubes ux .. ux+6 only touch points ux .. ux+7: when those are all
+                        // outside or all inside (the block's values do not straddle the iso),
+                        // there is nothing to do. Rows' owned edges lie within these four rows.
+                        const std::uint64_t w0 = word(r0 + ux), w1 = word(r1 + ux),
+                                            w2 = word(r2 + ux), w3 = word(r3 + ux);
+                        if ((w0 | w1 | w2 | w3) == 0 || (w0 & w1 & w2 & w3) == kAllInside) {
+                            ux += 7;
+                            continue;
+                        }
+                        const std::size_t pi = base + ux;
+                        const unsigned bits = ownedBits(cls, pi, rowStride, sliceStride);
+                        own[ux] = static_cast<std::uint8_t>(bits);
+                        edges += kBitCount3[bits];
+                        triangles += cases[cubeCase(cls, pi, rowStride, sliceStride)].triangleCount;
+                        ++ux;
                     }
-                if (last < 0) continue;
-                row.cubeFirst = first - 1;
-                row.cubeLast = last;
-                std::uint32_t edges = 0, triangles = 0;
-                const std::size_t base = g.pointIndex(0, uy, uz);
-                const std::uint8_t* r0 = cls.data() + base;
-                const std::uint8_t* r1 = r0 + rowStride;
-                const std::uint8_t* r2 = r0 + sliceStride;
-                const std::uint8_t* r3 = r2 + rowStride;
-                std::uint8_t* own = owned.data() + base;
-                for (int ux = row.cubeFirst; ux <= row.cubeLast;) {
-                    // Cubes ux .. ux+6 only touch points ux .. ux+7: when those are all
-                    // outside or all inside (the block's values do not straddle the iso),
-                    // there is nothing to do. Rows' owned edges lie within these four rows.
-                    const std::uint64_t w0 = word(r0 + ux), w1 = word(r1 + ux),
-                                        w2 = word(r2 + ux), w3 = word(r3 + ux);
-                    if ((w0 | w1 | w2 | w3) == 0 || (w0 & w1 & w2 & w3) == kAllInside) {
-                        ux += 7;
-                        continue;
-                    }
-                    const std::size_t pi = base + ux;
-                    const unsigned bits = ownedBits(cls.data(), pi, rowStride, sliceStride);
-                    own[ux] = static_cast<std::uint8_t>(bits);
-                    edges += kBitCount3[bits];
-                    triangles += cases[cubeCase(cls.data(), pi, rowStride, sliceStride)].triangleCount;
-                    ++ux;
+                    row.edgeVertices = edges;
+                    row.triangles = triangles;
                 }
-                row.edgeVertices = edges;
-                row.triangles = triangles;
             }
-        }
-    }, 4);
+        },
+        4);
 
     // Pass 3: prefix sums give every row its output ranges (allocate once, no locks).
     std::size_t vertexTotal = 0, triangleTotal = 0;
@@ -301,100 +338,108 @@ Mesh marchingCubes(const Volume& volume, const MarchingCubesOptions& options) {
     place.toWorld = volume.direction * glm::dmat3(glm::dvec3(volume.spacing.x, 0, 0),
                                                   glm::dvec3(0, volume.spacing.y, 0),
                                                   glm::dvec3(0, 0, volume.spacing.z));
-    place.gradToWorld = glm::mat3(volume.direction * glm::dmat3(glm::dvec3(1.0 / volume.spacing.x, 0, 0),
-                                                      glm::dvec3(0, 1.0 / volume.spacing.y, 0),
-                                                      glm::dvec3(0, 0, 1.0 / volume.spacing.z)));
+    place.gradToWorld =
+        glm::mat3(volume.direction * glm::dmat3(glm::dvec3(1.0 / volume.spacing.x, 0, 0),
+                                                glm::dvec3(0, 1.0 / volume.spacing.y, 0),
+                                                glm::dvec3(0, 0, 1.0 / volume.spacing.z)));
     // A left-handed direction matrix mirrors the grid: flip the winding to stay outward.
     const bool mirrored = glm::determinant(volume.direction) < 0.0;
 
     // Pass 4: generate. Each cube row walks its four point rows in step, keeping for each the
     // id of the next owned edge vertex, so vertices shared with other rows are found without
     // any lookup table. Rows past the ROI own nothing (their `owned` bytes stay 0).
-    parallelFor(cubeRowsZ, threads, [&](int begin, int end) {
-        for (int uz = begin; uz < end; ++uz) {
-            for (int uy = 0; uy < cubeRowsY; ++uy) {
-                const RowInfo& row = rows[g.rowIndex(uy, uz)];
-                if (row.cubeLast < row.cubeFirst) continue;
-                std::size_t cursor[4];
-                const std::uint8_t* own[4];
-                const std::uint8_t* clsRow[4];
-                int walkFirst = row.cubeFirst;
-                for (int q = 0; q < 4; ++q) {
-                    const int qy = uy + (q & 1), qz = uz + (q >> 1);
-                    own[q] = owned.data() + g.pointIndex(0, qy, qz);
-                    clsRow[q] = cls.data() + g.pointIndex(0, qy, qz);
-                    cursor[q] = 0;
-                    if (qy >= cubeRowsY || qz >= cubeRowsZ) continue;
-                    const RowInfo& r = rows[g.rowIndex(qy, qz)];
-                    cursor[q] = r.vertexBase;
-                    // Start where the earliest of the four rows has owned edges.
-                    if (r.cubeLast >= r.cubeFirst) walkFirst = std::min(walkFirst, r.cubeFirst);
-                }
-                std::size_t triangleId = row.triangleBase;
-                for (int ux = walkFirst; ux <= row.cubeLast;) {
-                    // Skip 7 cubes whose corners are all outside or all inside when no row
-                    // owns an edge there (the other rows' edges may leave these four rows).
-                    if ((word(own[0] + ux) | word(own[1] + ux) | word(own[2] + ux) |
-                         word(own[3] + ux)) == 0) {
-                        const std::uint64_t w0 = word(clsRow[0] + ux), w1 = word(clsRow[1] + ux),
-                                            w2 = word(clsRow[2] + ux), w3 = word(clsRow[3] + ux);
-                        if ((w0 | w1 | w2 | w3) == 0 || (w0 & w1 & w2 & w3) == kAllInside) {
-                            ux += 7;
-                            continue;
-                        }
+    parallelFor(
+        cubeRowsZ, threads,
+        [&](int begin, int end) {
+            for (int uz = begin; uz < end; ++uz) {
+                for (int uy = 0; uy < cubeRowsY; ++uy) {
+                    const RowInfo& row = rows[g.rowIndex(uy, uz)];
+                    if (row.cubeLast < row.cubeFirst) continue;
+                    std::size_t cursor[4];
+                    const std::uint8_t* own[4];
+                    const std::uint8_t* clsRow[4];
+                    int walkFirst = row.cubeFirst;
+                    for (int q = 0; q < 4; ++q) {
+                        const int qy = uy + (q & 1), qz = uz + (q >> 1);
+                        own[q] = owned + g.pointIndex(0, qy, qz);
+                        clsRow[q] = cls + g.pointIndex(0, qy, qz);
+                        cursor[q] = 0;
+                        if (qy >= cubeRowsY || qz >= cubeRowsZ) continue;
+                        const RowInfo& r = rows[g.rowIndex(qy, qz)];
+                        cursor[q] = r.vertexBase;
+                        // Start where the earliest of the four rows has owned edges.
+                        if (r.cubeLast >= r.cubeFirst) walkFirst = std::min(walkFirst, r.cubeFirst);
                     }
-                    const unsigned bits[4] = {own[0][ux], own[1][ux], own[2][ux], own[3][ux]};
-                    if (ux >= row.cubeFirst) {
-                        const std::size_t pi = g.pointIndex(ux, uy, uz);
-                        const mc::CubeCase& c = cases[cubeCase(cls.data(), pi, rowStride, sliceStride)];
-                        // Owned edges of this point: create their vertices.
-                        if (bits[0]) {
-                            std::size_t id = cursor[0];
-                            for (int axis = 0; axis < 3; ++axis) {
-                                if (!((bits[0] >> axis) & 1)) continue;
-                                const EdgeVertex v = makeEdgeVertex(g, place, ux, uy, uz, axis);
-                                mesh.positions[id] = v.position;
-                                mesh.normals[id] = v.normal;
-                                ++id;
+                    std::size_t triangleId = row.triangleBase;
+                    for (int ux = walkFirst; ux <= row.cubeLast;) {
+                        // Skip 7 cubes whose corners are all outside or all inside when no row
+                        // owns an edge there (the other rows' edges may leave these four rows).
+                        if ((word(own[0] + ux) | word(own[1] + ux) | word(own[2] + ux) |
+                             word(own[3] + ux)) == 0) {
+                            const std::uint64_t w0 = word(clsRow[0] + ux),
+                                                w1 = word(clsRow[1] + ux),
+                                                w2 = word(clsRow[2] + ux),
+                                                w3 = word(clsRow[3] + ux);
+                            if ((w0 | w1 | w2 | w3) == 0 || (w0 & w1 & w2 & w3) == kAllInside) {
+                                ux += 7;
+                                continue;
                             }
                         }
-                        if (c.triangleCount) {
-                            std::uint32_t ref[12];
-                            for (int e = 0; e < 12; ++e) {
-                                if (!((c.edgeMask >> e) & 1)) continue;
-                                const int axis = e >> 2, o0 = e & 1, o1 = (e >> 1) & 1;
-                                std::size_t id;
-                                if (axis == 0) {
-                                    id = cursor[o0 + 2 * o1];  // x-edge: point ux of row (o0, o1)
-                                } else {
-                                    // y-edge: point ux + o0 of row (0, o1), after the x bit;
-                                    // z-edge: point ux + o0 of row (o1, 0), after x and y bits.
-                                    const int q = axis == 1 ? 2 * o1 : o1;
-                                    const unsigned before = axis == 1 ? 1u : 3u;
-                                    id = cursor[q];
-                                    if (o0) {
-                                        id += kBitCount3[bits[q]];
-                                        id += kBitCount3[own[q][ux + 1] & before];
-                                    } else {
-                                        id += kBitCount3[bits[q] & before];
-                                    }
+                        const unsigned bits[4] = {own[0][ux], own[1][ux], own[2][ux], own[3][ux]};
+                        if (ux >= row.cubeFirst) {
+                            const std::size_t pi = g.pointIndex(ux, uy, uz);
+                            const mc::CubeCase& c =
+                                cases[cubeCase(cls, pi, rowStride, sliceStride)];
+                            // Owned edges of this point: create their vertices.
+                            if (bits[0]) {
+                                std::size_t id = cursor[0];
+                                for (int axis = 0; axis < 3; ++axis) {
+                                    if (!((bits[0] >> axis) & 1)) continue;
+                                    const EdgeVertex v = makeEdgeVertex(g, place, ux, uy, uz, axis);
+                                    mesh.positions[id] = v.position;
+                                    mesh.normals[id] = v.normal;
+                                    ++id;
                                 }
-                                ref[e] = static_cast<std::uint32_t>(id);
                             }
-                            for (int t = 0; t < c.triangleCount; ++t) {
-                                const auto& tri = c.triangles[t];
-                                glm::uvec3 out(ref[tri[0]], ref[tri[1]], ref[tri[2]]);
-                                if (mirrored) std::swap(out.y, out.z);
-                                mesh.triangles[triangleId++] = out;
+                            if (c.triangleCount) {
+                                std::uint32_t ref[12];
+                                for (int e = 0; e < 12; ++e) {
+                                    if (!((c.edgeMask >> e) & 1)) continue;
+                                    const int axis = e >> 2, o0 = e & 1, o1 = (e >> 1) & 1;
+                                    std::size_t id;
+                                    if (axis == 0) {
+                                        id = cursor[o0 +
+                                                    2 * o1];  // x-edge: point ux of row (o0, o1)
+                                    } else {
+                                        // y-edge: point ux + o0 of row (0, o1), after the x bit;
+                                        // z-edge: point ux + o0 of row (o1, 0), after x and y bits.
+                                        const int q = axis == 1 ? 2 * o1 : o1;
+                                        const unsigned before = axis == 1 ? 1u : 3u;
+                                        id = cursor[q];
+                                        if (o0) {
+                                            id += kBitCount3[bits[q]];
+                                            id += kBitCount3[own[q][ux + 1] & before];
+                                        } else {
+                                            id += kBitCount3[bits[q] & before];
+                                        }
+                                    }
+                                    ref[e] = static_cast<std::uint32_t>(id);
+                                }
+                                for (int t = 0; t < c.triangleCount; ++t) {
+                                    const auto& tri = c.triangles[t];
+                                    glm::uvec3 out(ref[tri[0]], ref[tri[1]], ref[tri[2]]);
+                                    if (mirrored) std::swap(out.y, out.z);
+                                    mesh.triangles[triangleId++] = out;
+                                }
                             }
                         }
+                        for (int q = 0; q < 4; ++q) cursor[q] += kBitCount3[bits[q]];
+                        ++ux;
                     }
-                    for (int q = 0; q < 4; ++q) cursor[q] += kBitCount3[bits[q]];
-                    ++ux;
                 }
             }
-        }
-    }, 4);
+        },
+        4);
 
     const bool pick = options.onlyComponentRank || options.onlyComponentNear;
     if (options.labelComponents || options.keepLargestComponents > 0 || pick) {

@@ -11,11 +11,11 @@
 namespace fm {
 
 struct MarchingCubesOptions {
-    double isoValue = 300.0;                // HU for CTs: a bone level by default
-    std::optional<glm::ivec3> roiMin;       // optional region of interest, voxel indices
-    std::optional<glm::ivec3> roiMax;       //   (inclusive)
-    int keepLargestComponents = 0;          // 0 = all; N = the N largest by triangle count
-    int threads = 0;                        // 0 = all cores; output identical per thread count
+    double isoValue = 300.0;           // HU for CTs: a bone level by default
+    std::optional<glm::ivec3> roiMin;  // optional region of interest, voxel indices
+    std::optional<glm::ivec3> roiMax;  //   (inclusive)
+    int keepLargestComponents = 0;     // 0 = all; N = the N largest by triangle count
+    int threads = 0;                   // 0 = all cores; output identical per thread count
 
     // Added by the mesh helper (backward compatible):
     // Value assumed beyond the volume (or ROI) border so cut bones close. Must be below

@@ -8,7 +8,9 @@
 namespace fm::mc {
 namespace {
 
-glm::dvec3 cornerPosition(int c) { return glm::dvec3(c & 1, (c >> 1) & 1, (c >> 2) & 1); }
+glm::dvec3 cornerPosition(int c) {
+    return glm::dvec3(c & 1, (c >> 1) & 1, (c >> 2) & 1);
+}
 
 // The two axes other than `axis`, lower first.
 void otherAxes(int axis, int& u, int& w) {
@@ -43,7 +45,8 @@ bool shareFace(int a, int b) {
 // the loop then runs on faces that do not hold the apex, and rays from a point of a convex
 // surface meet the rest of that surface at most once, so the fan's triangles (cones from the
 // apex over loop segments) overlap only along their shared chords.
-bool fanTriangulation(const std::vector<int>& loop, int apex, std::vector<std::array<int, 3>>& out) {
+bool fanTriangulation(const std::vector<int>& loop, int apex,
+                      std::vector<std::array<int, 3>>& out) {
     const int n = static_cast<int>(loop.size());
     for (int k = 2; k <= n - 2; ++k)
         if (shareFace(loop[apex], loop[(apex + k) % n])) return false;
@@ -66,7 +69,8 @@ CubeCase buildCase(int caseIndex) {
         int u, w;
         otherAxes(axis, u, w);
         for (int side = 0; side < 2; ++side) {
-            const glm::dvec3 normal = glm::dvec3(axis == 0, axis == 1, axis == 2) * (side ? 1.0 : -1.0);
+            const glm::dvec3 normal =
+                glm::dvec3(axis == 0, axis == 1, axis == 2) * (side ? 1.0 : -1.0);
             // Face corners in cyclic order and the face edges between them.
             const int q[4] = {cornerOf(axis, side, u, 0, w, 0), cornerOf(axis, side, u, 1, w, 0),
                               cornerOf(axis, side, u, 1, w, 1), cornerOf(axis, side, u, 0, w, 1)};
@@ -85,12 +89,14 @@ CubeCase buildCase(int caseIndex) {
             } else if (crossings == 4) {
                 // Ambiguous face: cut each inside corner off on its own (inside separated).
                 for (int n = 0; n < 4; ++n)
-                    if (inside(q[n])) segments.push_back({faceEdge[(n + 3) % 4], faceEdge[n], q[n]});
+                    if (inside(q[n]))
+                        segments.push_back({faceEdge[(n + 3) % 4], faceEdge[n], q[n]});
             }
             for (auto [a, b, in] : segments) {
                 const glm::dvec3 p = edgeMidpoint(a), r = edgeMidpoint(b);
                 // Inside on the right of a->b seen from outside the cube gives outward triangles.
-                if (glm::dot(glm::cross(r - p, cornerPosition(in) - p), normal) > 0) std::swap(a, b);
+                if (glm::dot(glm::cross(r - p, cornerPosition(in) - p), normal) > 0)
+                    std::swap(a, b);
                 if (next[a] >= 0) throw std::logic_error("marching cubes table: two exits");
                 next[a] = b;
                 ++incoming[b];
@@ -121,13 +127,16 @@ CubeCase buildCase(int caseIndex) {
         throw std::logic_error("marching cubes table: case too large");
     result.triangleCount = static_cast<std::uint8_t>(triangles.size());
     for (std::size_t t = 0; t < triangles.size() && t < result.triangles.size(); ++t)
-        for (int v = 0; v < 3; ++v) result.triangles[t][v] = static_cast<std::uint8_t>(triangles[t][v]);
+        for (int v = 0; v < 3; ++v)
+            result.triangles[t][v] = static_cast<std::uint8_t>(triangles[t][v]);
     return result;
 }
 
 }  // namespace
 
-int edgeAxis(int edge) { return edge / 4; }
+int edgeAxis(int edge) {
+    return edge / 4;
+}
 
 int edgeCorner(int edge, int end) {
     const int axis = edge / 4;

@@ -11,9 +11,9 @@
 namespace fm {
 
 struct MeshCheckReport {
-    bool isPolygonMesh = false;    // CGAL accepts the soup as an oriented 2-manifold (with boundary)
-    bool closed = false;           // no border edges
-    bool manifold = false;         // every edge has exactly two triangles, no pinched vertices
+    bool isPolygonMesh = false;  // CGAL accepts the soup as an oriented 2-manifold (with boundary)
+    bool closed = false;         // no border edges
+    bool manifold = false;       // every edge has exactly two triangles, no pinched vertices
     bool selfIntersecting = true;  // checked only for polygon meshes
     bool outwardOriented = false;  // checked only on closed, non-self-intersecting meshes
     bool boundsVolume = false;     //   "
@@ -24,7 +24,7 @@ struct MeshCheckReport {
     std::size_t degenerateTriangles = 0;  // zero area (collinear or repeated vertices)
     std::size_t duplicateVertices = 0;    // vertices at the same position as an earlier one
     std::size_t unusedVertices = 0;
-    std::size_t nonManifoldEdges = 0;     // edges with other than two triangles
+    std::size_t nonManifoldEdges = 0;  // edges with other than two triangles
     bool validIndices = false;
 
     // Closed, manifold, no self-intersection, outward, bounds a volume, no degenerate

@@ -20,7 +20,10 @@ void unite(std::vector<std::uint32_t>& parent, std::uint32_t a, std::uint32_t b)
     b = findRoot(parent, b);
     if (a == b) return;
     // Smaller index becomes the root: deterministic regardless of triangle order subtleties.
-    if (a < b) parent[b] = a; else parent[a] = b;
+    if (a < b)
+        parent[b] = a;
+    else
+        parent[a] = b;
 }
 
 }  // namespace

@@ -25,7 +25,8 @@ static_assert(std::endian::native == std::endian::little, "mesh writers assume l
 
 std::vector<char> encodePly(const Mesh& mesh) {
     const bool normals = mesh.normals.size() == mesh.positions.size() && !mesh.normals.empty();
-    std::string header = "ply\nformat binary_little_endian 1.0\ncomment fluoromatch marching cubes\n";
+    std::string header =
+        "ply\nformat binary_little_endian 1.0\ncomment fluoromatch marching cubes\n";
     header += "element vertex " + std::to_string(mesh.positions.size()) + "\n";
     header += "property float x\nproperty float y\nproperty float z\n";
     if (normals) header += "property float nx\nproperty float ny\nproperty float nz\n";
@@ -82,8 +83,8 @@ std::vector<char> encodeObj(const Mesh& mesh) {
         }
     for (const auto& t : mesh.triangles) {
         if (normals)
-            std::snprintf(line, sizeof line, "f %u//%u %u//%u %u//%u\n", t.x + 1, t.x + 1,
-                          t.y + 1, t.y + 1, t.z + 1, t.z + 1);
+            std::snprintf(line, sizeof line, "f %u//%u %u//%u %u//%u\n", t.x + 1, t.x + 1, t.y + 1,
+                          t.y + 1, t.z + 1, t.z + 1);
         else
             std::snprintf(line, sizeof line, "f %u %u %u\n", t.x + 1, t.y + 1, t.z + 1);
         s += line;
@@ -115,15 +116,19 @@ void writeMesh(const Mesh& mesh, const std::filesystem::path& path) {
             t.z >= mesh.positions.size())
             throw Error("writing mesh '" + path.string() + "': triangle index out of range");
     std::vector<char> bytes;
-    if (ext == ".ply") bytes = encodePly(mesh);
-    else if (ext == ".stl") bytes = encodeStl(mesh);
-    else bytes = encodeObj(mesh);
+    if (ext == ".ply")
+        bytes = encodePly(mesh);
+    else if (ext == ".stl")
+        bytes = encodeStl(mesh);
+    else
+        bytes = encodeObj(mesh);
 
     std::filesystem::path temp = path;
     temp += ".tmp-fluoromatch";
     {
         std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-        if (!out) throw Error("writing mesh '" + path.string() + "': cannot create " + temp.string());
+        if (!out)
+            throw Error("writing mesh '" + path.string() + "': cannot create " + temp.string());
         out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
         out.close();
         if (!out) {

@@ -73,9 +73,9 @@ bool boxOutside(const AnalyticShape& shape, const glm::dvec3& lo, const glm::dve
             [&](const CylinderShape& c) {
                 if (hi.z <= c.center.z - c.halfHeight || lo.z >= c.center.z + c.halfHeight)
                     return true;
-                const glm::dvec2 q = glm::clamp(glm::dvec2(c.center), glm::dvec2(lo),
-                                                glm::dvec2(hi)) -
-                                     glm::dvec2(c.center);
+                const glm::dvec2 q =
+                    glm::clamp(glm::dvec2(c.center), glm::dvec2(lo), glm::dvec2(hi)) -
+                    glm::dvec2(c.center);
                 return glm::dot(q, q) >= c.radius * c.radius;
             },
             [&](const EllipsoidShape& e) {
@@ -114,53 +114,52 @@ std::string shapeName(const AnalyticShape& shape) {
 void validateShape(const AnalyticShape& shape, const std::string& what) {
     auto fail = [&](const std::string& why) { throw Error(what + ": " + why); };
     auto positive = [](double v) { return std::isfinite(v) && v > 0.0; };
-    std::visit(Overloaded{
-                   [&](const BoxShape& b) {
-                       if (!finite3(b.min) || !finite3(b.max)) fail("box corners must be finite");
-                       if (!glm::all(glm::lessThan(b.min, b.max)))
-                           fail("box must have positive size along x, y and z");
-                   },
-                   [&](const SphereShape& s) {
-                       if (!finite3(s.center)) fail("sphere centre must be finite");
-                       if (!positive(s.radius)) fail("sphere radius must be positive");
-                   },
-                   [&](const CylinderShape& c) {
-                       if (!finite3(c.center)) fail("cylinder centre must be finite");
-                       if (!positive(c.radius)) fail("cylinder radius must be positive");
-                       if (!positive(c.halfHeight)) fail("cylinder height must be positive");
-                   },
-                   [&](const EllipsoidShape& e) {
-                       if (!finite3(e.center)) fail("ellipsoid centre must be finite");
-                       if (!positive(e.semiAxes.x) || !positive(e.semiAxes.y) ||
-                           !positive(e.semiAxes.z))
-                           fail("ellipsoid semi-axes must be positive");
-                   },
-               },
-               shape);
-}
-
-bool contains(const AnalyticShape& shape, const glm::dvec3& p) {
-    return std::visit(
+    std::visit(
         Overloaded{
             [&](const BoxShape& b) {
-                return glm::all(glm::greaterThanEqual(p, b.min)) &&
-                       glm::all(glm::lessThanEqual(p, b.max));
+                if (!finite3(b.min) || !finite3(b.max)) fail("box corners must be finite");
+                if (!glm::all(glm::lessThan(b.min, b.max)))
+                    fail("box must have positive size along x, y and z");
             },
             [&](const SphereShape& s) {
-                const glm::dvec3 d = p - s.center;
-                return glm::dot(d, d) <= s.radius * s.radius;
+                if (!finite3(s.center)) fail("sphere centre must be finite");
+                if (!positive(s.radius)) fail("sphere radius must be positive");
             },
             [&](const CylinderShape& c) {
-                const glm::dvec2 d = glm::dvec2(p) - glm::dvec2(c.center);
-                return std::abs(p.z - c.center.z) <= c.halfHeight &&
-                       glm::dot(d, d) <= c.radius * c.radius;
+                if (!finite3(c.center)) fail("cylinder centre must be finite");
+                if (!positive(c.radius)) fail("cylinder radius must be positive");
+                if (!positive(c.halfHeight)) fail("cylinder height must be positive");
             },
             [&](const EllipsoidShape& e) {
-                const glm::dvec3 d = (p - e.center) / e.semiAxes;
-                return glm::dot(d, d) <= 1.0;
+                if (!finite3(e.center)) fail("ellipsoid centre must be finite");
+                if (!positive(e.semiAxes.x) || !positive(e.semiAxes.y) || !positive(e.semiAxes.z))
+                    fail("ellipsoid semi-axes must be positive");
             },
         },
         shape);
+}
+
+bool contains(const AnalyticShape& shape, const glm::dvec3& p) {
+    return std::visit(Overloaded{
+                          [&](const BoxShape& b) {
+                              return glm::all(glm::greaterThanEqual(p, b.min)) &&
+                                     glm::all(glm::lessThanEqual(p, b.max));
+                          },
+                          [&](const SphereShape& s) {
+                              const glm::dvec3 d = p - s.center;
+                              return glm::dot(d, d) <= s.radius * s.radius;
+                          },
+                          [&](const CylinderShape& c) {
+                              const glm::dvec2 d = glm::dvec2(p) - glm::dvec2(c.center);
+                              return std::abs(p.z - c.center.z) <= c.halfHeight &&
+                                     glm::dot(d, d) <= c.radius * c.radius;
+                          },
+                          [&](const EllipsoidShape& e) {
+                              const glm::dvec3 d = (p - e.center) / e.semiAxes;
+                              return glm::dot(d, d) <= 1.0;
+                          },
+                      },
+                      shape);
 }
 
 double exactVolume(const AnalyticShape& shape) {
@@ -200,43 +199,43 @@ double ellipsoidArea(glm::dvec3 axes) {
     const double k = std::sqrt((a * a * (b * b - c * c)) / (b * b * (a * a - c * c)));
     const double F = std::ellint_1(k, phi);
     const double E = std::ellint_2(k, phi);
-    return 2.0 * kPi * c * c + 2.0 * kPi * a * b / sinPhi * (E * sinPhi * sinPhi + F * cosPhi * cosPhi);
+    return 2.0 * kPi * c * c +
+           2.0 * kPi * a * b / sinPhi * (E * sinPhi * sinPhi + F * cosPhi * cosPhi);
 }
 
 }  // namespace
 
 double exactSurfaceArea(const AnalyticShape& shape) {
-    return std::visit(
-        Overloaded{
-            [](const BoxShape& b) {
-                const glm::dvec3 s = b.max - b.min;
-                return 2.0 * (s.x * s.y + s.y * s.z + s.z * s.x);
-            },
-            [](const SphereShape& s) { return 4.0 * kPi * s.radius * s.radius; },
-            [](const CylinderShape& c) {
-                return 2.0 * kPi * c.radius * c.radius + 2.0 * kPi * c.radius * 2.0 * c.halfHeight;
-            },
-            [](const EllipsoidShape& e) { return ellipsoidArea(e.semiAxes); },
-        },
-        shape);
+    return std::visit(Overloaded{
+                          [](const BoxShape& b) {
+                              const glm::dvec3 s = b.max - b.min;
+                              return 2.0 * (s.x * s.y + s.y * s.z + s.z * s.x);
+                          },
+                          [](const SphereShape& s) { return 4.0 * kPi * s.radius * s.radius; },
+                          [](const CylinderShape& c) {
+                              return 2.0 * kPi * c.radius * c.radius +
+                                     2.0 * kPi * c.radius * 2.0 * c.halfHeight;
+                          },
+                          [](const EllipsoidShape& e) { return ellipsoidArea(e.semiAxes); },
+                      },
+                      shape);
 }
 
 BoxShape boundingBox(const AnalyticShape& shape) {
-    return std::visit(
-        Overloaded{
-            [](const BoxShape& b) { return b; },
-            [](const SphereShape& s) {
-                return BoxShape{s.center - s.radius, s.center + s.radius};
-            },
-            [](const CylinderShape& c) {
-                const glm::dvec3 h{c.radius, c.radius, c.halfHeight};
-                return BoxShape{c.center - h, c.center + h};
-            },
-            [](const EllipsoidShape& e) {
-                return BoxShape{e.center - e.semiAxes, e.center + e.semiAxes};
-            },
-        },
-        shape);
+    return std::visit(Overloaded{
+                          [](const BoxShape& b) { return b; },
+                          [](const SphereShape& s) {
+                              return BoxShape{s.center - s.radius, s.center + s.radius};
+                          },
+                          [](const CylinderShape& c) {
+                              const glm::dvec3 h{c.radius, c.radius, c.halfHeight};
+                              return BoxShape{c.center - h, c.center + h};
+                          },
+                          [](const EllipsoidShape& e) {
+                              return BoxShape{e.center - e.semiAxes, e.center + e.semiAxes};
+                          },
+                      },
+                      shape);
 }
 
 LineInterval intersectLine(const AnalyticShape& shape, const glm::dvec3& origin,
@@ -270,8 +269,8 @@ LineInterval intersectLine(const AnalyticShape& shape, const glm::dvec3& origin,
                 if (glm::dot(d, d) == 0.0) {
                     if (glm::dot(o, o) > 1.0) return out;  // parallel to the axis, outside
                 } else {
-                    const LineInterval side =
-                        quadraticInterval(glm::dot(d, d), 2.0 * glm::dot(o, d), glm::dot(o, o) - 1.0);
+                    const LineInterval side = quadraticInterval(
+                        glm::dot(d, d), 2.0 * glm::dot(o, d), glm::dot(o, o) - 1.0);
                     if (!side.hit) return out;
                     t0 = side.tEnter;
                     t1 = side.tExit;

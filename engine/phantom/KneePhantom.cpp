@@ -23,7 +23,9 @@ double smoothMin(double a, double b, double k) {
     return std::min(a, b) - h * h * k * 0.25;
 }
 
-double smoothSubtract(double a, double b, double k) { return -smoothMin(-a, b, k); }
+double smoothSubtract(double a, double b, double k) {
+    return -smoothMin(-a, b, k);
+}
 
 double capsule(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b, double r) {
     const glm::dvec3 pa = p - a, ba = b - a;
@@ -116,8 +118,8 @@ double tibiaDistance(const glm::dvec3& p) {
     const double plateau2 = ellipse({p.x - 1.0, p.y - 4.0}, {38.0, 26.0});
     constexpr double kPlateauBottom = -24.0;
     const double midZ = 0.5 * (kTibialPlateauTopZ + kPlateauBottom);
-    double d = roundedExtrusion(plateau2, p.z - midZ, 0.5 * (kTibialPlateauTopZ - kPlateauBottom),
-                                6.0);
+    double d =
+        roundedExtrusion(plateau2, p.z - midZ, 0.5 * (kTibialPlateauTopZ - kPlateauBottom), 6.0);
     d = smoothMin(d, ellipsoid(p - glm::dvec3(0.0, 4.0, -3.0), {5.5, 10.0, 6.0}), 3.0);
     d = smoothMin(d, ellipsoid(p - glm::dvec3(1.0, 2.0, -30.0), {27.0, 20.0, 22.0}), 12.0);
     d = smoothMin(d, capsule(p, kTibiaShaftStart, kTibiaShaftEnd, kTibiaShaftRadius), 22.0);
@@ -142,8 +144,8 @@ LimbProfile limbProfile(double zRel) {
     if (zRel >= 0.0) {
         const double t = smoothstep(30.0, 150.0, zRel);
         // The thigh follows the femur's valgus tilt.
-        const double slope = (kFemurShaftEnd.x - kFemurShaftStart.x) /
-                             (kFemurShaftEnd.z - kFemurShaftStart.z);
+        const double slope =
+            (kFemurShaftEnd.x - kFemurShaftStart.x) / (kFemurShaftEnd.z - kFemurShaftStart.z);
         const double shaftZ = kFemurShaftStart.z - kFlexionAxisPoint.z;
         return {{slope * std::max(0.0, zRel - shaftZ), 4.0 + 2.0 * t},
                 {56.0 + 16.0 * t, 63.0 + 9.0 * t},
@@ -213,8 +215,8 @@ namespace {
 
 // Rigid placement of the moving parts for one flexion angle.
 struct KneePose {
-    double cosT, sinT;    // tibia rotation
-    double cosP, sinP;    // patella rotation
+    double cosT, sinT;  // tibia rotation
+    double cosP, sinP;  // patella rotation
     glm::dvec3 patellaCenter;
     double cosHalf, sinHalf;  // bisecting plane between thigh and shank
 
@@ -231,8 +233,7 @@ struct KneePose {
         constexpr double kPatellaSinkMm = 18.0;
         const glm::dvec3 rest = kPatellaCenter - kFlexionAxisPoint;
         const double radius = glm::length(rest) - kPatellaSinkMm * std::sin(std::max(alpha, 0.0));
-        patellaCenter =
-            kFlexionAxisPoint + rotateX(glm::normalize(rest), cosP, sinP) * radius;
+        patellaCenter = kFlexionAxisPoint + rotateX(glm::normalize(rest), cosP, sinP) * radius;
     }
     glm::dvec3 tibiaToModel(const glm::dvec3& t) const {
         return kFlexionAxisPoint + rotateX(t - kFlexionAxisPoint, cosT, sinT);
@@ -255,9 +256,14 @@ glm::dvec3 kneeModelToWorld(const KneePhantomParams& params, KneeSegment segment
     const KneePose pose(params.flexionDeg);
     glm::dvec3 m = modelPoint;
     switch (segment) {
-        case KneeSegment::Femur: break;
-        case KneeSegment::Tibia: m = pose.tibiaToModel(modelPoint); break;
-        case KneeSegment::Patella: m = pose.patellaToModel(modelPoint - kPatellaCenter); break;
+        case KneeSegment::Femur:
+            break;
+        case KneeSegment::Tibia:
+            m = pose.tibiaToModel(modelPoint);
+            break;
+        case KneeSegment::Patella:
+            m = pose.patellaToModel(modelPoint - kPatellaCenter);
+            break;
     }
     if (params.leftKnee) m.x = -m.x;
     return m;
@@ -297,8 +303,7 @@ Volume makeKneePhantom(const KneePhantomParams& params) {
                     const bool thighSide = -rel.y * pose.sinHalf + rel.z * pose.cosHalf >= 0.0;
                     const glm::dvec3 q = thighSide ? m : t;
                     const LimbProfile limb = limbProfile(q.z - kFlexionAxisPoint.z);
-                    const double skin =
-                        ellipse(glm::dvec2(q.x, q.y) - limb.center, limb.semiAxes);
+                    const double skin = ellipse(glm::dvec2(q.x, q.y) - limb.center, limb.semiAxes);
                     const double inSkin = cover(skin);
                     if (inSkin <= 0.0) continue;  // air
                     const double inMuscle = cover(skin + limb.fatMm);

@@ -38,12 +38,12 @@ struct KneeTissueHU {
 };
 
 struct KneePhantomParams {
-    glm::ivec3 dims{128, 128, 141};        // as the 2011 knee CT
+    glm::ivec3 dims{128, 128, 141};           // as the 2011 knee CT
     glm::dvec3 fieldMm{220.0, 220.0, 281.0};  // field of view; spacing = fieldMm / dims
-    double flexionDeg = 0.0;               // 0 = straight leg; kKneeMin..MaxFlexionDeg
-    bool leftKnee = false;                 // mirror x: fibula on the patient's left
+    double flexionDeg = 0.0;                  // 0 = straight leg; kKneeMin..MaxFlexionDeg
+    bool leftKnee = false;                    // mirror x: fibula on the patient's left
     KneeTissueHU hu;
-    int threads = 0;                       // 0 = all cores; the result does not depend on it
+    int threads = 0;  // 0 = all cores; the result does not depend on it
 };
 
 inline constexpr double kKneeMinFlexionDeg = -10.0;  // slight hyperextension

@@ -38,7 +38,8 @@ std::vector<std::string> split(const std::string& s, char sep) {
     std::string::size_type start = 0;
     while (true) {
         const auto pos = s.find(sep, start);
-        parts.push_back(s.substr(start, pos == std::string::npos ? std::string::npos : pos - start));
+        parts.push_back(
+            s.substr(start, pos == std::string::npos ? std::string::npos : pos - start));
         if (pos == std::string::npos) break;
         start = pos + 1;
     }
@@ -47,7 +48,7 @@ std::vector<std::string> split(const std::string& s, char sep) {
 
 // Options of one phantom: each key may be read once; leftovers are unknown options.
 class Options {
-public:
+  public:
     Options(const std::string& phantom, const std::vector<std::string>& tokens,
             std::string validKeys)
         : phantom_(phantom), validKeys_(std::move(validKeys)) {
@@ -64,8 +65,7 @@ public:
             bool known = false;
             for (const std::string& valid : split(validKeys_, ','))
                 if (trim(valid) == key) known = true;
-            if (!known)
-                fail("unknown option '" + key + "' (valid options: " + validKeys_ + ")");
+            if (!known) fail("unknown option '" + key + "' (valid options: " + validKeys_ + ")");
         }
     }
 
@@ -84,8 +84,7 @@ public:
         if (parts.size() != 3)
             fail("option " + key + "='" + text + "' must be three numbers like 1x2x3" +
                  (allowScalar ? " or one number" : ""));
-        return {parseNumber(key, parts[0]), parseNumber(key, parts[1]),
-                parseNumber(key, parts[2])};
+        return {parseNumber(key, parts[0]), parseNumber(key, parts[1]), parseNumber(key, parts[2])};
     }
 
     glm::ivec3 size(glm::ivec3 fallback) const {
@@ -110,7 +109,7 @@ public:
         throw Error("phantom '" + phantom_ + "': " + why);
     }
 
-private:
+  private:
     double parseNumber(const std::string& key, const std::string& text) const {
         const std::string t = trim(text);
         double v = 0.0;
@@ -166,7 +165,8 @@ Volume makeAnalytic(const std::string& name, const Options& o) {
     }
     validateShape(shape, "phantom '" + name + "'");
     const double ss = o.number("supersample", 4.0);
-    if (ss != std::floor(ss) || ss < 1 || ss > 64) o.fail("supersample must be a whole number 1..64");
+    if (ss != std::floor(ss) || ss < 1 || ss > 64)
+        o.fail("supersample must be a whole number 1..64");
     Volume v = voxelize(shape, grid, static_cast<float>(o.number("inside", 1.0)),
                         static_cast<float>(o.number("outside", 0.0)), static_cast<int>(ss));
     std::ostringstream d;
@@ -184,7 +184,8 @@ Volume makePhantom(const std::string& nameAndOptions) {
     const std::string name = trim(tokens.front());
     const std::vector<std::string> options(tokens.begin() + 1, tokens.end());
     const std::string common = "size, spacing, inside, outside, supersample";
-    if (name == "knee") return makeKnee(Options(name, options, "flexion, size, field, spacing, side"));
+    if (name == "knee")
+        return makeKnee(Options(name, options, "flexion, size, field, spacing, side"));
     if (name == "sphere") return makeAnalytic(name, Options(name, options, "radius, " + common));
     if (name == "box") return makeAnalytic(name, Options(name, options, "extent, " + common));
     if (name == "cylinder")

@@ -35,7 +35,8 @@ void runBeesAlgorithm(SearchProblem& problem, const BeesSettings& s) {
     {
         const std::vector<Point> pts = scoutBatch(s.scouts, true);
         const std::vector<double> c = problem.evaluate(pts);
-        for (std::size_t i = 0; i < pts.size(); ++i) sites.push_back({pts[i], c[i], s.initialPatch});
+        for (std::size_t i = 0; i < pts.size(); ++i)
+            sites.push_back({pts[i], c[i], s.initialPatch});
     }
     while (!problem.done()) {
         // Stable sort: equal costs keep their order, so the run stays deterministic.

@@ -24,8 +24,8 @@ void symmetricEigen(int n, const std::vector<double>& matrix, std::vector<double
                 const double apq = at(a, p, q);
                 if (std::abs(apq) < 1e-300) continue;
                 const double theta = (at(a, q, q) - at(a, p, p)) / (2.0 * apq);
-                const double t = (theta >= 0 ? 1.0 : -1.0) /
-                                 (std::abs(theta) + std::sqrt(theta * theta + 1.0));
+                const double t =
+                    (theta >= 0 ? 1.0 : -1.0) / (std::abs(theta) + std::sqrt(theta * theta + 1.0));
                 const double c = 1.0 / std::sqrt(t * t + 1.0), s = t * c;
                 for (int k = 0; k < n; ++k) {  // A <- A J
                     const double akp = at(a, k, p), akq = at(a, k, q);
@@ -66,8 +66,8 @@ void runCmaEs(SearchProblem& problem, const CmaEsSettings& settings) {
     const double cc = (4.0 + mueff / n) / (n + 4.0 + 2.0 * mueff / n);
     const double cs = (mueff + 2.0) / (n + mueff + 5.0);
     const double c1 = 2.0 / ((n + 1.3) * (n + 1.3) + mueff);
-    const double cmu = std::min(1.0 - c1, 2.0 * (mueff - 2.0 + 1.0 / mueff) /
-                                              ((n + 2.0) * (n + 2.0) + mueff));
+    const double cmu =
+        std::min(1.0 - c1, 2.0 * (mueff - 2.0 + 1.0 / mueff) / ((n + 2.0) * (n + 2.0) + mueff));
     const double damps = 1.0 + 2.0 * std::max(0.0, std::sqrt((mueff - 1.0) / (n + 1.0)) - 1.0) + cs;
     const double chiN = std::sqrt(double(n)) * (1.0 - 1.0 / (4.0 * n) + 1.0 / (21.0 * n * n));
 
@@ -109,7 +109,8 @@ void runCmaEs(SearchProblem& problem, const CmaEsSettings& settings) {
         ++generation;
         std::vector<int> order(lambda);
         std::iota(order.begin(), order.end(), 0);
-        std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return cost[a] < cost[b]; });
+        std::stable_sort(order.begin(), order.end(),
+                         [&](int a, int b) { return cost[a] < cost[b]; });
 
         const std::vector<double> oldMean = mean;
         std::fill(mean.begin(), mean.end(), 0.0);
@@ -143,7 +144,8 @@ void runCmaEs(SearchProblem& problem, const CmaEsSettings& settings) {
                     rankMu += w[k] * (yk[i] - oldMean[i]) * (yk[j] - oldMean[j]);
                 }
                 rankMu /= sigma * sigma;
-                const double v = (1.0 - c1 - cmu + dh) * C[i * n + j] + c1 * pc[i] * pc[j] + cmu * rankMu;
+                const double v =
+                    (1.0 - c1 - cmu + dh) * C[i * n + j] + c1 * pc[i] * pc[j] + cmu * rankMu;
                 C[i * n + j] = C[j * n + i] = v;
             }
         sigma *= std::exp((cs / damps) * (psNorm / chiN - 1.0));

@@ -9,7 +9,9 @@
 
 namespace fm {
 
-std::vector<StartBin> standardStartBins() { return {{0, 2}, {2, 5}, {5, 10}, {10, 20}}; }
+std::vector<StartBin> standardStartBins() {
+    return {{0, 2}, {2, 5}, {5, 10}, {10, 20}};
+}
 
 Pose startPoseInBin(const Pose& truth, const PoseModel& model,
                     const std::vector<glm::dvec3>& targets, const StartBin& bin, Rng& rng) {
@@ -32,7 +34,9 @@ Pose startPoseInBin(const Pose& truth, const PoseModel& model,
             for (int i = 0; i < 6; ++i) p[i] = base[i] + t * dir[i];
             return Pose::fromArray(p);
         };
-        auto mtre = [&](double t) { return targetError(truthGeometry, model(poseAt(t)), targets).meanMm; };
+        auto mtre = [&](double t) {
+            return targetError(truthGeometry, model(poseAt(t)), targets).meanMm;
+        };
         // Bracket the goal, then bisect (mTRE grows with t along a line for these ranges).
         double lo = 0.0, hi = 1.0;
         while (mtre(hi) < goal && hi < 1e3) hi *= 2.0;
@@ -71,8 +75,8 @@ std::vector<EvaluationTrial> runEvaluation(
             starts[b].push_back(startPoseInBin(truth, model, targets, settings.bins[b], rng));
     const ProjectionGeometry truthGeometry = model(truth);
     std::vector<EvaluationTrial> trials;
-    const int total = static_cast<int>(settings.methods.size() * settings.bins.size()) *
-                      settings.startsPerBin;
+    const int total =
+        static_cast<int>(settings.methods.size() * settings.bins.size()) * settings.startsPerBin;
     for (SearchMethod method : settings.methods) {
         RegistrationSettings rs = settings.registration;
         rs.method = method;

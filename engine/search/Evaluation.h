@@ -71,12 +71,11 @@ struct EvaluationMethodSummary {
 
 // Runs every method from every start against a reference DRR rendered at `truth`. `onTrial`
 // (optional) is called after each registration. Deterministic for a seed and thread count.
-std::vector<EvaluationTrial> runEvaluation(const DrrVolumePtr& volume, const Image& reference,
-                                           const PoseModel& model, const Pose& truth,
-                                           const std::vector<glm::dvec3>& targets,
-                                           const EvaluationSettings& settings,
-                                           const std::function<void(const EvaluationTrial&, int done, int total)>& onTrial = {},
-                                           const std::atomic<bool>* stop = nullptr);
+std::vector<EvaluationTrial> runEvaluation(
+    const DrrVolumePtr& volume, const Image& reference, const PoseModel& model, const Pose& truth,
+    const std::vector<glm::dvec3>& targets, const EvaluationSettings& settings,
+    const std::function<void(const EvaluationTrial&, int done, int total)>& onTrial = {},
+    const std::atomic<bool>* stop = nullptr);
 
 std::vector<EvaluationBinSummary> summarizeBins(const std::vector<EvaluationTrial>& trials,
                                                 const EvaluationSettings& settings);

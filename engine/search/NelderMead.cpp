@@ -19,7 +19,8 @@ void simplexRun(SearchProblem& problem, const Point& start, double step) {
     for (int i = 0; i < n; ++i) {
         simplex[i + 1][i] += step * radius[i];
         // Step inwards if the outward vertex would sit on the bound (degenerate simplex).
-        if (simplex[i + 1][i] > problem.box().upper[i]) simplex[i + 1][i] = start[i] - step * radius[i];
+        if (simplex[i + 1][i] > problem.box().upper[i])
+            simplex[i + 1][i] = start[i] - step * radius[i];
         simplex[i + 1] = problem.clamp(simplex[i + 1]);
     }
     std::vector<double> f = problem.evaluate(simplex);
@@ -80,7 +81,8 @@ void simplexRun(SearchProblem& problem, const Point& start, double step) {
             index.push_back(k);
         }
         const std::vector<double> fs = problem.evaluate(shrunk);
-        for (std::size_t i = 0; i < index.size(); ++i) simplex[index[i]] = shrunk[i], f[index[i]] = fs[i];
+        for (std::size_t i = 0; i < index.size(); ++i)
+            simplex[index[i]] = shrunk[i], f[index[i]] = fs[i];
     }
 }
 

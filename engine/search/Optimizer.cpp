@@ -11,11 +11,16 @@ namespace fm {
 
 const char* toString(SearchMethod method) {
     switch (method) {
-        case SearchMethod::MonteCarlo: return "mc";
-        case SearchMethod::ParticleSwarm: return "pso";
-        case SearchMethod::Bees: return "bees";
-        case SearchMethod::CmaEs: return "cmaes";
-        case SearchMethod::NelderMead: return "nm";
+        case SearchMethod::MonteCarlo:
+            return "mc";
+        case SearchMethod::ParticleSwarm:
+            return "pso";
+        case SearchMethod::Bees:
+            return "bees";
+        case SearchMethod::CmaEs:
+            return "cmaes";
+        case SearchMethod::NelderMead:
+            return "nm";
     }
     return "?";
 }
@@ -36,11 +41,21 @@ std::vector<SearchMethod> globalSearchMethods() {
 
 OptimizerResult runOptimizer(SearchMethod method, SearchProblem& problem) {
     switch (method) {
-        case SearchMethod::MonteCarlo: runMonteCarlo(problem); break;
-        case SearchMethod::ParticleSwarm: runParticleSwarm(problem); break;
-        case SearchMethod::Bees: runBeesAlgorithm(problem); break;
-        case SearchMethod::CmaEs: runCmaEs(problem); break;
-        case SearchMethod::NelderMead: runNelderMead(problem); break;
+        case SearchMethod::MonteCarlo:
+            runMonteCarlo(problem);
+            break;
+        case SearchMethod::ParticleSwarm:
+            runParticleSwarm(problem);
+            break;
+        case SearchMethod::Bees:
+            runBeesAlgorithm(problem);
+            break;
+        case SearchMethod::CmaEs:
+            runCmaEs(problem);
+            break;
+        case SearchMethod::NelderMead:
+            runNelderMead(problem);
+            break;
     }
     return problem.result();
 }

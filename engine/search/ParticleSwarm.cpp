@@ -24,7 +24,8 @@ void runParticleSwarm(SearchProblem& problem, const ParticleSwarmSettings& s) {
         // Converged when every particle sits within tolerance*radius of the global best.
         double spread = 0.0;
         for (const Point& p : x)
-            for (int d = 0; d < n; ++d) spread = std::max(spread, std::abs(p[d] - global[d]) / radius[d]);
+            for (int d = 0; d < n; ++d)
+                spread = std::max(spread, std::abs(p[d] - global[d]) / radius[d]);
         if (spread < problem.tolerance()) break;
         for (int i = 0; i < s.particles; ++i)
             for (int d = 0; d < n; ++d) {

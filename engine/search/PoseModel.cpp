@@ -21,7 +21,9 @@ CameraFrame cameraFrame(const ProjectionGeometry& g) {
 }  // namespace
 
 PoseModel scenePoseModel(const SceneSetup& setup, const glm::dvec3& volumeCenter) {
-    return [setup, volumeCenter](const Pose& pose) { return sceneGeometry(pose, setup, volumeCenter); };
+    return [setup, volumeCenter](const Pose& pose) {
+        return sceneGeometry(pose, setup, volumeCenter);
+    };
 }
 
 PoseModel fixedGeometryPoseModel(const ProjectionGeometry& geometry, const SceneSetup& setup,
@@ -45,9 +47,11 @@ PoseModel fixedGeometryPoseModel(const ProjectionGeometry& geometry, const Scene
     };
 }
 
-ProjectionGeometry cropDetector(const ProjectionGeometry& g, int col0, int row0, int cols, int rows) {
+ProjectionGeometry cropDetector(const ProjectionGeometry& g, int col0, int row0, int cols,
+                                int rows) {
     const glm::ivec2 size = g.detector.size;
-    if (cols < 1 || rows < 1 || col0 < 0 || row0 < 0 || col0 + cols > size.x || row0 + rows > size.y)
+    if (cols < 1 || rows < 1 || col0 < 0 || row0 < 0 || col0 + cols > size.x ||
+        row0 + rows > size.y)
         throw Error("detector crop [" + std::to_string(col0) + "+" + std::to_string(cols) + ", " +
                     std::to_string(row0) + "+" + std::to_string(rows) + "] leaves the " +
                     std::to_string(size.x) + "x" + std::to_string(size.y) + " detector");

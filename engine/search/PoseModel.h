@@ -23,6 +23,7 @@ PoseModel fixedGeometryPoseModel(const ProjectionGeometry& geometry, const Scene
 // A sub-detector: the pixels [col0, col0+cols) x [row0, row0+rows) of `g`, as a geometry of its
 // own (origin moved to the first pixel). Rendering it gives exactly those pixels of the full
 // DRR. Throws fm::Error if the rectangle is empty or leaves the detector.
-ProjectionGeometry cropDetector(const ProjectionGeometry& g, int col0, int row0, int cols, int rows);
+ProjectionGeometry cropDetector(const ProjectionGeometry& g, int col0, int row0, int cols,
+                                int rows);
 
 }  // namespace fm

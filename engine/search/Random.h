@@ -9,7 +9,7 @@
 namespace fm {
 
 class Rng {
-public:
+  public:
     explicit Rng(std::uint64_t seed) : engine_(seed) {}
 
     // Uniform in [0, 1): the top 53 bits of one 64-bit draw.
@@ -23,7 +23,7 @@ public:
     // A sub-stream seed: lets parallel or nested users draw without sharing a generator.
     std::uint64_t split() { return engine_(); }
 
-private:
+  private:
     std::mt19937_64 engine_;
     bool hasSpare_ = false;
     double spare_ = 0.0;

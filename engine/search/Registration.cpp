@@ -21,7 +21,8 @@ Image cropImage(const Image& image, const PixelRect& r) {
     Image out(r.cols, r.rows);
     out.spacing = image.spacing;
     for (int row = 0; row < r.rows; ++row)
-        for (int col = 0; col < r.cols; ++col) out.at(col, row) = image.at(r.col0 + col, r.row0 + row);
+        for (int col = 0; col < r.cols; ++col)
+            out.at(col, row) = image.at(r.col0 + col, r.row0 + row);
     return out;
 }
 
@@ -67,8 +68,11 @@ Registration::Registration(DrrVolumePtr volume, const Image& reference, PoseMode
     if (settings_.globalEvaluations < 1 || settings_.polishEvaluations < 0)
         throw Error("registration: evaluation budgets must be positive");
     for (double r : settings_.searchRadius)
-        if (!(r > 0.0) || !std::isfinite(r)) throw Error("registration: search radius must be positive");
+        if (!(r > 0.0) || !std::isfinite(r))
+            throw Error("registration: search radius must be positive");
     if (!(settings_.boundsFactor >= 1.0)) throw Error("registration: bounds factor must be >= 1");
+    if (settings_.depthRounds < 0 || !(settings_.depthStepMm > 0.0))
+        throw Error("registration: depth rounds must be >= 0 and the depth step positive");
 
     const int coarsest = settings_.levelFactors.front();
     const int usableW = reference.width - reference.width % coarsest;
@@ -158,7 +162,8 @@ RegistrationResult Registration::run(const Pose& start, const RegistrationCallba
             parallelFor(
                 static_cast<int>(points.size()), settings_.threads,
                 [&](int begin, int end) {
-                    for (int i = begin; i < end; ++i) costs[i] = levelCost(toPose(points[i]), level, 1);
+                    for (int i = begin; i < end; ++i)
+                        costs[i] = levelCost(toPose(points[i]), level, 1);
                 },
                 4);
         };
@@ -170,6 +175,9 @@ RegistrationResult Registration::run(const Pose& start, const RegistrationCallba
             upper[d] = settings_.boundsFactor * settings_.searchRadius[d];
             current[d] = std::clamp(current[d], lower[d], upper[d]);
         }
+        const bool depthStage = std::string(stage) == "depth";
+        if (depthStage)
+            radius[2] = 2.0 * settings_.depthStepMm;  // the line search starts at radius / 2
         OptimizerOptions options;
         options.maxEvaluations = std::max(1, maxEvals);
         options.seed = seeds.split();
@@ -188,11 +196,12 @@ RegistrationResult Registration::run(const Pose& start, const RegistrationCallba
             r.bestCost = p.bestCost;
             r.bestPose = toPose(p.best);
             r.candidate = toPose(p.candidate);
-            r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+            r.seconds =
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
             progress(r);
         };
         SearchProblem problem(cost, current, radius, {lower, upper}, options);
-        if (std::string(stage) == "depth") {
+        if (depthStage) {
             AxisLineSearchSettings line;
             line.axis = 2;
             line.rounds = settings_.depthRounds;

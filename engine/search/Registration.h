@@ -52,22 +52,25 @@ struct RegistrationSettings {
     double tolerance = 0.01;
     // After each polish, parabola-fit line searches along depth (rounds of 5 points each):
     // single-view matching is weakest along depth and simplex methods stall there.
-    int depthRounds = 3;
+    // The first round spaces its points depthStepMm apart (reach +-2 steps, then 1/3 of that
+    // per round): wide enough to correct the ~1 mm depth errors coarse levels leave.
+    int depthRounds = 4;
+    double depthStepMm = 1.5;
     std::uint64_t seed = 1;
-    int threads = 0;              // 0 = all cores
-    int footprintDilation = 1;    // pixels added around the DRR footprint mask
-    int roiMargin = 4;            // pixels added around the reference footprint box
+    int threads = 0;            // 0 = all cores
+    int footprintDilation = 1;  // pixels added around the DRR footprint mask
+    int roiMargin = 4;          // pixels added around the reference footprint box
     DrrTrace trace = DrrTrace::Exact;
 };
 
 struct RegistrationProgress {
-    int level = 0;           // index into levelFactors
+    int level = 0;  // index into levelFactors
     int levelCount = 0;
     int factor = 1;          // detector downsampling of this level
     const char* stage = "";  // "global" or "polish"
     int evaluations = 0;     // total so far
     int evaluationBudget = 0;
-    double bestCost = 0.0;   // -similarity at this level (lower is better)
+    double bestCost = 0.0;  // -similarity at this level (lower is better)
     Pose bestPose;
     Pose candidate;
     double seconds = 0.0;
@@ -76,7 +79,7 @@ using RegistrationCallback = std::function<void(const RegistrationProgress&)>;
 
 struct RegistrationResult {
     Pose pose;
-    double similarity = 0.0;   // at the finest level
+    double similarity = 0.0;  // at the finest level
     int evaluations = 0;
     double seconds = 0.0;
     bool stopped = false;
@@ -84,7 +87,7 @@ struct RegistrationResult {
 };
 
 class Registration {
-public:
+  public:
     // Prepares the reference pyramid and footprint boxes. Throws fm::Error if the reference is
     // empty, its size differs from the model's detector, or the levels are invalid.
     Registration(DrrVolumePtr volume, const Image& reference, PoseModel model,
@@ -100,11 +103,11 @@ public:
     int levelCount() const { return static_cast<int>(levels_.size()); }
     int totalBudget() const;
 
-private:
+  private:
     struct Level {
         int factor = 1;
-        PixelRect roi;               // at this level's pixel size
-        PreparedReference reference; // the ROI of the reference pyramid level
+        PixelRect roi;                // at this level's pixel size
+        PreparedReference reference;  // the ROI of the reference pyramid level
     };
     Image renderLevel(const Pose& pose, const Level& level, int threads) const;
     double levelCost(const Pose& pose, const Level& level, int threads) const;

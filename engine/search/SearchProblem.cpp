@@ -33,7 +33,8 @@ SearchProblem::SearchProblem(BatchCost cost, Point start, Point radius, SearchBo
         if (!(box_.lower[i] <= box_.upper[i]))
             throw Error("search: lower bound above upper bound for parameter " + std::to_string(i));
         if (!(start_[i] >= box_.lower[i] && start_[i] <= box_.upper[i]))
-            throw Error("search: start of parameter " + std::to_string(i) + " is outside the bounds");
+            throw Error("search: start of parameter " + std::to_string(i) +
+                        " is outside the bounds");
     }
     if (options_.maxEvaluations < 1)
         throw Error("search: the evaluation budget must be at least 1, got " +
@@ -42,7 +43,8 @@ SearchProblem::SearchProblem(BatchCost cost, Point start, Point radius, SearchBo
 }
 
 Point SearchProblem::clamp(Point p) const {
-    for (std::size_t i = 0; i < p.size(); ++i) p[i] = std::clamp(p[i], box_.lower[i], box_.upper[i]);
+    for (std::size_t i = 0; i < p.size(); ++i)
+        p[i] = std::clamp(p[i], box_.lower[i], box_.upper[i]);
     return p;
 }
 
@@ -74,7 +76,8 @@ std::vector<double> SearchProblem::evaluate(const std::vector<Point>& points) {
     cost_(batch, batchCosts);
     for (std::size_t i = 0; i < allowed; ++i) {
         // NaN would poison every comparison: treat it as the worst possible cost.
-        costs[i] = std::isnan(batchCosts[i]) ? std::numeric_limits<double>::infinity() : batchCosts[i];
+        costs[i] =
+            std::isnan(batchCosts[i]) ? std::numeric_limits<double>::infinity() : batchCosts[i];
         if (costs[i] < bestCost_) {
             bestCost_ = costs[i];
             best_ = batch[i];

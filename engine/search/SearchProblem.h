@@ -27,11 +27,11 @@ struct SearchBox {
 };
 
 struct OptimizerProgress {
-    int iteration = 0;     // batches (generations, sweeps) so far
-    int evaluations = 0;   // cost evaluations so far
+    int iteration = 0;    // batches (generations, sweeps) so far
+    int evaluations = 0;  // cost evaluations so far
     double bestCost = std::numeric_limits<double>::infinity();
-    Point best;            // best point so far
-    Point candidate;       // the last point evaluated
+    Point best;       // best point so far
+    Point candidate;  // the last point evaluated
 };
 
 struct OptimizerOptions {
@@ -53,7 +53,7 @@ struct OptimizerResult {
 };
 
 class SearchProblem {
-public:
+  public:
     // Throws fm::Error if sizes disagree, a radius is not positive, bounds are inverted, the
     // start lies outside the bounds or the budget is not positive.
     SearchProblem(BatchCost cost, Point start, Point radius, SearchBox box,
@@ -82,7 +82,7 @@ public:
 
     OptimizerResult result() const;
 
-private:
+  private:
     BatchCost cost_;
     Point start_, radius_;
     SearchBox box_;

@@ -33,8 +33,10 @@ double gradientDifference(const GradientImages& ref, const GradientImages& drr,
     double rd = 0.0, dd = 0.0;
     for (std::size_t i = 0; i < size; ++i) {
         if (!interior.inside[i]) continue;
-        rd += double(ref.gx.pixels[i]) * drr.gx.pixels[i] + double(ref.gy.pixels[i]) * drr.gy.pixels[i];
-        dd += double(drr.gx.pixels[i]) * drr.gx.pixels[i] + double(drr.gy.pixels[i]) * drr.gy.pixels[i];
+        rd += double(ref.gx.pixels[i]) * drr.gx.pixels[i] +
+              double(ref.gy.pixels[i]) * drr.gy.pixels[i];
+        dd += double(drr.gx.pixels[i]) * drr.gx.pixels[i] +
+              double(drr.gy.pixels[i]) * drr.gy.pixels[i];
     }
     const double s = dd > 0.0 ? rd / dd : 0.0;
     double sum = 0.0;

@@ -18,8 +18,8 @@ double gradientNcc(const GradientImages& a, const GradientImages& b, const Mask&
 
 double gradientNcc(const Image& a, const Image& b, const Mask* mask) {
     if (a.width != b.width || a.height != b.height)
-        throw Error("gradient NCC needs images of one size, got " + std::to_string(a.width) +
-                    "x" + std::to_string(a.height) + " and " + std::to_string(b.width) + "x" +
+        throw Error("gradient NCC needs images of one size, got " + std::to_string(a.width) + "x" +
+                    std::to_string(a.height) + " and " + std::to_string(b.width) + "x" +
                     std::to_string(b.height));
     if (mask && (mask->width != a.width || mask->height != a.height))
         throw Error("gradient NCC mask size differs from the image size");

@@ -9,9 +9,12 @@ namespace fm {
 
 const char* toString(SimilarityMeasure measure) {
     switch (measure) {
-        case SimilarityMeasure::Ncc: return "ncc";
-        case SimilarityMeasure::GradientNcc: return "gncc";
-        case SimilarityMeasure::GradientDifference: return "gd";
+        case SimilarityMeasure::Ncc:
+            return "ncc";
+        case SimilarityMeasure::GradientNcc:
+            return "gncc";
+        case SimilarityMeasure::GradientDifference:
+            return "gd";
     }
     return "?";
 }
@@ -38,7 +41,8 @@ double similarity(SimilarityMeasure measure, const PreparedReference& reference,
     if (mask && (mask->width != ref.width || mask->height != ref.height))
         throw Error("similarity: the mask size differs from the reference size");
     switch (measure) {
-        case SimilarityMeasure::Ncc: return ncc(ref, moving, mask);
+        case SimilarityMeasure::Ncc:
+            return ncc(ref, moving, mask);
         case SimilarityMeasure::GradientNcc:
             return gradientNcc(reference.gradients, sobel(moving),
                                interiorMask(ref.width, ref.height, mask));

@@ -26,7 +26,7 @@ inline app::AppOptions testAppOptions() {
 }
 
 class HeadlessApp : public ::testing::Test {
-protected:
+  protected:
     void SetUp() override { start(testAppOptions()); }
     void start(const app::AppOptions& options, glm::ivec2 size = {960, 600}) {
         script.reset();

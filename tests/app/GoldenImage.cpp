@@ -16,8 +16,8 @@ ImageDifference compareImages(const render::RgbaImage& expected, const render::R
     for (std::size_t p = 0; p < pixels; ++p) {
         int worst = 0;
         for (int c = 0; c < 3; ++c)
-            worst = std::max(worst, std::abs(int(expected.pixels[4 * p + c]) -
-                                             int(actual.pixels[4 * p + c])));
+            worst = std::max(
+                worst, std::abs(int(expected.pixels[4 * p + c]) - int(actual.pixels[4 * p + c])));
         d.maxChannelDifference = std::max(d.maxChannelDifference, worst);
         const bool differs = worst > channelTolerance;
         d.differingPixels += differs;
@@ -31,8 +31,7 @@ ImageDifference compareImages(const render::RgbaImage& expected, const render::R
 }
 
 ::testing::AssertionResult matchesGolden(const render::RgbaImage& actual, const std::string& name) {
-    const std::filesystem::path golden =
-        std::filesystem::path(FM_GOLDEN_DIR) / (name + ".png");
+    const std::filesystem::path golden = std::filesystem::path(FM_GOLDEN_DIR) / (name + ".png");
     const char* update = std::getenv("FM_UPDATE_GOLDENS");
     if (update && std::string(update) == "1") {
         render::writePng(golden, actual);
@@ -51,8 +50,7 @@ ImageDifference compareImages(const render::RgbaImage& expected, const render::R
                << expected.width << "x" << expected.height << "; actual written to " << actualPath;
     }
     const ImageDifference d = compareImages(expected, actual, kGoldenChannelTolerance);
-    if (d.differingFraction <= kGoldenMaxDifferingFraction)
-        return ::testing::AssertionSuccess();
+    if (d.differingFraction <= kGoldenMaxDifferingFraction) return ::testing::AssertionSuccess();
     const auto diffPath = out / (name + ".diff.png");
     render::writePng(actualPath, actual);
     render::writePng(diffPath, d.diff);

@@ -13,7 +13,7 @@ namespace fm::test {
 // llvmpipe output is byte-identical run to run; the tolerance absorbs what may legitimately
 // move between machines: DRR summation order with another thread count changes a grey level by
 // one or two, and anti-aliased edges of lines and text may shift slightly with another Mesa.
-inline constexpr int kGoldenChannelTolerance = 12;      // of 255, per channel
+inline constexpr int kGoldenChannelTolerance = 12;            // of 255, per channel
 inline constexpr double kGoldenMaxDifferingFraction = 0.003;  // 0.3% of the pixels
 
 struct ImageDifference {

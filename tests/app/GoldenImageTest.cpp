@@ -9,7 +9,9 @@ namespace {
 
 using GoldenUi = HeadlessApp;
 
-TEST_F(GoldenUi, DefaultState) { EXPECT_TRUE(matchesGolden(app->capture(), "ui_default")); }
+TEST_F(GoldenUi, DefaultState) {
+    EXPECT_TRUE(matchesGolden(app->capture(), "ui_default"));
+}
 
 TEST_F(GoldenUi, AfterAScriptedSliderDrag) {
     const app::WidgetRect slider = script->widget("slider:azimuth");

@@ -64,7 +64,9 @@ double expectedGrabFraction(double t, const app::WidgetRect& rect) {
 }
 
 // The measured centroid is over whole pixels and the grab's rounded corners blend: 1.5 px.
-double grabTolerance(const app::WidgetRect& rect) { return 1.5 / (rect.max.x - rect.min.x); }
+double grabTolerance(const app::WidgetRect& rect) {
+    return 1.5 / (rect.max.x - rect.min.x);
+}
 
 using ScriptedUi = HeadlessApp;
 

@@ -75,7 +75,10 @@ TEST(DrrValues, WaterSlabGivesMuTimesChordAndBeerLambert) {
         g.detector.v = glm::cross(axis, g.detector.u);
         fm::DrrRenderOptions intensity;
         intensity.output = fm::DrrOutput::Intensity;
-        EXPECT_NEAR(fm::renderDrr(*prepared, g, intensity).at(0, 0), std::exp(-truth), 1e-6);
+        // exp of a value good to 1.2e-7 relative (integral ~1), stored as float (6e-8).
+        constexpr double kIntensityTol = 1e-6;
+        EXPECT_NEAR(fm::renderDrr(*prepared, g, intensity).at(0, 0), std::exp(-truth),
+                    kIntensityTol);
     }
 }
 
@@ -137,15 +140,16 @@ TEST(DrrAnalytic, OneBrightVoxelConservesMassAtEveryAngle) {
     // piecewise-smooth function errs by O((pixel/shadow)^2) ~ 1e-4; the perspective factor
     // varies across the voxel by O((voxel/r)^2) ~ 1e-5. Hence 1e-3.
     constexpr double kMassRelTol = 1e-3;
+    constexpr double kPixelMm = 0.04;
     const double sod = 300.0, sdd = 600.0, magnification = sdd / sod;
     for (auto [az, el] :
          {std::pair{0.0, 0.0}, {37.0, 12.0}, {90.0, 45.0}, {-150.0, -70.0}, {10.0, 90.0}}) {
         const fm::ProjectionGeometry g =
-            fm::test::orbitGeometry(voxel, az, el, sod, sdd - sod, 500, 0.04);
+            fm::test::orbitGeometry(voxel, az, el, sod, sdd - sod, 500, kPixelMm);
         const fm::Image image = fm::renderDrr(*prepared, g, {});
         double sum = 0.0;
         for (float p : image.pixels) sum += p;
-        const double film = sum * 0.04 * 0.04 / (magnification * magnification);
+        const double film = sum * kPixelMm * kPixelMm / (magnification * magnification);
         EXPECT_NEAR(film, mass, kMassRelTol * mass) << "az " << az << " el " << el;
         // The shadow lies inside the film (otherwise mass would be lost at the border).
         for (int i = 0; i < 500; ++i) {
@@ -171,7 +175,8 @@ TEST(DrrAnalytic, LpsAndRasStorageOfTheSameObjectGiveTheSameDrr) {
         for (int j = 0; j < dims.y; ++j)
             for (int i = 0; i < dims.x; ++i)
                 ras.at(dims.x - 1 - i, dims.y - 1 - j, k) = lps.at(i, j, k);
-    ASSERT_LT(glm::length(ras.center() - lps.center()), 1e-12);
+    constexpr double kSameCentreMm = 1e-12;  // a few ulps of ~10 mm coordinates
+    ASSERT_LT(glm::length(ras.center() - lps.center()), kSameCentreMm);
     const auto a = fm::prepareDrrVolume(lps, rawValues());
     const auto b = fm::prepareDrrVolume(ras, rawValues());
     for (double az : {0.0, 33.0, 120.0}) {
@@ -214,23 +219,33 @@ TEST(DrrAnalytic, ApproximateModesConvergeToTheExactDrr) {
     // Trilinear sampling converges to the integral of the trilinear interpolant, not to the
     // piecewise-constant one: the error levels off at the interpolation error (~1e-2 here),
     // but a finer step must never be worse, and the coarse step must be visibly worse.
+    // Bounds: the fine step may not be worse than the middle one beyond 5% (noise of the
+    // level-off); the levelled-off error is ~1e-2 RMS of the peak here, 3e-2 leaves margin.
+    constexpr double kLevelOffSlack = 1.05;
+    constexpr double kTrilinearRmsBound = 0.03;
     EXPECT_GT(errors[0], errors[2]);
-    EXPECT_LE(errors[2], errors[1] * 1.05);
-    EXPECT_LT(errors[2], 0.03);
+    EXPECT_LE(errors[2], errors[1] * kLevelOffSlack);
+    EXPECT_LT(errors[2], kTrilinearRmsBound);
     // Downsampled volume, traced exactly: error grows with the factor but stays moderate.
     fm::DrrValueOptions coarse = rawValues();
     coarse.downsample = 2;
     const fm::Image down = fm::renderDrr(*fm::prepareDrrVolume(v, coarse), g, {});
     const double downError = rmsError(down);
+    // Halving the resolution of a 1.5 mm partial-volume ellipsoid blurs its rim: a few
+    // percent of the peak RMS at most.
+    constexpr double kDownsampleRmsBound = 0.05;
     EXPECT_GT(downError, 0.0);
-    EXPECT_LT(downError, 0.05);
+    EXPECT_LT(downError, kDownsampleRmsBound);
     // Downsampling by block means keeps the total mass: the summed film signal stays within 1%.
     double sumExact = 0, sumDown = 0;
     for (std::size_t i = 0; i < exact.pixels.size(); ++i) {
         sumExact += exact.pixels[i];
         sumDown += down.pixels[i];
     }
-    EXPECT_NEAR(sumDown, sumExact, 0.01 * sumExact);
+    // Block means keep the mass exactly except where a partial block sticks out of the grid
+    // (its mean is spread over a larger box) and film pixels sample the blur: 1% covers it.
+    constexpr double kDownsampleMassRelTol = 0.01;
+    EXPECT_NEAR(sumDown, sumExact, kDownsampleMassRelTol * sumExact);
 }
 
 TEST(DrrAnalytic, FastImageMatchesTheReferenceRendererOnAnObliqueCt) {
@@ -256,7 +271,9 @@ TEST(DrrAnalytic, FastImageMatchesTheReferenceRendererOnAnObliqueCt) {
             const fm::Image fast = fm::renderDrr(*prepared, g, ro);
             const fm::Image ref = fm::renderDrrReference(v, o, g, output);
             // float mu storage (1.2e-7) plus float pixels (3e-7).
-            EXPECT_LE(fm::test::maxAbsDifference(fast, ref), 5e-7 * fm::test::maxAbs(ref));
+            constexpr double kFastVsReferenceRelTol = 5e-7;
+            EXPECT_LE(fm::test::maxAbsDifference(fast, ref),
+                      kFastVsReferenceRelTol * fm::test::maxAbs(ref));
             EXPECT_GT(fm::test::maxAbs(ref), 0.2);
         }
     }

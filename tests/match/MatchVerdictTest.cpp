@@ -24,8 +24,7 @@ TEST(MatchVerdict, SamePoseAndAlikeImagesMatch) {
 
 TEST(MatchVerdict, WithinToleranceStillMatches) {
     // 1.9 mm / 1.9 deg off with 2 mm / 2 deg tolerances (the defaults).
-    const fm::MatchVerdict v =
-        fm::judgeMatch(kReference, pose(6.9, -4.9, 10, 31.9, 8.1, -5), 0.98);
+    const fm::MatchVerdict v = fm::judgeMatch(kReference, pose(6.9, -4.9, 10, 31.9, 8.1, -5), 0.98);
     EXPECT_TRUE(v.match);
 }
 

@@ -33,12 +33,13 @@ TEST(PoseError, WrapDegrees) {
 }
 
 TEST(PoseError, DifferenceWrapsAnglesButNotOffsets) {
-    const auto d = fm::poseDifference(pose(1, 2, 3, 179, 10, -80), pose(-199, 2.5, 3, -179, 20, 85));
+    const auto d =
+        fm::poseDifference(pose(1, 2, 3, 179, 10, -80), pose(-199, 2.5, 3, -179, 20, 85));
     constexpr double kTol = 1e-12;
     EXPECT_NEAR(d[0], -200.0, kTol);  // offsets are plain differences
     EXPECT_NEAR(d[1], 0.5, kTol);
     EXPECT_NEAR(d[2], 0.0, kTol);
-    EXPECT_NEAR(d[3], 2.0, kTol);     // -179 is 2 deg past 179, not 358 deg before it
+    EXPECT_NEAR(d[3], 2.0, kTol);  // -179 is 2 deg past 179, not 358 deg before it
     EXPECT_NEAR(d[4], 10.0, kTol);
     EXPECT_NEAR(d[5], 165.0, kTol);
     EXPECT_NEAR(fm::poseDifference(pose(0, 0, 0, -179, 0, 0), pose(0, 0, 0, 179, 0, 0))[3], -2.0,
@@ -62,7 +63,7 @@ TEST(PoseError, CameraFrameOfAHandMadeGeometry) {
 }
 
 class PoseErrorScene : public ::testing::Test {
-protected:
+  protected:
     fm::SceneSetup setup = fm::defaultSceneSetup();
     glm::dvec3 volumeCenter{10.0, -20.0, 30.0};
 };
@@ -77,7 +78,8 @@ TEST_F(PoseErrorScene, IdenticalPosesHaveNoError) {
 
 TEST_F(PoseErrorScene, PureOffsetGivesTheOffsetLength) {
     const std::vector<glm::dvec3> points{{0, 0, 0}, {50, -30, 80}, {-40, 20, -100}, {7, 7, 7}};
-    for (const auto& angles : {glm::dvec3(0, 0, 0), glm::dvec3(37, -20, 15), glm::dvec3(-170, 80, -60)}) {
+    for (const auto& angles :
+         {glm::dvec3(0, 0, 0), glm::dvec3(37, -20, 15), glm::dvec3(-170, 80, -60)}) {
         const fm::Pose a = pose(1, 2, 3, angles.x, angles.y, angles.z);
         const fm::Pose b = pose(1 + 3, 2 + 4, 3 + 12, angles.x, angles.y, angles.z);
         const auto e = fm::targetRegistrationError(a, b, setup, volumeCenter, points);

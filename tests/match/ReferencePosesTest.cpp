@@ -72,8 +72,8 @@ TEST(ReferencePoses, ShippedListFramesTheDefaultKnee) {
     for (const fm::ReferencePose& r : poses) {
         EXPECT_FALSE(r.label.empty()) << "line " << r.line;
         labels.insert(r.label);
-        const auto c =
-            fm::filmCoverage(fm::sceneGeometry(r.pose, fm::defaultSceneSetup(), knee.center()), bone);
+        const auto c = fm::filmCoverage(
+            fm::sceneGeometry(r.pose, fm::defaultSceneSetup(), knee.center()), bone);
         EXPECT_GE(c.boundingBoxFraction, accept.minBoxCoverage) << r.label;
         EXPECT_GE(c.pointsOnFilmFraction, accept.minPointsOnFilm) << r.label;
     }
@@ -146,7 +146,7 @@ TEST(FilmCoverage, BoundingRectangleAndPointsOnFilm) {
 }
 
 class RandomPoseTest : public ::testing::Test {
-protected:
+  protected:
     static void SetUpTestSuite() {
         knee_ = new fm::Volume(fm::makeKneePhantom());
         bone_ = new std::vector<glm::dvec3>(fm::boneTargetPoints(*knee_));
@@ -167,7 +167,8 @@ TEST_F(RandomPoseTest, DeterministicWithinLimitsAndFramed) {
     std::set<std::string> distinct;
     for (std::uint64_t seed = 0; seed < 20; ++seed) {
         const fm::Pose p = fm::randomPose(*bone_, knee_->center(), setup, seed, o);
-        EXPECT_EQ(fm::formatPose(p), fm::formatPose(fm::randomPose(*bone_, knee_->center(), setup, seed, o)));
+        EXPECT_EQ(fm::formatPose(p),
+                  fm::formatPose(fm::randomPose(*bone_, knee_->center(), setup, seed, o)));
         distinct.insert(fm::formatPose(p));
         EXPECT_NO_THROW(fm::validatePose(p));
         for (int a = 0; a < 3; ++a) EXPECT_LE(std::abs(p.offset[a]), o.maxOffsetMm);

@@ -19,7 +19,9 @@ using fm::mc::cubeCases;
 using fm::mc::edgeCorner;
 using fm::mc::edgeOnFace;
 
-bool inside(int caseIndex, int corner) { return ((caseIndex >> corner) & 1) != 0; }
+bool inside(int caseIndex, int corner) {
+    return ((caseIndex >> corner) & 1) != 0;
+}
 
 bool onCommonFace(int a, int b) {
     for (int f = 0; f < 6; ++f)
@@ -33,8 +35,7 @@ std::set<std::pair<int, int>> faceSegments(const CubeCase& c, int f) {
     for (int t = 0; t < c.triangleCount; ++t)
         for (int k = 0; k < 3; ++k) {
             const int a = c.triangles[t][k], b = c.triangles[t][(k + 1) % 3];
-            if (edgeOnFace(a, f) && edgeOnFace(b, f))
-                out.insert({a, b});
+            if (edgeOnFace(a, f) && edgeOnFace(b, f)) out.insert({a, b});
         }
     return out;
 }
@@ -96,7 +97,8 @@ TEST(CubeCaseTable, TrianglesCloseUpInsideTheCube) {
             const auto segs = faceSegments(c, f);
             int crossed = 0;
             for (int e = 0; e < 12; ++e)
-                if (edgeOnFace(e, f) && inside(ci, edgeCorner(e, 0)) != inside(ci, edgeCorner(e, 1)))
+                if (edgeOnFace(e, f) &&
+                    inside(ci, edgeCorner(e, 0)) != inside(ci, edgeCorner(e, 1)))
                     ++crossed;
             EXPECT_EQ(static_cast<int>(segs.size()) * 2, crossed) << "case " << ci << " face " << f;
         }

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <numbers>
 #include <random>
 
@@ -16,8 +17,8 @@
 
 namespace {
 
-using fm::Mesh;
 using fm::MarchingCubesOptions;
+using fm::Mesh;
 using fm::Volume;
 
 constexpr double kPi = std::numbers::pi;
@@ -39,7 +40,8 @@ Volume sampleField(glm::ivec3 dims, glm::dvec3 spacing, glm::dvec3 origin,
 }
 
 // A grid of spacing h covering the cube [-halfWidth, halfWidth]^3 (plus a margin of 2 voxels).
-Volume sampleCentered(double halfWidth, double h, const std::function<double(const glm::dvec3&)>& f) {
+Volume sampleCentered(double halfWidth, double h,
+                      const std::function<double(const glm::dvec3&)>& f) {
     const int n = static_cast<int>(std::ceil(2.0 * halfWidth / h)) + 5;
     const glm::dvec3 origin(-0.5 * (n - 1) * h);
     return sampleField(glm::ivec3(n), glm::dvec3(h), origin, f);
@@ -73,7 +75,9 @@ void expectWatertight(const fm::MeshCheckReport& r, const std::string& what) {
 // h^2 / (8R), and flat triangles (edges up to sqrt(3) h) sag by at most 3h^2 / (8R) between
 // vertices; volume then errs by about 3 * (sum) / R relative: 1.5 (h/R)^2. Area alike, with
 // a factor 2 margin for the facet-orientation (cosine) error MC surfaces carry.
-double curvedSurfaceTolerance(double h, double radius) { return 3.0 * (h / radius) * (h / radius); }
+double curvedSurfaceTolerance(double h, double radius) {
+    return 3.0 * (h / radius) * (h / radius);
+}
 
 TEST(MarchingCubes, SphereIsClosedGenusZeroWithVolumeAndAreaConvergingWithVoxelSize) {
     constexpr double kRadius = 10.0;
@@ -113,9 +117,9 @@ TEST(MarchingCubes, VerticesAndNormalsLieOnTheSphereInWorldMillimetres) {
     probe.spacing = spacing;
     probe.direction = direction;
     const glm::dvec3 origin = center - (probe.center() - probe.origin);
-    const Volume v = sampleField(dims, spacing, origin, [&](const glm::dvec3& p) {
-        return sphereDistance(p, center, kRadius);
-    }, direction);
+    const Volume v = sampleField(
+        dims, spacing, origin,
+        [&](const glm::dvec3& p) { return sphereDistance(p, center, kRadius); }, direction);
     const Mesh mesh = fm::marchingCubes(v, isoAt(0.0));
     ASSERT_GT(mesh.triangleCount(), 100u);
     const auto r = fm::checkMesh(mesh);
@@ -136,7 +140,8 @@ TEST(MarchingCubes, VerticesAndNormalsLieOnTheSphereInWorldMillimetres) {
         EXPECT_GT(glm::dot(radial, glm::dvec3(mesh.normals[i])), kNormalCosine);
     }
     const double exactVolume = 4.0 / 3.0 * kPi * std::pow(kRadius, 3);
-    EXPECT_LT(std::abs(r.volume - exactVolume) / exactVolume, curvedSurfaceTolerance(hMax, kRadius));
+    EXPECT_LT(std::abs(r.volume - exactVolume) / exactVolume,
+              curvedSurfaceTolerance(hMax, kRadius));
 }
 
 TEST(MarchingCubes, TorusHasEulerCharacteristicZero) {
@@ -156,7 +161,8 @@ TEST(MarchingCubes, TorusHasEulerCharacteristicZero) {
         // The tube radius is the smallest curvature radius.
         EXPECT_LT(std::abs(r.volume - exactVolume) / exactVolume, curvedSurfaceTolerance(h, kMinor))
             << what;
-        EXPECT_LT(std::abs(r.area - exactArea) / exactArea, curvedSurfaceTolerance(h, kMinor)) << what;
+        EXPECT_LT(std::abs(r.area - exactArea) / exactArea, curvedSurfaceTolerance(h, kMinor))
+            << what;
     }
 }
 
@@ -176,7 +182,8 @@ TEST(MarchingCubes, TwoTouchingSpheresStayManifold) {
         EXPECT_TRUE(r.components == 1 || r.components == 2) << what;
         EXPECT_EQ(r.eulerCharacteristic, 2 * static_cast<long>(r.components)) << what;
         const double twoSpheres = 2.0 * 4.0 / 3.0 * kPi * std::pow(kRadius, 3);
-        EXPECT_LT(std::abs(r.volume - twoSpheres) / twoSpheres, curvedSurfaceTolerance(1.0, kRadius))
+        EXPECT_LT(std::abs(r.volume - twoSpheres) / twoSpheres,
+                  curvedSurfaceTolerance(1.0, kRadius))
             << what;
     }
 }
@@ -196,7 +203,9 @@ TEST(MarchingCubes, ShapeCutByTheVolumeBorderIsClosedByThePadding) {
     expectWatertight(r, "cut sphere");
     EXPECT_EQ(r.eulerCharacteristic, 2);
     // Volume of the sphere below the plane z = a: pi (a + R)^2 (2R - a) / 3.
-    auto capVolume = [&](double a) { return kPi * std::pow(a + kRadius, 2) * (2 * kRadius - a) / 3.0; };
+    auto capVolume = [&](double a) {
+        return kPi * std::pow(a + kRadius, 2) * (2 * kRadius - a) / 3.0;
+    };
     const double tol = curvedSurfaceTolerance(kH, kRadius);
     EXPECT_GT(r.volume, capVolume(zLast) * (1.0 - tol));
     EXPECT_LT(r.volume, capVolume(zLast + kH) * (1.0 + tol));
@@ -368,6 +377,27 @@ TEST(MarchingCubes, CavityInsideASolidBlockFacesInward) {
     EXPECT_EQ(r.eulerCharacteristic, 4);
     const double cavity = 4.0 / 3.0 * kPi * std::pow(kRadius, 3);
     EXPECT_NEAR(outerOnly.volume - r.volume, cavity, cavity * curvedSurfaceTolerance(kH, kRadius));
+}
+
+TEST(MarchingCubes, NonFiniteValuesGiveFiniteWatertightMeshes) {
+    // NaN counts as outside (it is not >= iso); infinities are extreme values. Neither may
+    // put a NaN position or normal into the mesh.
+    Volume v = sampleCentered(
+        6.0, 1.0, [](const glm::dvec3& p) { return sphereDistance(p, glm::dvec3(0.0), 6.0); });
+    const float specials[3] = {std::numeric_limits<float>::quiet_NaN(),
+                               std::numeric_limits<float>::infinity(),
+                               -std::numeric_limits<float>::infinity()};
+    for (std::size_t i = 0; i < v.values.size(); i += 37) v.values[i] = specials[i % 3];
+    const Mesh mesh = fm::marchingCubes(v, isoAt(0.0));
+    ASSERT_GT(mesh.triangleCount(), 0u);
+    for (std::size_t i = 0; i < mesh.vertexCount(); ++i) {
+        for (int a = 0; a < 3; ++a) {
+            ASSERT_TRUE(std::isfinite(mesh.positions[i][a])) << i;
+            ASSERT_TRUE(std::isfinite(mesh.normals[i][a])) << i;
+        }
+    }
+    const auto r = fm::checkMesh(mesh);
+    EXPECT_TRUE(r.closed && r.manifold && r.isPolygonMesh) << r.summary();
 }
 
 TEST(MarchingCubes, BadOptionsThrowErrorsNamingTheProblem) {

@@ -92,7 +92,10 @@ TEST(MeshWriter, ObjListsVerticesNormalsAndOneBasedFaces) {
     while (std::getline(in, line)) {
         if (line.rfind("v ", 0) == 0) ++v;
         if (line.rfind("vn ", 0) == 0) ++vn;
-        if (line.rfind("f ", 0) == 0) { ++f; lastFace = line; }
+        if (line.rfind("f ", 0) == 0) {
+            ++f;
+            lastFace = line;
+        }
     }
     EXPECT_EQ(v, 4);
     EXPECT_EQ(vn, 4);

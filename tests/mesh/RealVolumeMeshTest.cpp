@@ -100,9 +100,9 @@ TEST(RealVolumeMesh, TotalSegExampleCtAtBoneLevel) {
     expectWatertight(r, "example_ct");
     // Spine, pelvis and both femurs are separate bones at 3 mm: several large components,
     // plus many small ones (trabecular islands, vessels calcifications, metal streaks).
-    const std::size_t big = static_cast<std::size_t>(std::count_if(
-        r.componentSizes.begin(), r.componentSizes.end(),
-        [&](std::size_t n) { return n > r.mesh.triangleCount() / 20; }));
+    const std::size_t big = static_cast<std::size_t>(
+        std::count_if(r.componentSizes.begin(), r.componentSizes.end(),
+                      [&](std::size_t n) { return n > r.mesh.triangleCount() / 20; }));
     EXPECT_GE(big, 3u);
     expectInsideGrid(r.mesh, v, glm::ivec3(0), v.dims - 1, "example_ct");
 }

@@ -22,7 +22,9 @@ constexpr double kPi = std::numbers::pi;
 constexpr double kExactRel = 1e-12;
 constexpr double kExactMm = 1e-9;
 
-double relErr(double got, double want) { return std::abs(got - want) / std::abs(want); }
+double relErr(double got, double want) {
+    return std::abs(got - want) / std::abs(want);
+}
 
 // Independent check of the ellipsoid area: midpoint rule on the parametric surface
 // x = a sin(t) cos(p), y = b sin(t) sin(p), z = c cos(t). The integrand is smooth, and
@@ -50,8 +52,7 @@ TEST(AnalyticObjects, VolumesMatchClosedForms) {
     EXPECT_LT(relErr(fm::exactVolume(SphereShape{{1, 2, 3}, 10.0}), 4000.0 * kPi / 3.0), kExactRel);
     EXPECT_LT(relErr(fm::exactVolume(CylinderShape{{0, 0, 0}, 5.0, 10.0}), kPi * 25.0 * 20.0),
               kExactRel);
-    EXPECT_LT(relErr(fm::exactVolume(EllipsoidShape{{0, 0, 0}, {3, 4, 5}}), 80.0 * kPi),
-              kExactRel);
+    EXPECT_LT(relErr(fm::exactVolume(EllipsoidShape{{0, 0, 0}, {3, 4, 5}}), 80.0 * kPi), kExactRel);
 }
 
 TEST(AnalyticObjects, AreasOfBoxSphereCylinder) {
@@ -82,8 +83,8 @@ TEST(AnalyticObjects, EllipsoidAreaMatchesSphereAndSpheroidClosedForms) {
 }
 
 TEST(AnalyticObjects, TriaxialEllipsoidAreaMatchesNumericIntegral) {
-    for (const glm::dvec3 axes : {glm::dvec3(25, 18, 12), glm::dvec3(3, 10, 7),
-                                  glm::dvec3(20, 20.5, 2)}) {
+    for (const glm::dvec3 axes :
+         {glm::dvec3(25, 18, 12), glm::dvec3(3, 10, 7), glm::dvec3(20, 20.5, 2)}) {
         const double want = numericEllipsoidArea(axes.x, axes.y, axes.z);
         EXPECT_LT(relErr(fm::exactSurfaceArea(EllipsoidShape{{1, 2, 3}, axes}), want),
                   kNumericAreaRel)
@@ -160,8 +161,8 @@ TEST(AnalyticObjects, CylinderChords) {
     EXPECT_NEAR(fm::chordLength(c, c.center, {1, 0, 1}, -1e9, 1e9), 10.0 * std::sqrt(2.0),
                 kExactMm);
     // Steep: direction (1, 0, 4) leaves through the caps at |z| = 10, |x| = 2.5 < 5.
-    EXPECT_NEAR(fm::chordLength(c, c.center, {1, 0, 4}, -1e9, 1e9), 2.0 * std::sqrt(2.5 * 2.5 + 100),
-                kExactMm);
+    EXPECT_NEAR(fm::chordLength(c, c.center, {1, 0, 4}, -1e9, 1e9),
+                2.0 * std::sqrt(2.5 * 2.5 + 100), kExactMm);
 }
 
 TEST(AnalyticObjects, EllipsoidChords) {
@@ -201,7 +202,8 @@ constexpr double kBoxMassRel = 1e-6;
 TEST(AnalyticObjects, VoxelizedBoxMassIsExactEvenOffGrid) {
     const BoxShape b{{-7.3, -5.1, -9.7}, {6.2, 8.9, 3.3}};
     for (double h : {2.0, 0.7}) {
-        const fm::Volume v = fm::voxelize(b, fm::centeredGrid(glm::ivec3(int(40 / h)), glm::dvec3(h)));
+        const fm::Volume v =
+            fm::voxelize(b, fm::centeredGrid(glm::ivec3(int(40 / h)), glm::dvec3(h)));
         EXPECT_LT(relErr(totalMass(v), fm::exactVolume(b)), kBoxMassRel) << "h " << h;
     }
 }
@@ -243,8 +245,8 @@ TEST(AnalyticObjects, VoxelizedMassConvergesToVolume) {
 
 TEST(AnalyticObjects, VoxelValuesAreFractionsBetweenOutsideAndInside) {
     const SphereShape s{{0, 0, 0}, 6.0};
-    const fm::Volume v = fm::voxelize(s, fm::centeredGrid(glm::ivec3(16), glm::dvec3(1.0)),
-                                      1000.0f, -1000.0f, 4);
+    const fm::Volume v =
+        fm::voxelize(s, fm::centeredGrid(glm::ivec3(16), glm::dvec3(1.0)), 1000.0f, -1000.0f, 4);
     int partial = 0;
     for (float x : v.values) {
         EXPECT_GE(x, -1000.0f);

@@ -136,7 +136,7 @@ TEST(KneePhantom, RadialProfileIsBoneMuscleFatAir) {
     }
     const std::vector<Tissue> want{Cancellous, Cortical, Muscle, Fat, Air};
     EXPECT_EQ(order, want);
-    EXPECT_GE(fatMm, 5.0);   // subcutaneous fat of the thigh: several mm
+    EXPECT_GE(fatMm, 5.0);  // subcutaneous fat of the thigh: several mm
     EXPECT_LE(fatMm, 30.0);
     EXPECT_LE(v.at(0, 0, 0), kAirMax);
     EXPECT_LE(v.at(v.dims.x - 1, v.dims.y - 1, v.dims.z - 1), kAirMax);
@@ -203,8 +203,8 @@ TEST(KneePhantom, BoneSurfaceIsSubVoxelAccurate) {
     const glm::dvec3 u = glm::normalize(fm::kFemurShaftEnd - fm::kFemurShaftStart);
     for (double z = 112.0; z <= 130.0; z += 3.1) {
         const glm::dvec3 axis = axisAt(fm::kFemurShaftStart, fm::kFemurShaftEnd, z);
-        for (const glm::dvec3 dir : {glm::dvec3(1, 0, 0), glm::dvec3(-1, 0, 0),
-                                     glm::dvec3(0, 1, 0), glm::dvec3(0, -1, 0)}) {
+        for (const glm::dvec3 dir : {glm::dvec3(1, 0, 0), glm::dvec3(-1, 0, 0), glm::dvec3(0, 1, 0),
+                                     glm::dvec3(0, -1, 0)}) {
             // March outwards in 0.05 mm steps until the value drops below the mid level.
             double r = fm::kFemurShaftRadius - 3.0;
             while (r < fm::kFemurShaftRadius + 3.0 && trilinear(v, axis + r * dir) > midLevel)
@@ -334,7 +334,10 @@ TEST(KneePhantom, RejectsAbsurdParameters) {
                  fm::Error);
     EXPECT_THROW(fm::makeKneePhantom(with([](auto& p) { p.dims = {0, 10, 10}; })), fm::Error);
     EXPECT_THROW(fm::makeKneePhantom(with([](auto& p) { p.dims = {100000, 10, 10}; })), fm::Error);
-    EXPECT_THROW(fm::makeKneePhantom(with([](auto& p) { p.dims = {2048, 2048, 2048}; })), fm::Error);
+    EXPECT_THROW(fm::makeKneePhantom(with([](auto& p) {
+                     p.dims = {2048, 2048, 2048};
+                 })),
+                 fm::Error);
     EXPECT_THROW(fm::makeKneePhantom(with([](auto& p) { p.fieldMm.y = -5; })), fm::Error);
     EXPECT_THROW(fm::makeKneePhantom(with([](auto& p) { p.fieldMm.z = 1e9; })), fm::Error);
     EXPECT_THROW(fm::makeKneePhantom(with([](auto& p) { p.hu.fat = INFINITY; })), fm::Error);

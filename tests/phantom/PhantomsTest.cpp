@@ -81,14 +81,14 @@ TEST(Phantoms, SphereDefaultsAndOptions) {
 TEST(Phantoms, OtherShapesHaveTheirExactVolumes) {
     // The box is voxelized by exact overlap: its mass is exact up to float storage.
     EXPECT_NEAR(totalMass(fm::makePhantom("box,extent=10x20x30")) / 6000.0, 1.0, 1e-6);
-    EXPECT_NEAR(totalMass(fm::makePhantom("box,extent=9.3x17.1x25.5,spacing=1.3")) /
-                    (9.3 * 17.1 * 25.5),
-                1.0, 1e-6);
+    EXPECT_NEAR(
+        totalMass(fm::makePhantom("box,extent=9.3x17.1x25.5,spacing=1.3")) / (9.3 * 17.1 * 25.5),
+        1.0, 1e-6);
     EXPECT_NEAR(totalMass(fm::makePhantom("cylinder,radius=8,height=20")) / (kPi * 64.0 * 20.0),
                 1.0, kMassRel);
-    EXPECT_NEAR(totalMass(fm::makePhantom("ellipsoid,axes=20x15x10")) /
-                    (4.0 / 3.0 * kPi * 20 * 15 * 10),
-                1.0, kMassRel);
+    EXPECT_NEAR(
+        totalMass(fm::makePhantom("ellipsoid,axes=20x15x10")) / (4.0 / 3.0 * kPi * 20 * 15 * 10),
+        1.0, kMassRel);
 }
 
 TEST(Phantoms, InsideAndOutsideValues) {

@@ -59,9 +59,12 @@ OptimizerResult run(SearchMethod method, double (*f)(const Point&), int dim, int
 double sixDimensionalTolerance(SearchMethod m) {
     switch (m) {
         case SearchMethod::CmaEs:
-        case SearchMethod::NelderMead: return 1e-3;
-        case SearchMethod::ParticleSwarm: return 1e-2;
-        default: return 5e-2;
+        case SearchMethod::NelderMead:
+            return 1e-3;
+        case SearchMethod::ParticleSwarm:
+            return 1e-2;
+        default:
+            return 5e-2;
     }
 }
 
@@ -142,9 +145,11 @@ TEST(Optimizers, RespectBounds) {
     for (SearchMethod m : kAllMethods) {
         OptimizerOptions options;
         options.maxEvaluations = 2000;
-        const OptimizerResult r = minimize(
-            m, sequentialCost([](const Point& x) { return (x[0] - 5.0) * (x[0] - 5.0) + x[1] * x[1]; }),
-            {0.0, 0.5}, {1.0, 1.0}, {{-2.0, -2.0}, {2.0, 2.0}}, options);
+        const OptimizerResult r =
+            minimize(m, sequentialCost([](const Point& x) {
+                         return (x[0] - 5.0) * (x[0] - 5.0) + x[1] * x[1];
+                     }),
+                     {0.0, 0.5}, {1.0, 1.0}, {{-2.0, -2.0}, {2.0, 2.0}}, options);
         EXPECT_LE(r.best[0], 2.0) << toString(m);
         EXPECT_NEAR(r.best[0], 2.0, 0.05) << toString(m);
     }
@@ -155,7 +160,8 @@ TEST(Optimizers, BadProblemsThrow) {
     auto f = sequentialCost(sphere);
     EXPECT_THROW(minimize(SearchMethod::CmaEs, f, {0.0}, {0.0}, {{-1.0}, {1.0}}, options), Error);
     EXPECT_THROW(minimize(SearchMethod::CmaEs, f, {3.0}, {1.0}, {{-1.0}, {1.0}}, options), Error);
-    EXPECT_THROW(minimize(SearchMethod::CmaEs, f, {0.0, 0.0}, {1.0}, {{-1.0}, {1.0}}, options), Error);
+    EXPECT_THROW(minimize(SearchMethod::CmaEs, f, {0.0, 0.0}, {1.0}, {{-1.0}, {1.0}}, options),
+                 Error);
     options.maxEvaluations = 0;
     EXPECT_THROW(minimize(SearchMethod::CmaEs, f, {0.0}, {1.0}, {{-1.0}, {1.0}}, options), Error);
     EXPECT_THROW(parseSearchMethod("ga"), Error);

@@ -5,11 +5,11 @@
 
 #include "core/Error.h"
 #include "drr/Drr.h"
+#include "match/PoseError.h"
 #include "search/Evaluation.h"
 #include "search/PoseModel.h"
 #include "search/Registration.h"
 #include "search/TargetError.h"
-#include "match/PoseError.h"
 #include "volume/VolumeSource.h"
 
 namespace fm {

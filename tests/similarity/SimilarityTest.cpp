@@ -29,7 +29,8 @@ Image structuredImage(int w, int h, double shiftCols = 0.0) {
         for (int c = 0; c < w; ++c) {
             const double x = c - shiftCols, y = r;
             const double blob1 = std::exp(-((x - 20) * (x - 20) + (y - 25) * (y - 25)) / 40.0);
-            const double blob2 = 0.7 * std::exp(-((x - 42) * (x - 42) + (y - 14) * (y - 14)) / 20.0);
+            const double blob2 =
+                0.7 * std::exp(-((x - 42) * (x - 42) + (y - 14) * (y - 14)) / 20.0);
             const double edge = 1.0 / (1.0 + std::exp(-(x + 0.5 * y - 40.0) / 1.5));
             img.at(c, r) = static_cast<float>(blob1 + blob2 + edge);
         }
@@ -219,7 +220,8 @@ TEST(ImagePyramid, LevelsAreBlockMeans) {
     EXPECT_DOUBLE_EQ(half.spacing.y, 0.5);
     // Mean of c + 10 r over the 2x2 block at (2c, 2r): (2c + 0.5) + 10 (2r + 0.5).
     for (int r = 0; r < 3; ++r)
-        for (int c = 0; c < 4; ++c) EXPECT_FLOAT_EQ(half.at(c, r), 2 * c + 0.5f + 10 * (2 * r + 0.5f));
+        for (int c = 0; c < 4; ++c)
+            EXPECT_FLOAT_EQ(half.at(c, r), 2 * c + 0.5f + 10 * (2 * r + 0.5f));
     const Image quarter = downsampleBy(img, 4);
     EXPECT_EQ(quarter.width, 2);
     EXPECT_FLOAT_EQ(quarter.at(0, 0), 1.5f + 10 * 1.5f);  // mean over the 4x4 block

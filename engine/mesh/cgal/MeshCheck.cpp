@@ -46,8 +46,9 @@ std::string MeshCheckReport::summary() const {
 MeshCheckReport checkMesh(const Mesh& mesh, bool checkSelfIntersection) {
     MeshCheckReport r;
     const std::size_t n = mesh.positions.size();
-    r.validIndices = std::all_of(mesh.triangles.begin(), mesh.triangles.end(),
-                                 [&](const glm::uvec3& t) { return t.x < n && t.y < n && t.z < n; });
+    r.validIndices =
+        std::all_of(mesh.triangles.begin(), mesh.triangles.end(),
+                    [&](const glm::uvec3& t) { return t.x < n && t.y < n && t.z < n; });
     if (!r.validIndices) return r;
 
     // Soup-level facts first (CGAL's Surface_mesh cannot even hold the bad cases).
@@ -55,8 +56,8 @@ MeshCheckReport checkMesh(const Mesh& mesh, bool checkSelfIntersection) {
     for (std::size_t v = 0; v < n; ++v)
         sorted[v] = {mesh.positions[v].x, mesh.positions[v].y, mesh.positions[v].z};
     std::sort(sorted.begin(), sorted.end());
-    r.duplicateVertices = static_cast<std::size_t>(
-        sorted.end() - std::unique(sorted.begin(), sorted.end()));
+    r.duplicateVertices =
+        static_cast<std::size_t>(sorted.end() - std::unique(sorted.begin(), sorted.end()));
     std::vector<bool> used(n, false);
     std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;
     edges.reserve(mesh.triangles.size() * 3);
@@ -76,7 +77,8 @@ MeshCheckReport checkMesh(const Mesh& mesh, bool checkSelfIntersection) {
         ++uniqueEdges;
         i = j;
     }
-    r.eulerCharacteristic = static_cast<long>(n - r.unusedVertices) - static_cast<long>(uniqueEdges) +
+    r.eulerCharacteristic = static_cast<long>(n - r.unusedVertices) -
+                            static_cast<long>(uniqueEdges) +
                             static_cast<long>(mesh.triangles.size());
 
     std::vector<Point> points(n);
