@@ -6,6 +6,7 @@
 #include <string>
 
 #include "cli/CommandRegistry.h"
+#include "cli/VolumeOption.h"
 #include "io/VolumeWriter.h"
 #include "volume/VolumeSource.h"
 
@@ -31,10 +32,7 @@ FM_REGISTER_COMMAND("convert", 90, [](CLI::App& app) {
     auto* cmd = app.add_subcommand(
         "convert", "Write a volume (file, DICOM folder or phantom) as float32 .mha or .nii[.gz]");
     auto a = std::make_shared<ConvertArgs>();
-    cmd->add_option("--volume", a->volume,
-                    "CT file (.nii[.gz], .mha/.mhd, .nrrd/.nhdr, .vtk), DICOM folder, or "
-                    "phantom:NAME")
-        ->capture_default_str();
+    fm::cli::addVolumeOption(cmd, a->volume);
     cmd->add_option("--out", a->out, "Output file: .mha, .nii or .nii.gz")->required();
     cmd->callback([a] { runConvert(*a); });
     return cmd;

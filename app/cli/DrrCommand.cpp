@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "cli/CommandRegistry.h"
+#include "cli/VolumeOption.h"
 #include "cli/SceneOptions.h"
 #include "core/Error.h"
 #include "core/Parallel.h"
@@ -168,10 +169,7 @@ FM_REGISTER_COMMAND("drr", 20, [](CLI::App& app) {
     auto* cmd = app.add_subcommand(
         "drr", "Render a digitally reconstructed radiograph for a pose or a geometry file");
     auto a = std::make_shared<DrrArgs>();
-    cmd->add_option("--volume", a->volume,
-                    "CT file (.nii[.gz], .mha/.mhd, .nrrd/.nhdr, .vtk), DICOM folder, or "
-                    "phantom:NAME")
-        ->capture_default_str();
+    fm::cli::addVolumeOption(cmd, a->volume);
     fm::cli::addSceneOptions(cmd, a->scene);
     cmd->add_option("--values", a->values,
                     "mu: HU converted to attenuation (1/mm); raw: the stored values as they are")

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "cli/CommandRegistry.h"
+#include "cli/VolumeOption.h"
 #include "cli/SearchCli.h"
 #include "core/Error.h"
 #include "core/Parallel.h"
@@ -112,8 +113,7 @@ FM_REGISTER_COMMAND("evaluate", 41, [](CLI::App& app) {
         "Evaluate the search methods (van de Kraats 2005 protocol): success rate, "
         "median mTRE, capture range, time");
     auto a = std::make_shared<EvaluateArgs>();
-    cmd->add_option("--volume", a->volume, "CT file, DICOM folder or phantom:NAME")
-        ->capture_default_str();
+    fm::cli::addVolumeOption(cmd, a->volume);
     cmd->add_option("--methods", a->methods, "Comma-separated: mc, pso, bees, cmaes")
         ->capture_default_str();
     cmd->add_option("--starts", a->starts, "Start poses per mTRE bin")->capture_default_str();

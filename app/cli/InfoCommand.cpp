@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "cli/CommandRegistry.h"
+#include "cli/VolumeOption.h"
 #include "volume/VolumeSource.h"
 #include "volume/VolumeStats.h"
 
@@ -43,10 +44,7 @@ FM_REGISTER_COMMAND("info", 10, [](CLI::App& app) {
     auto* cmd = app.add_subcommand("info", "Print dimensions, spacing, placement and value "
                                            "statistics of a volume");
     auto spec = std::make_shared<std::string>(fm::kDefaultVolumeSpec);
-    cmd->add_option("volume", *spec,
-                    "CT file (.nii[.gz], .mha/.mhd, .nrrd/.nhdr, .vtk), DICOM folder, or "
-                    "phantom:NAME")
-        ->capture_default_str();
+    fm::cli::addVolumeOption(cmd, *spec, true);
     cmd->callback([spec] { runInfo(*spec); });
     return cmd;
 });

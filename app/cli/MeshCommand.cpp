@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "cli/CommandRegistry.h"
+#include "cli/VolumeOption.h"
 #include "core/Error.h"
 #include "mesh/MarchingCubes.h"
 #include "mesh/MeshCheck.h"
@@ -88,10 +89,7 @@ FM_REGISTER_COMMAND("mesh", 60, [](CLI::App& app) {
     auto* cmd =
         app.add_subcommand("mesh", "Bone surface by marching cubes, written as .ply, .stl or .obj");
     auto a = std::make_shared<MeshArgs>();
-    cmd->add_option("--volume", a->volume,
-                    "CT file (.nii[.gz], .mha/.mhd, .nrrd/.nhdr, .vtk), DICOM folder, or "
-                    "phantom:NAME")
-        ->capture_default_str();
+    fm::cli::addVolumeOption(cmd, a->volume);
     cmd->add_option("--iso", a->iso, "Isovalue (HU for CTs; surface where values cross it)")
         ->capture_default_str();
     cmd->add_option("--components", a->components,

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "cli/CommandRegistry.h"
+#include "cli/VolumeOption.h"
 #include "cli/SearchCli.h"
 #include "core/Error.h"
 #include "search/Registration.h"
@@ -104,8 +105,7 @@ FM_REGISTER_COMMAND("register", 40, [](CLI::App& app) {
     auto* cmd = app.add_subcommand(
         "register", "Find the pose whose DRR matches a reference image (automatic search)");
     auto a = std::make_shared<RegisterArgs>();
-    cmd->add_option("--volume", a->volume, "CT file, DICOM folder or phantom:NAME")
-        ->capture_default_str();
+    fm::cli::addVolumeOption(cmd, a->volume);
     auto* refPose = cmd->add_option("--reference-pose", a->referencePose,
                                     "Render the reference as a DRR at this pose x,y,z,az,el,rot "
                                     "(the truth: errors are reported)");
