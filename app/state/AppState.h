@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "geometry/Pose.h"
 
@@ -83,10 +84,37 @@ struct Timings {
     int coarseFactor = 2;  // detector downsampling while dragging
 };
 
+// The Solve section: the computer's search, as the App copies it from the Solver each frame.
+struct SolveStatus {
+    int method = 3;  // index into kSolveMethods (default CMA-ES)
+    bool running = false;
+    bool finished = false;  // a result is shown (completed or stopped)
+    bool stopped = false;
+    std::string error;
+    std::string stage;
+    int level = 0, levelCount = 0, evaluations = 0, budget = 0;
+    std::vector<float> costHistory;  // best cost per batch of the current level
+    Pose bestPose, candidate;
+    double elapsedMs = 0.0;
+    // When finished: the final pose judged like a user's attempt (engine/match PoseError).
+    double poseErrorMm = 0.0;
+    std::array<double, kParameterCount> error6{};  // solution minus reference, per parameter
+    bool applied = false;                          // the user took the solution onto the sliders
+};
+
+// The global search methods offered by the Solve combo (SearchMethod names, engine order).
+inline constexpr const char* kSolveMethods[] = {"mc", "pso", "bees", "cmaes"};
+inline constexpr const char* kSolveMethodLabels[] = {"Monte Carlo", "Particle swarm", "Bees",
+                                                     "CMA-ES"};
+inline constexpr int kSolveMethodCount = 4;
+
 // Things the UI asks for; the App consumes them after the UI pass.
 struct Requests {
     bool newReference = false;
     bool match = false;
+    bool solve = false;          // start the search (stops a running one first)
+    bool stopSolve = false;      // end it, keeping the best pose so far
+    bool applySolution = false;  // set the sliders to the solver's pose
     bool reveal = false;
     bool resetView = false;
     std::optional<std::string> loadVolume;
@@ -97,6 +125,7 @@ struct AppState {
     Pose referencePose;
     bool referenceRevealed = false;
     int attempts = 0;
+    std::optional<double> bestUserPoseErrorMm;  // the user's best mTRE over this reference
     std::optional<MatchOutcome> match;
     bool matchIsStale = false;    // the pose moved since the last Match
     std::string referenceSource;  // "data/reference_poses.txt #3" or "random pose"
@@ -111,6 +140,7 @@ struct AppState {
     std::string volumePathField;
     LoadStatus load;
     Timings timings;
+    SolveStatus solve;
 
     bool interacting = false;         // a parameter slider is being dragged: coarse preview
     bool coarseWhileDragging = true;  // off: exact DRRs even while dragging (for measuring)

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <chrono>
 
+#include "match/PoseError.h"
 #include "platform/Gl.h"
 #include "render/SceneRenderer.h"
 #include "render/Texture.h"
@@ -13,6 +14,10 @@
 
 namespace fm::app {
 namespace {
+
+// While solving, the user pane follows the best pose at most every this many frames: an exact
+// DRR costs tens of ms on the UI thread, which the search needs too.
+constexpr std::uint64_t kSolveDisplayEveryFrames = 4;
 
 double msSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
@@ -48,6 +53,7 @@ App::App(RenderBackend& backend, AppOptions options)
 }
 
 App::~App() {
+    solver_.stop();
     sceneRenderer_.reset();
     referenceTexture_.reset();
     userTexture_.reset();
@@ -64,6 +70,12 @@ void App::waitForLoad() {
 }
 
 void App::installLoadResult(SceneLoader::Result result) {
+    if (result.scene) {  // the solve searches the scene being replaced: end it first
+        solver_.stop();
+        pollSolver();
+        state_.solve = SolveStatus{state_.solve.method};
+        solveShownPose_.reset();
+    }
     if (!result.scene) {
         // The current scene stays; the reader's message is shown as is.
         state_.load.error = result.error;
@@ -87,6 +99,7 @@ void App::installLoadResult(SceneLoader::Result result) {
         state_.referenceRevealed = false;
         state_.attempts = 0;
         state_.match.reset();
+        state_.bestUserPoseErrorMm.reset();
     } else {
         newReference();
     }
@@ -102,8 +115,70 @@ void App::newReference() {
     state_.referenceSource = choice.source;
     state_.referenceRevealed = false;
     state_.attempts = 0;
+    state_.bestUserPoseErrorMm.reset();
     state_.match.reset();
     state_.matchIsStale = false;
+    // A solution belongs to its reference.
+    solver_.stop();
+    pollSolver();
+    state_.solve = SolveStatus{state_.solve.method};
+    solveShownPose_.reset();
+}
+
+void App::startSolve() {
+    if (!scene_) return;
+    const Image reference =
+        referenceCache_.get(*scene_, state_.referencePose, 1, DrrTrace::Exact, options_.drrThreads)
+            .image;
+    const int method = std::clamp(state_.solve.method, 0, kSolveMethodCount - 1);
+    solver_.start(scene_, reference, state_.userPose,
+                  appSolveSettings(parseSearchMethod(kSolveMethods[method]), options_.drrThreads));
+    state_.solve = SolveStatus{method};
+    state_.solve.running = true;
+    solveJudged_ = false;
+    solveShownPose_ = state_.userPose;
+    solveShownFrame_ = state_.frame;
+    pollSolver();
+}
+
+void App::pollSolver() {
+    const SolveSnapshot s = solver_.snapshot();
+    if (s.version == solveVersion_ && (!s.finished || solveJudged_)) return;
+    solveVersion_ = s.version;
+    SolveStatus& out = state_.solve;
+    out.running = s.running;
+    out.finished = s.finished;
+    out.stopped = s.stopped;
+    out.error = s.error;
+    out.stage = s.stage;
+    out.level = s.level;
+    out.levelCount = s.levelCount;
+    out.evaluations = s.evaluations;
+    out.budget = s.budget;
+    out.costHistory = s.costHistory;
+    out.bestPose = s.bestPose;
+    out.candidate = s.candidate;
+    out.elapsedMs = s.elapsedMs;
+    if (s.running && state_.frame >= solveShownFrame_ + kSolveDisplayEveryFrames) {
+        solveShownPose_ = s.bestPose;
+        solveShownFrame_ = state_.frame;
+    }
+    if (!s.running) solveShownPose_.reset();
+    if (s.finished && !solveJudged_ && scene_) {
+        // Judged like a user's attempt: per-parameter error and mTRE against the reference.
+        out.error6 = poseDifference(state_.referencePose, s.bestPose);
+        out.poseErrorMm =
+            scene_->bonePoints.empty()
+                ? 0.0
+                : targetRegistrationError(state_.referencePose, s.bestPose, scene_->setup,
+                                          scene_->center, scene_->bonePoints)
+                      .meanMm;
+        solveJudged_ = true;
+    }
+}
+
+const Pose& App::shownUserPose() const {
+    return solveShownPose_ ? *solveShownPose_ : state_.userPose;
 }
 
 void App::processRequests() {
@@ -112,10 +187,27 @@ void App::processRequests() {
     if (requests.resetView) state_.view = options_.view.value_or(View3d::defaults());
     if (requests.reveal) state_.referenceRevealed = true;
     if (requests.loadVolume) {
+        solver_.stop();  // a new scene ends the search of the old one
         state_.load.error.clear();
         loader_.start(*requests.loadVolume);
     }
     if (requests.newReference) newReference();
+    if (requests.stopSolve) {
+        solver_.stop();
+        pollSolver();
+    }
+    if (requests.solve) startSolve();
+    if (requests.applySolution && state_.solve.finished) {
+        // The only way a solve changes the user's pose: the user asked for it.
+        Pose p = state_.solve.bestPose;
+        const auto specs = parameterSpecs(state_.translationRangeMm);
+        std::array<double, 6> v = p.toArray();
+        for (int k = 0; k < kParameterCount; ++k)
+            v[k] = std::clamp(v[k], specs[k].min, specs[k].max);
+        state_.userPose = Pose::fromArray(v);
+        state_.solve.applied = true;
+        state_.matchIsStale = true;
+    }
     if (requests.match && scene_) {
         // Judge the exact images, whatever the preview showed.
         const Image user =
@@ -128,6 +220,8 @@ void App::processRequests() {
         MatchOutcome outcome =
             evaluateMatch(*scene_, state_.userPose, state_.referencePose, user, reference);
         outcome.attempt = state_.attempts;
+        if (!state_.bestUserPoseErrorMm || outcome.poseErrorMm < *state_.bestUserPoseErrorMm)
+            state_.bestUserPoseErrorMm = outcome.poseErrorMm;
         state_.match = std::move(outcome);
         state_.matchIsStale = false;
     }
@@ -151,9 +245,10 @@ void App::updateImages() {
     const bool coarse = state_.interacting && state_.coarseWhileDragging;
     const int factor = coarse ? state_.timings.coarseFactor : 1;
     const DrrTrace trace = DrrTrace::Exact;
-    const DrrKey userKey{scene_->generation, state_.userPose.toArray(), factor, trace};
+    const Pose& userPose = shownUserPose();
+    const DrrKey userKey{scene_->generation, userPose.toArray(), factor, trace};
     if (userKey_ != userKey) {
-        DrrRender r = userCache_.get(*scene_, state_.userPose, factor, trace, threads);
+        DrrRender r = userCache_.get(*scene_, userPose, factor, trace, threads);
         userDrr_ = std::move(r.image);
         state_.timings.userDrrMs = r.milliseconds;
         state_.timings.userDrrCoarse = coarse;
@@ -214,6 +309,7 @@ void App::frame() {
     state_.load.stage = progress.stage;
     state_.load.progress = progress.fraction;
     state_.load.elapsedSeconds = progress.elapsedSeconds;
+    pollSolver();
 
     ImGui_ImplOpenGL3_NewFrame();
     ImGui::NewFrame();
@@ -268,7 +364,7 @@ void App::frame() {
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
     backend_.present();
     // Nothing moving: the window may sleep until the next event instead of redrawing.
-    backend_.setIdle(!state_.load.loading && !fast && !state_.interacting);
+    backend_.setIdle(!state_.load.loading && !fast && !state_.interacting && !state_.solve.running);
     ++state_.frame;
     state_.timings.frameMs = msSince(start);
 }

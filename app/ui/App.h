@@ -14,6 +14,7 @@
 #include "render/Screenshot.h"
 #include "scene/DrrCache.h"
 #include "scene/SceneLoader.h"
+#include "scene/Solver.h"
 #include "state/AppState.h"
 #include "ui/Ui.h"
 
@@ -58,6 +59,9 @@ class App {
     int exactUserRenders() const { return exactUserRenders_; }
     int coarseUserRenders() const { return coarseUserRenders_; }
     int sceneDraws() const { return sceneDraws_; }  // how often the 3D view was redrawn
+    const Solver& solver() const { return solver_; }
+    // The pose whose DRR the user pane shows: the solver's best so far while it runs.
+    const Pose& shownUserPose() const;
     RenderBackend& backend() { return backend_; }
     const render::SceneRenderer& sceneRenderer() const { return *sceneRenderer_; }
 
@@ -66,6 +70,8 @@ class App {
     void processRequests();
     void updateImages();
     void newReference();
+    void startSolve();
+    void pollSolver();
 
     RenderBackend& backend_;
     AppOptions options_;
@@ -101,6 +107,12 @@ class App {
         bool operator==(const SceneKey&) const = default;
     } sceneKey_;
     int sceneDraws_ = 0;
+    // Last: destroyed first, so its worker (which holds the scene) is joined before the rest.
+    Solver solver_;
+    std::uint64_t solveVersion_ = 0;
+    bool solveJudged_ = false;            // the finished result's mTRE was computed
+    std::optional<Pose> solveShownPose_;  // best-so-far pose on screen while solving
+    std::uint64_t solveShownFrame_ = 0;
 };
 
 }  // namespace fm::app

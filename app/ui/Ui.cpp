@@ -4,6 +4,7 @@
 #include <imgui_stdlib.h>
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <cstdarg>
 #include <cstdint>
@@ -135,7 +136,13 @@ void Ui::userPane(AppState& state, const Pane& pane, unsigned texture) {
     beginPane("Your DRR", pane);
     squareImage(texture, ImGui::GetTextLineHeightWithSpacing());
     record("image:user");
-    poseLine(state.userPose);
+    if (state.solve.running) {  // the image follows the computer's best pose meanwhile
+        ImGui::TextColored(kWarn, "solving:");
+        ImGui::SameLine();
+        poseLine(state.solve.bestPose);
+    } else {
+        poseLine(state.userPose);
+    }
     ImGui::End();
 }
 
@@ -327,6 +334,26 @@ void Ui::comparePane(AppState& state, const Pane& pane, unsigned texture) {
 
 void Ui::matchPane(AppState& state, const Pane& pane) {
     beginPane("Match", pane);
+    // Two tabs: the pane is too short for the verdict table and the solve result together.
+    if (ImGui::BeginTabBar("##match-tabs")) {
+        const bool mine = ImGui::BeginTabItem("Your match");
+        record("tab:match");
+        if (mine) {
+            matchTab(state);
+            ImGui::EndTabItem();
+        }
+        const bool computer = ImGui::BeginTabItem("Solve");
+        record("tab:solve");
+        if (computer) {
+            solveSection(state);
+            ImGui::EndTabItem();
+        }
+        ImGui::EndTabBar();
+    }
+    ImGui::End();
+}
+
+void Ui::matchTab(AppState& state) {
     if (ImGui::Button("New reference image")) state.requests.newReference = true;
     record("button:new-reference");
     ImGui::SameLine();
@@ -398,7 +425,77 @@ void Ui::matchPane(AppState& state, const Pane& pane) {
             ImGui::EndTable();
         }
     }
-    ImGui::End();
+}
+
+void Ui::solveSection(AppState& state) {
+    SolveStatus& solve = state.solve;
+    ImGui::AlignTextToFramePadding();
+    ImGui::TextUnformatted("Computer:");
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(ImGui::CalcTextSize("Particle swarm").x + ImGui::GetFrameHeight() +
+                            2 * ImGui::GetStyle().FramePadding.x);
+    if (solve.running) ImGui::BeginDisabled();
+    ImGui::Combo("##method", &solve.method, kSolveMethodLabels, kSolveMethodCount);
+    if (solve.running) ImGui::EndDisabled();
+    record("combo:solve-method");
+    ImGui::SameLine();
+    if (solve.running) {
+        if (ImGui::Button("Stop")) state.requests.stopSolve = true;
+        record("button:stop-solve");
+    } else {
+        if (ImGui::Button("Solve")) state.requests.solve = true;
+        record("button:solve");
+    }
+    if (!solve.error.empty()) ImGui::TextColored(kBad, "%s", solve.error.c_str());
+    if (!solve.running && !solve.finished) {
+        dimWrapped("Solve: the automatic search from your pose, to compare with your attempts.");
+        return;
+    }
+
+    char overlay[160];
+    std::snprintf(overlay, sizeof(overlay), "level %d/%d %s  %d/%d", solve.level + 1,
+                  std::max(1, solve.levelCount), solve.stage.c_str(), solve.evaluations,
+                  solve.budget);
+    const float fraction =
+        solve.budget > 0 ? std::min(1.0f, float(solve.evaluations) / float(solve.budget)) : 0.0f;
+    ImGui::ProgressBar(solve.finished && !solve.stopped ? 1.0f : fraction, ImVec2(-1.0f, 0.0f),
+                       overlay);
+    record("progress:solve");
+    if (!solve.costHistory.empty()) {
+        ImGui::PlotLines("##cost", solve.costHistory.data(), int(solve.costHistory.size()), 0,
+                         "best cost (this level)", FLT_MAX, FLT_MAX,
+                         // PlotLines (1.86) takes no negative "fill" width: give it outright.
+                         ImVec2(ImGui::GetContentRegionAvail().x, 40.0f));
+        record("plot:solve-cost");
+    }
+    if (solve.running) {
+        ImGui::TextColored(kDim, "candidate");
+        ImGui::SameLine();
+        poseLine(solve.candidate);
+        if (state.showTimings) ImGui::TextColored(kDim, "%.1f s", solve.elapsedMs / 1000.0);
+        return;
+    }
+
+    // Finished: the computer's answer beside the user's attempts.
+    ImGui::TextColored(solve.poseErrorMm < 1.0 ? kGood : kWarn, "computer mTRE %.2f mm%s",
+                       solve.poseErrorMm, solve.stopped ? " (stopped)" : "");
+    ImGui::SameLine();
+    if (state.showTimings)
+        ImGui::TextColored(kDim, "%d evals, %.1f s", solve.evaluations, solve.elapsedMs / 1000.0);
+    else
+        ImGui::TextColored(kDim, "%d evals", solve.evaluations);
+    poseLine(solve.bestPose);
+    ImGui::TextColored(kDim, "error %+.1f %+.1f %+.1f mm | %+.1f %+.1f %+.1f deg", solve.error6[0],
+                       solve.error6[1], solve.error6[2], solve.error6[3], solve.error6[4],
+                       solve.error6[5]);
+    if (state.bestUserPoseErrorMm)
+        ImGui::Text("you: %d attempt%s, best mTRE %.2f mm", state.attempts,
+                    state.attempts == 1 ? "" : "s", *state.bestUserPoseErrorMm);
+    else
+        ImGui::Text("you: no attempt yet");
+    if (ImGui::Button(solve.applied ? "Applied" : "Apply solution"))
+        state.requests.applySolution = true;
+    record("button:apply-solution");
 }
 
 void Ui::helpWindow(AppState& state) {
@@ -437,6 +534,10 @@ void Ui::helpWindow(AppState& state) {
             "%.3g deg of the hidden pose, and the images to correlate (NCC >= %.3g).",
             state.toleranceOffsetMm, state.toleranceAngleDeg, state.toleranceMinNcc);
         bulletWrapped("New reference image: another hidden pose. Reveal shows its values.");
+        bulletWrapped(
+            "Solve: the computer searches from your pose with the chosen method (live: its "
+            "best pose in your DRR, a cost curve; Stop keeps its best so far), then shows its "
+            "error and time beside your attempts. Apply solution puts its pose on the sliders.");
         bulletWrapped(
             "Compare: difference, overlay or checkerboard of the two images, with "
             "window and level.");

@@ -48,6 +48,8 @@ class Ui {
     void parameterPane(AppState& state, const Pane& pane);
     void comparePane(AppState& state, const Pane& pane, unsigned texture);
     void matchPane(AppState& state, const Pane& pane);
+    void matchTab(AppState& state);      // the Match pane's tabs: the user's attempts ...
+    void solveSection(AppState& state);  // ... and the computer's (Solve)
     void helpWindow(AppState& state);
 
     std::map<std::string, WidgetRect> rects_;

@@ -1,0 +1,112 @@
+#include "scene/Solver.h"
+
+#include <exception>
+
+#include "core/Error.h"
+#include "search/PoseModel.h"
+
+namespace fm::app {
+namespace {
+
+double msSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+        .count();
+}
+
+}  // namespace
+
+RegistrationSettings appSolveSettings(SearchMethod method, int threads) {
+    RegistrationSettings settings;
+    settings.method = method;
+    settings.seed = 1;
+    settings.threads = threads;
+    return settings;
+}
+
+Solver::~Solver() {
+    stop();
+}
+
+void Solver::join() {
+    if (worker_.joinable()) worker_.join();
+}
+
+void Solver::stop() {
+    stopFlag_ = true;
+    join();
+}
+
+bool Solver::running() const {
+    std::lock_guard lock(mutex_);
+    return snapshot_.running;
+}
+
+SolveSnapshot Solver::snapshot() const {
+    std::lock_guard lock(mutex_);
+    return snapshot_;
+}
+
+void Solver::start(std::shared_ptr<const LoadedScene> scene, Image reference, const Pose& start,
+                   RegistrationSettings settings) {
+    stop();
+    stopFlag_ = false;
+    {
+        std::lock_guard lock(mutex_);
+        const std::uint64_t version = snapshot_.version + 1;
+        snapshot_ = {};
+        snapshot_.running = true;
+        snapshot_.method = settings.method;
+        snapshot_.stage = "preparing";
+        snapshot_.start = snapshot_.bestPose = snapshot_.candidate = start;
+        snapshot_.version = version;
+    }
+    worker_ = std::thread([this, scene = std::move(scene), reference = std::move(reference), start,
+                           settings]() {
+        const auto began = std::chrono::steady_clock::now();
+        try {
+            const Registration registration(scene->drrVolume, reference,
+                                            scenePoseModel(scene->setup, scene->center), settings);
+            {
+                std::lock_guard lock(mutex_);
+                snapshot_.budget = registration.totalBudget();
+                snapshot_.levelCount = registration.levelCount();
+                ++snapshot_.version;
+            }
+            const RegistrationResult result = registration.run(
+                start,
+                [&](const RegistrationProgress& p) {
+                    std::lock_guard lock(mutex_);
+                    if (p.level != snapshot_.level) snapshot_.costHistory.clear();
+                    snapshot_.level = p.level;
+                    snapshot_.levelCount = p.levelCount;
+                    snapshot_.factor = p.factor;
+                    snapshot_.stage = p.stage;
+                    snapshot_.evaluations = p.evaluations;
+                    snapshot_.budget = p.evaluationBudget;
+                    snapshot_.bestCost = p.bestCost;
+                    snapshot_.costHistory.push_back(static_cast<float>(p.bestCost));
+                    snapshot_.bestPose = p.bestPose;
+                    snapshot_.candidate = p.candidate;
+                    snapshot_.elapsedMs = msSince(began);
+                    ++snapshot_.version;
+                },
+                &stopFlag_);
+            std::lock_guard lock(mutex_);
+            snapshot_.bestPose = result.pose;
+            snapshot_.evaluations = result.evaluations;
+            snapshot_.stopped = result.stopped;
+            snapshot_.stage = result.stopped ? "stopped" : "done";
+        } catch (const std::exception& e) {
+            std::lock_guard lock(mutex_);
+            snapshot_.error = e.what();
+            snapshot_.stage = "failed";
+        }
+        std::lock_guard lock(mutex_);
+        snapshot_.running = false;
+        snapshot_.finished = snapshot_.error.empty();
+        snapshot_.elapsedMs = msSince(began);
+        ++snapshot_.version;
+    });
+}
+
+}  // namespace fm::app
