@@ -67,6 +67,12 @@ FM_REGISTER_COMMAND("geometry", 30, [](CLI::App& app) {
     auto* center = cmd->add_option("--center", args->center,
                                    "Volume centre x,y,z in mm instead of loading --volume");
     center->excludes(volume);
+    // A geometry file fixes source and detector in world mm: a volume centre would be
+    // ignored, so naming one with --geometry is refused rather than silently dropped.
+    if (auto* geometryFile = cmd->get_option_no_throw("--geometry")) {
+        volume->excludes(geometryFile);
+        center->excludes(geometryFile);
+    }
     cmd->add_option("--out", args->out, "Write the JSON to this file instead of printing it");
     cmd->callback([args] { runGeometry(*args); });
     return cmd;

@@ -4,6 +4,7 @@
 #     bytes (deterministic);
 #  2. `fluoromatch app` without DISPLAY says so and writes a headless screenshot (exit 0);
 #  3. a volume that cannot be read fails with the reader's message (exit 1), no PNG.
+#  4. geometry --geometry with --volume is refused (the volume would be ignored).
 set -uo pipefail
 FM=$1
 OUT=$(mktemp -d)
@@ -30,4 +31,12 @@ echo "$msg"
 [ $rc -eq 1 ] || fail "an unreadable volume gave exit $rc, not 1"
 grep -q "missing.nii.gz" <<<"$msg" || fail "the error does not name the file"
 [ ! -e "$OUT/bad.png" ] || fail "a PNG was written for an unreadable volume"
+
+# 4. geometry: a geometry file fixes the scene, so a --volume beside it is refused, not ignored.
+"$FM" geometry --pose 0,0,0,0,0,0 --center 0,0,0 --out "$OUT/g.json" || fail "geometry --pose exited $?"
+msg=$("$FM" geometry --geometry "$OUT/g.json" --volume phantom:knee 2>&1)
+rc=$?
+[ $rc -ne 0 ] || fail "geometry --geometry with --volume was accepted (the volume would be ignored)"
+grep -q "excludes" <<<"$msg" || fail "the refusal does not say the options exclude each other: $msg"
+"$FM" geometry --geometry "$OUT/g.json" > /dev/null || fail "geometry --geometry alone exited $?"
 echo PASS
