@@ -1,6 +1,8 @@
 #include "mesh/MarchingCubes.h"
 
 #include <algorithm>
+#include <array>
+#include <bit>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -9,6 +11,7 @@
 #include <vector>
 
 #include "core/Error.h"
+#include "core/LargeAllocation.h"
 #include "core/Parallel.h"
 #include "mesh/MarchingCubesTable.h"
 #include "mesh/MeshComponents.h"
@@ -16,28 +19,49 @@
 namespace fm {
 namespace {
 
+// The hot loops handle 8 neighbouring cubes at once: 8 classification bytes read as one
+// 64-bit word, one byte lane per cube (SWAR). Lane k is byte k in memory: little-endian.
+static_assert(std::endian::native == std::endian::little,
+              "marching cubes reads byte lanes of 64-bit words as little-endian");
+constexpr std::uint64_t kLanes = 0x0101010101010101ull;  // 1 in every byte lane
+
+inline std::uint64_t word(const std::uint8_t* p) {
+    std::uint64_t w;
+    std::memcpy(&w, p, sizeof w);
+    return w;
+}
+inline unsigned lane(std::uint64_t w, int k) {
+    return static_cast<unsigned>(w >> (8 * k)) & 0xffu;
+}
+// Per lane: the number of set bits of a 3-bit owned-edge mask (0..3).
+inline std::uint64_t laneBitCounts(std::uint64_t owned) {
+    return (owned & kLanes) + ((owned >> 1) & kLanes) + ((owned >> 2) & kLanes);
+}
+
 // Edge vertices stay this fraction of a voxel away from the corners: a value equal to the
 // isovalue would otherwise put a vertex on a corner, where vertices of several edges coincide
 // and triangles collapse to zero area. 1e-3 voxel is far above float resolution at CT world
 // coordinates (~6e-5 mm at 800 mm) and far below any meaningful geometric error.
 constexpr float kEdgeMargin = 1e-3f;
 
-// Set bits of a 3-bit owned-edge mask (a table: no popcnt instruction is assumed).
-constexpr std::uint32_t kBitCount3[8] = {0, 1, 1, 2, 1, 2, 2, 3};
-
 // The working grid: the ROI plus one virtual padding layer on every side. Local point
 // u in [0, m + 1] per axis is voxel lo + u - 1; u = 0 and u = m + 1 are padding (below iso).
 // Point rows are (uy, uz); cube (u) spans points u .. u + 1 and owns the three edges that
 // leave point u in +x, +y, +z (so each edge is intersected once, by its owner).
+// A row of the classification is p.x points plus at least 8 spare bytes, always 0 (outside):
+// a word read for cubes ux .. ux + 7 (points up to ux + 8) then never leaves its row. One more
+// slice of zeros after the last padding slice lets owned edges be derived for every point row
+// (padding rows own nothing: all their neighbours in +y and +z are padding too, or zeros).
 struct Grid {
     glm::ivec3 lo{0}, m{0}, p{0};  // ROI start (voxels), ROI size, padded size (m + 2)
-    std::size_t sliceStride = 0;   // p.x * p.y
+    std::size_t rowStride = 0;     // bytes per point row, >= p.x + 8
+    std::size_t sliceStride = 0;   // rowStride * p.y
     const Volume* volume = nullptr;
     float pad = 0.0f;
     float iso = 0.0f;
 
     std::size_t pointIndex(int ux, int uy, int uz) const {
-        return static_cast<std::size_t>(ux) + static_cast<std::size_t>(p.x) * uy +
+        return static_cast<std::size_t>(ux) + rowStride * uy +
                sliceStride * static_cast<std::size_t>(uz);
     }
     int rowIndex(int uy, int uz) const { return uy + p.y * uz; }
@@ -54,89 +78,118 @@ struct RowInfo {
     int cubeFirst = 0, cubeLast = -1;  // cube range worth visiting (empty when last < first)
     std::uint32_t edgeVertices = 0;    // crossed edges owned by this point row
     std::uint32_t triangles = 0;
-    std::size_t vertexBase = 0, triangleBase = 0;
+    std::uint32_t vertexBase = 0;
+    std::size_t triangleBase = 0;
 };
 
-struct Placement {
-    glm::dmat3 toWorld;     // direction * diag(spacing)
-    glm::mat3 gradToWorld;  // direction * diag(1 / spacing)
+// The case table in the layout the generate loop wants: triangle corners as one flat list.
+struct PackedCase {
+    std::uint8_t triangleCount = 0;
+    std::uint8_t edges[3 * mc::kMaxTriangles] = {};
+};
+struct PackedCases {
+    std::array<PackedCase, 256> asIs, mirrored;  // mirrored: winding flipped
+};
+
+const PackedCases& packedCases() {
+    static const PackedCases table = [] {
+        PackedCases t;
+        const auto& cases = mc::cubeCases();
+        for (int c = 0; c < 256; ++c) {
+            t.asIs[c].triangleCount = t.mirrored[c].triangleCount = cases[c].triangleCount;
+            for (int i = 0; i < cases[c].triangleCount; ++i) {
+                const auto& tri = cases[c].triangles[i];
+                for (int v = 0; v < 3; ++v) t.asIs[c].edges[3 * i + v] = tri[v];
+                t.mirrored[c].edges[3 * i] = tri[0];
+                t.mirrored[c].edges[3 * i + 1] = tri[2];
+                t.mirrored[c].edges[3 * i + 2] = tri[1];
+            }
+        }
+        return t;
+    }();
+    return table;
+}
+
+// Case numbers of cubes ux .. ux + 7 of a cube row, one per byte lane; r0..r3 are the
+// classification rows (uy, uz), (uy + 1, uz), (uy, uz + 1), (uy + 1, uz + 1). Corner c of a
+// cube sits at (c & 1, (c >> 1) & 1, c >> 2) and is bit c of its case.
+inline std::uint64_t caseWord(const std::uint8_t* r0, const std::uint8_t* r1,
+                              const std::uint8_t* r2, const std::uint8_t* r3, int ux) {
+    return word(r0 + ux) | (word(r0 + ux + 1) << 1) | (word(r1 + ux) << 2) |
+           (word(r1 + ux + 1) << 3) | (word(r2 + ux) << 4) | (word(r2 + ux + 1) << 5) |
+           (word(r3 + ux) << 6) | (word(r3 + ux + 1) << 7);
+}
+
+// Crossed edges owned by points ux .. ux + 7 of point row `row`, one 3-bit mask per byte lane:
+// bit 0 the x edge to the next point, bit 1 the y edge to the next row, bit 2 the z edge to the
+// next slice. Derived from the classification whenever needed instead of stored: a stored copy
+// would be another volume-sized array to fault in, write and read back.
+inline std::uint64_t ownedWord(const std::uint8_t* row, std::size_t rowStride,
+                               std::size_t sliceStride, int ux) {
+    const std::uint64_t a = word(row + ux);
+    return (a ^ word(row + ux + 1)) | ((a ^ word(row + rowStride + ux)) << 1) |
+           ((a ^ word(row + sliceStride + ux)) << 2);
+}
+
+// Vertices on crossed edges, in world millimetres with outward unit normals.
+struct VertexMaker {
+    const Grid* g = nullptr;
+    const float* values = nullptr;
+    std::ptrdiff_t sy = 0, sz = 0;  // volume strides (voxels) in y and z
+    glm::dmat3 toWorld;             // direction * diag(spacing)
+    glm::mat3 gradToWorld;          // direction * diag(1 / spacing)
     glm::dvec3 origin;
-};
+    glm::vec3* positions = nullptr;
+    glm::vec3* normals = nullptr;
 
-struct EdgeVertex {
-    glm::vec3 position;
-    glm::vec3 normal;
-};
-
-// Vertex on the edge leaving local point (ux, uy, uz) along `axis`. Normals are the
-// interpolated central-difference gradient, negated (pointing to lower values: outward).
-EdgeVertex makeEdgeVertex(const Grid& g, const Placement& place, int ux, int uy, int uz, int axis) {
-    const glm::ivec3 a(ux, uy, uz);
-    glm::ivec3 b = a;
-    b[axis] += 1;
-    float v0, v1;
-    glm::vec3 g0, g1;
-    // Both central differences stay inside the ROI: read the volume directly.
-    if (glm::all(glm::greaterThanEqual(a, glm::ivec3(2))) &&
-        glm::all(glm::lessThanEqual(b, g.m - 1))) {
-        const Volume& vol = *g.volume;
-        const std::ptrdiff_t sx = 1, sy = vol.dims.x,
-                             sz = static_cast<std::ptrdiff_t>(vol.dims.x) * vol.dims.y;
-        const std::ptrdiff_t step = axis == 0 ? sx : axis == 1 ? sy : sz;
-        const float* p0 = &vol.values[vol.index(g.lo.x + ux - 1, g.lo.y + uy - 1, g.lo.z + uz - 1)];
-        const float* p1 = p0 + step;
-        v0 = p0[0];
-        v1 = p1[0];
-        g0 = glm::vec3(p0[sx] - p0[-sx], p0[sy] - p0[-sy], p0[sz] - p0[-sz]);
-        g1 = glm::vec3(p1[sx] - p1[-sx], p1[sy] - p1[-sy], p1[sz] - p1[-sz]);
-    } else {
-        v0 = g.value(a.x, a.y, a.z);
-        v1 = g.value(b.x, b.y, b.z);
-        g0 = glm::vec3(g.value(a.x + 1, a.y, a.z) - g.value(a.x - 1, a.y, a.z),
-                       g.value(a.x, a.y + 1, a.z) - g.value(a.x, a.y - 1, a.z),
-                       g.value(a.x, a.y, a.z + 1) - g.value(a.x, a.y, a.z - 1));
-        g1 = glm::vec3(g.value(b.x + 1, b.y, b.z) - g.value(b.x - 1, b.y, b.z),
-                       g.value(b.x, b.y + 1, b.z) - g.value(b.x, b.y - 1, b.z),
-                       g.value(b.x, b.y, b.z + 1) - g.value(b.x, b.y, b.z - 1));
+    // Vertex `id` on the edge leaving local point (ux, uy, uz) along Axis. `rowInterior`: the
+    // central differences at both ends stay inside the ROI in y and z (x is checked here).
+    // Normals are the interpolated central-difference gradient, negated (pointing to lower
+    // values: outward).
+    template <int Axis>
+    void make(int ux, int uy, int uz, std::uint32_t id, bool rowInterior) const {
+        float v0, v1;
+        glm::vec3 g0, g1;
+        if (rowInterior && ux >= 2 && ux + (Axis == 0) <= g->m.x - 1) {
+            constexpr std::ptrdiff_t sx = 1;
+            const std::ptrdiff_t step = Axis == 0 ? sx : Axis == 1 ? sy : sz;
+            const float* p0 =
+                values + (g->lo.x + ux - 1) + sy * (g->lo.y + uy - 1) + sz * (g->lo.z + uz - 1);
+            const float* p1 = p0 + step;
+            v0 = p0[0];
+            v1 = p1[0];
+            g0 = glm::vec3(p0[sx] - p0[-sx], p0[sy] - p0[-sy], p0[sz] - p0[-sz]);
+            g1 = glm::vec3(p1[sx] - p1[-sx], p1[sy] - p1[-sy], p1[sz] - p1[-sz]);
+        } else {
+            const int bx = ux + (Axis == 0), by = uy + (Axis == 1), bz = uz + (Axis == 2);
+            v0 = g->value(ux, uy, uz);
+            v1 = g->value(bx, by, bz);
+            g0 = glm::vec3(g->value(ux + 1, uy, uz) - g->value(ux - 1, uy, uz),
+                           g->value(ux, uy + 1, uz) - g->value(ux, uy - 1, uz),
+                           g->value(ux, uy, uz + 1) - g->value(ux, uy, uz - 1));
+            g1 = glm::vec3(g->value(bx + 1, by, bz) - g->value(bx - 1, by, bz),
+                           g->value(bx, by + 1, bz) - g->value(bx, by - 1, bz),
+                           g->value(bx, by, bz + 1) - g->value(bx, by, bz - 1));
+        }
+        float t = (g->iso - v0) / (v1 - v0);  // v0 and v1 lie on different sides: v1 != v0
+        // Written so that NaN (a NaN or infinite voxel value) lands on the margin, not in the mesh.
+        t = t > kEdgeMargin ? (t < 1.0f - kEdgeMargin ? t : 1.0f - kEdgeMargin) : kEdgeMargin;
+        glm::dvec3 voxel(g->lo.x + ux - 1, g->lo.y + uy - 1, g->lo.z + uz - 1);
+        voxel[Axis] += t;
+        positions[id] = glm::vec3(origin + toWorld * voxel);
+        // Twice the gradient (central differences without the 1/2): only the direction matters.
+        glm::vec3 n = -(gradToWorld * (g0 + t * (g1 - g0)));
+        float len2 = glm::dot(n, n);
+        if (!(len2 > 1e-30f) || !std::isfinite(len2)) {
+            // Flat gradient (plateaus): point from the inside corner to the outside one.
+            glm::vec3 axisDir(0.0f);
+            axisDir[Axis] = v0 >= g->iso ? 1.0f : -1.0f;
+            n = gradToWorld * axisDir;
+            len2 = glm::dot(n, n);
+        }
+        normals[id] = n / std::sqrt(len2);
     }
-    float t = (g.iso - v0) / (v1 - v0);  // v0 and v1 lie on different sides, so v1 != v0
-    // Written so that NaN (a NaN or infinite voxel value) lands on the margin, not in the mesh.
-    t = t > kEdgeMargin ? (t < 1.0f - kEdgeMargin ? t : 1.0f - kEdgeMargin) : kEdgeMargin;
-    glm::dvec3 voxel = glm::dvec3(a + g.lo - 1);
-    voxel[axis] += t;
-    EdgeVertex out;
-    out.position = glm::vec3(place.origin + place.toWorld * voxel);
-    // Twice the gradient (central differences without the 1/2): only the direction matters.
-    glm::vec3 n = -(place.gradToWorld * (g0 + t * (g1 - g0)));
-    float len2 = glm::dot(n, n);
-    if (!(len2 > 1e-30f) || !std::isfinite(len2)) {
-        // Flat gradient (plateaus): point from the inside corner to the outside one.
-        glm::vec3 axisDir(0.0f);
-        axisDir[axis] = v0 >= g.iso ? 1.0f : -1.0f;
-        n = place.gradToWorld * axisDir;
-        len2 = glm::dot(n, n);
-    }
-    out.normal = n / std::sqrt(len2);
-    return out;
-}
-
-// Crossed owned edges of a point as bits x, y, z.
-inline unsigned ownedBits(const std::uint8_t* cls, std::size_t pi, std::size_t rowStride,
-                          std::size_t sliceStride) {
-    const unsigned b = cls[pi];
-    return (b ^ cls[pi + 1]) | ((b ^ cls[pi + rowStride]) << 1) |
-           ((b ^ cls[pi + sliceStride]) << 2);
-}
-
-inline unsigned cubeCase(const std::uint8_t* cls, std::size_t pi, std::size_t rowStride,
-                         std::size_t sliceStride) {
-    const std::uint8_t* c0 = cls + pi;
-    const std::uint8_t* c1 = c0 + rowStride;
-    const std::uint8_t* c2 = c0 + sliceStride;
-    const std::uint8_t* c3 = c2 + rowStride;
-    return c0[0] | (c0[1] << 1) | (c1[0] << 2) | (c1[1] << 3) | (c2[0] << 4) | (c2[1] << 5) |
-           (c3[0] << 6) | (c3[1] << 7);
-}
+};
 
 void checkOptions(const Volume& volume, const MarchingCubesOptions& o, glm::ivec3& lo,
                   glm::ivec3& hi) {
@@ -170,7 +223,7 @@ void checkOptions(const Volume& volume, const MarchingCubesOptions& o, glm::ivec
 Mesh marchingCubes(const Volume& volume, const MarchingCubesOptions& options) {
     glm::ivec3 lo, hi;
     checkOptions(volume, options, lo, hi);
-    const auto& cases = mc::cubeCases();
+    const PackedCases& packed = packedCases();
     const int threads = options.threads <= 0 ? defaultThreadCount() : options.threads;
 
     Grid g;
@@ -178,27 +231,22 @@ Mesh marchingCubes(const Volume& volume, const MarchingCubesOptions& options) {
     g.lo = lo;
     g.m = hi - lo + 1;
     g.p = g.m + 2;
-    g.sliceStride = static_cast<std::size_t>(g.p.x) * g.p.y;
+    g.rowStride = (static_cast<std::size_t>(g.p.x) + 8 + 7) & ~std::size_t{7};
+    g.sliceStride = g.rowStride * g.p.y;
     g.iso = static_cast<float>(options.isoValue);
-    const std::size_t rowStride = g.p.x;
+    const std::size_t rowStride = g.rowStride;
     const std::size_t sliceStride = g.sliceStride;
 
     // Pass 1: classify every ROI voxel (inside = value >= iso), note where each row has inside
-    // points, and the ROI minimum for the padding value. Padding stays 0 (outside). The arrays
-    // get kWordSlack spare bytes so that 8-byte reads at the last row stay in bounds.
-    // Both byte arrays are left uninitialised and written in full by the parallel passes: a
-    // zeroing memset up front would touch every page twice (it cost ~20% on large CTs).
-    constexpr std::size_t kWordSlack = 8;
-    const std::size_t byteCount = sliceStride * g.p.z + kWordSlack;
-    const std::unique_ptr<std::uint8_t[]> clsStore(new std::uint8_t[byteCount]);
-    // Per point: its crossed owned edges (bits x, y, z), written by pass 2.
-    const std::unique_ptr<std::uint8_t[]> ownedStore(new std::uint8_t[byteCount]);
+    // points, and the ROI minimum for the padding value. Padding stays 0 (outside).
+    // The array is left uninitialised and written in full by the parallel pass: a zeroing
+    // memset up front would touch every page twice (it cost ~20% on large CTs).
+    const std::size_t byteCount = sliceStride * (g.p.z + 1);
+    const LargeBuffer<std::uint8_t> clsStore = makeLargeBuffer<std::uint8_t>(byteCount);
     std::uint8_t* const cls = clsStore.get();
-    std::uint8_t* const owned = ownedStore.get();
-    // Padding slices, the slice past the last cube layer, and the slack: all outside / none.
+    // Padding slices and the slice of zeros after them.
     std::memset(cls, 0, sliceStride);
-    std::memset(cls + sliceStride * (g.p.z - 1), 0, sliceStride + kWordSlack);
-    std::memset(owned + sliceStride * (g.p.z - 1), 0, sliceStride + kWordSlack);
+    std::memset(cls + sliceStride * (g.p.z - 1), 0, 2 * sliceStride);
     std::vector<RowInfo> rows(static_cast<std::size_t>(g.p.y) * g.p.z);
     std::vector<float> layerMin(g.p.z, std::numeric_limits<float>::infinity());
     const float iso = g.iso;
@@ -207,40 +255,39 @@ Mesh marchingCubes(const Volume& volume, const MarchingCubesOptions& options) {
         [&](int begin, int end) {
             for (int uz = begin + 1; uz <= end; ++uz) {
                 float lowest = std::numeric_limits<float>::infinity();
-                // Padding rows and row ends of this slice.
+                // Padding rows of this slice.
                 std::memset(&cls[g.pointIndex(0, 0, uz)], 0, rowStride);
                 std::memset(&cls[g.pointIndex(0, g.p.y - 1, uz)], 0, rowStride);
                 for (int uy = 1; uy <= g.m.y; ++uy) {
-                    cls[g.pointIndex(0, uy, uz)] = 0;
-                    cls[g.pointIndex(g.p.x - 1, uy, uz)] = 0;
-                }
-                for (int uy = 1; uy <= g.m.y; ++uy) {
                     const float* src =
                         &volume.values[volume.index(lo.x, lo.y + uy - 1, lo.z + uz - 1)];
-                    std::uint8_t* dst = &cls[g.pointIndex(1, uy, uz)];
+                    std::uint8_t* row = &cls[g.pointIndex(0, uy, uz)];
+                    std::uint8_t* dst = row + 1;
                     // Locals: byte stores may alias anything, which would otherwise force
                     // reloading iso and the row length every voxel (and block vectorising).
                     const float isoHere = iso;
                     const int width = g.m.x;
+                    row[0] = 0;
                     for (int x = 0; x < width; ++x) dst[x] = src[x] >= isoHere;
-                    // Minimum in 8 independent lanes: a single running minimum is a serial
-                    // dependency the compiler may not vectorise (NaN semantics).
+                    std::memset(dst + width, 0, rowStride - 1 - width);
+                    // Minimum in 8 independent lanes, written as a select so that it becomes
+                    // a vector minimum (std::min returns a reference and compiled to branches).
                     float lane[8];
                     std::fill(lane, lane + 8, std::numeric_limits<float>::infinity());
                     int x = 0;
                     for (; x + 8 <= width; x += 8)
-                        for (int k = 0; k < 8; ++k) lane[k] = std::min(lane[k], src[x + k]);
-                    for (; x < width; ++x) lane[0] = std::min(lane[0], src[x]);
-                    const float rowLowest = *std::min_element(lane, lane + 8);
-                    lowest = std::min(lowest, rowLowest);
+                        for (int k = 0; k < 8; ++k)
+                            lane[k] = src[x + k] < lane[k] ? src[x + k] : lane[k];
+                    for (; x < width; ++x) lane[0] = src[x] < lane[0] ? src[x] : lane[0];
+                    for (int k = 0; k < 8; ++k) lowest = lane[k] < lowest ? lane[k] : lowest;
                     const void* firstInside = std::memchr(dst, 1, width);
                     if (!firstInside) continue;
                     int last = width - 1;
                     while (!dst[last]) --last;
-                    RowInfo& row = rows[g.rowIndex(uy, uz)];
-                    row.insideFirst =
+                    RowInfo& info = rows[g.rowIndex(uy, uz)];
+                    info.insideFirst =
                         static_cast<int>(static_cast<const std::uint8_t*>(firstInside) - dst) + 1;
-                    row.insideLast = last + 1;
+                    info.insideLast = last + 1;
                 }
                 layerMin[uz] = lowest;
             }
@@ -253,17 +300,10 @@ Mesh marchingCubes(const Volume& volume, const MarchingCubesOptions& options) {
         g.pad = lowest < iso ? lowest : iso - 1.0f;
     }
 
-    // 8 bytes of a byte array as one word, to skip 7 empty cubes at once.
-    constexpr std::uint64_t kAllInside = 0x0101010101010101ull;
-    const auto word = [](const std::uint8_t* p) {
-        std::uint64_t w;
-        std::memcpy(&w, p, sizeof w);
-        return w;
-    };
-
     // Pass 2: per cube row, the cubes worth visiting (those near an inside point of the four
     // point rows it touches: the rest are all outside and are skipped), the crossed edges its
-    // point row owns, and its triangle count.
+    // point row owns, and its triangle count. 8 cubes per step; a step whose cubes are all
+    // outside or all inside (the block's values do not straddle the iso) costs 8 loads.
     const int cubeRowsY = g.m.y + 1, cubeRowsZ = g.m.z + 1;
     parallelFor(
         cubeRowsZ, threads,
@@ -278,11 +318,8 @@ Mesh marchingCubes(const Volume& volume, const MarchingCubesOptions& options) {
                             first = std::min(first, q.insideFirst);
                             last = std::max(last, q.insideLast);
                         }
-                    const std::size_t base = g.pointIndex(0, uy, uz);
-                    // Owned edges default to none; the loop below fills the visited points.
-                    std::memset(owned + base, 0, rowStride);
-                    if (uy + 1 == cubeRowsY) std::memset(owned + base + rowStride, 0, rowStride);
                     if (last < 0) continue;
+                    const std::size_t base = g.pointIndex(0, uy, uz);
                     row.cubeFirst = first - 1;
                     row.cubeLast = last;
                     std::uint32_t edges = 0, triangles = 0;
@@ -290,23 +327,13 @@ Mesh marchingCubes(const Volume& volume, const MarchingCubesOptions& options) {
                     const std::uint8_t* r1 = r0 + rowStride;
                     const std::uint8_t* r2 = r0 + sliceStride;
                     const std::uint8_t* r3 = r2 + rowStride;
-                    std::uint8_t* own = owned + base;
-                    for (int ux = row.cubeFirst; ux <= row.cubeLast;) {
-                        // Cubes ux .. ux+6 only touch points ux .. ux+7: when those are all
-                        // outside or all inside (the block's values do not straddle the iso),
-                        // there is nothing to do. Rows' owned edges lie within these four rows.
-                        const std::uint64_t w0 = word(r0 + ux), w1 = word(r1 + ux),
-                                            w2 = word(r2 + ux), w3 = word(r3 + ux);
-                        if ((w0 | w1 | w2 | w3) == 0 || (w0 & w1 & w2 & w3) == kAllInside) {
-                            ux += 7;
-                            continue;
-                        }
-                        const std::size_t pi = base + ux;
-                        const unsigned bits = ownedBits(cls, pi, rowStride, sliceStride);
-                        own[ux] = static_cast<std::uint8_t>(bits);
-                        edges += kBitCount3[bits];
-                        triangles += cases[cubeCase(cls, pi, rowStride, sliceStride)].triangleCount;
-                        ++ux;
+                    for (int ux = row.cubeFirst; ux <= row.cubeLast; ux += 8) {
+                        const std::uint64_t c = caseWord(r0, r1, r2, r3, ux);
+                        if (c == 0 || c == ~std::uint64_t{0}) continue;
+                        const std::uint64_t o = ownedWord(r0, rowStride, sliceStride, ux);
+                        edges += static_cast<std::uint32_t>((laneBitCounts(o) * kLanes) >> 56);
+                        for (int k = 0; k < 8; ++k)
+                            triangles += packed.asIs[lane(c, k)].triangleCount;
                     }
                     row.edgeVertices = edges;
                     row.triangles = triangles;
@@ -320,34 +347,43 @@ Mesh marchingCubes(const Volume& volume, const MarchingCubesOptions& options) {
     for (int uz = 0; uz < cubeRowsZ; ++uz)
         for (int uy = 0; uy < cubeRowsY; ++uy) {
             RowInfo& row = rows[g.rowIndex(uy, uz)];
-            row.vertexBase = vertexTotal;
+            row.vertexBase = static_cast<std::uint32_t>(vertexTotal);
             row.triangleBase = triangleTotal;
             vertexTotal += row.edgeVertices;
             triangleTotal += row.triangles;
+            if (vertexTotal > std::numeric_limits<std::uint32_t>::max())
+                throw Error("marching cubes: surface has too many vertices for 32-bit indices");
         }
-    if (vertexTotal > std::numeric_limits<std::uint32_t>::max())
-        throw Error("marching cubes: surface has too many vertices for 32-bit indices");
 
     Mesh mesh;
     mesh.positions.resize(vertexTotal);
     mesh.normals.resize(vertexTotal);
     mesh.triangles.resize(triangleTotal);
 
-    Placement place;
-    place.origin = volume.origin;
-    place.toWorld = volume.direction * glm::dmat3(glm::dvec3(volume.spacing.x, 0, 0),
+    VertexMaker maker;
+    maker.g = &g;
+    maker.values = volume.values.data();
+    maker.sy = volume.dims.x;
+    maker.sz = static_cast<std::ptrdiff_t>(volume.dims.x) * volume.dims.y;
+    maker.origin = volume.origin;
+    maker.toWorld = volume.direction * glm::dmat3(glm::dvec3(volume.spacing.x, 0, 0),
                                                   glm::dvec3(0, volume.spacing.y, 0),
                                                   glm::dvec3(0, 0, volume.spacing.z));
-    place.gradToWorld =
+    maker.gradToWorld =
         glm::mat3(volume.direction * glm::dmat3(glm::dvec3(1.0 / volume.spacing.x, 0, 0),
                                                 glm::dvec3(0, 1.0 / volume.spacing.y, 0),
                                                 glm::dvec3(0, 0, 1.0 / volume.spacing.z)));
+    maker.positions = mesh.positions.data();
+    maker.normals = mesh.normals.data();
     // A left-handed direction matrix mirrors the grid: flip the winding to stay outward.
-    const bool mirrored = glm::determinant(volume.direction) < 0.0;
+    const auto& table = glm::determinant(volume.direction) < 0.0 ? packed.mirrored : packed.asIs;
+    glm::uvec3* const outTriangles = mesh.triangles.data();
 
-    // Pass 4: generate. Each cube row walks its four point rows in step, keeping for each the
-    // id of the next owned edge vertex, so vertices shared with other rows are found without
-    // any lookup table. Rows past the ROI own nothing (their `owned` bytes stay 0).
+    // Pass 4: generate, per cube row: first the vertices of the edges its point row owns, in
+    // point order and x, y, z within a point (the order pass 3 numbered them in), then its
+    // triangles. The cube row walks its four point rows in step, keeping for each the id of
+    // its next owned vertex, so vertices owned by other rows are found without a lookup
+    // table.
     parallelFor(
         cubeRowsZ, threads,
         [&](int begin, int end) {
@@ -355,86 +391,116 @@ Mesh marchingCubes(const Volume& volume, const MarchingCubesOptions& options) {
                 for (int uy = 0; uy < cubeRowsY; ++uy) {
                     const RowInfo& row = rows[g.rowIndex(uy, uz)];
                     if (row.cubeLast < row.cubeFirst) continue;
-                    std::size_t cursor[4];
-                    const std::uint8_t* own[4];
-                    const std::uint8_t* clsRow[4];
+                    const std::size_t base = g.pointIndex(0, uy, uz);
+                    {
+                        // The volume row the z-edge gradients two rows on will read first: it
+                        // comes from memory, the other rows they read are already cached.
+                        const int vy = g.lo.y + uy + 2, vz = g.lo.z + uz + 1;
+                        if (vy < volume.dims.y && vz < volume.dims.z) {
+                            const float* pf = &volume.values[volume.index(g.lo.x, vy, vz)];
+                            const int xEnd = std::min(row.cubeLast + 1, g.m.x - 1);
+                            for (int x = std::max(row.cubeFirst - 2, 0); x <= xEnd; x += 16)
+                                __builtin_prefetch(pf + x);  // one 64-byte line per 16 floats
+                        }
+                    }
+                    if (row.edgeVertices) {
+                        const std::uint8_t* r0 = cls + base;
+                        // Central differences at both edge ends stay inside the ROI in y, z.
+                        const bool yz = uy >= 2 && uz >= 2;
+                        const bool interiorX = yz && uy <= g.m.y - 1 && uz <= g.m.z - 1;
+                        const bool interiorY = yz && uy + 1 <= g.m.y - 1 && uz <= g.m.z - 1;
+                        const bool interiorZ = yz && uy <= g.m.y - 1 && uz + 1 <= g.m.z - 1;
+                        std::uint32_t id = row.vertexBase;
+                        for (int ux = row.cubeFirst; ux <= row.cubeLast; ux += 8) {
+                            std::uint64_t w = ownedWord(r0, rowStride, sliceStride, ux);
+                            while (w) {
+                                const int k = std::countr_zero(w) >> 3;
+                                const unsigned bits = lane(w, k);
+                                w &= ~(std::uint64_t{0xff} << (8 * k));
+                                if (bits & 1) maker.make<0>(ux + k, uy, uz, id++, interiorX);
+                                if (bits & 2) maker.make<1>(ux + k, uy, uz, id++, interiorY);
+                                if (bits & 4) maker.make<2>(ux + k, uy, uz, id++, interiorZ);
+                            }
+                        }
+                    }
+                    if (row.triangles == 0) continue;
+
+                    // Triangles. The four point rows q = dy + 2 dz hold the cube row's edges.
+                    const std::uint8_t* r0 = cls + base;
+                    const std::uint8_t* r1 = r0 + rowStride;
+                    const std::uint8_t* r2 = r0 + sliceStride;
+                    const std::uint8_t* r3 = r2 + rowStride;
+                    const std::uint8_t* pointRow[4];
+                    std::uint32_t cursor[4];
                     int walkFirst = row.cubeFirst;
                     for (int q = 0; q < 4; ++q) {
                         const int qy = uy + (q & 1), qz = uz + (q >> 1);
-                        own[q] = owned + g.pointIndex(0, qy, qz);
-                        clsRow[q] = cls + g.pointIndex(0, qy, qz);
+                        pointRow[q] = cls + g.pointIndex(0, qy, qz);
                         cursor[q] = 0;
-                        if (qy >= cubeRowsY || qz >= cubeRowsZ) continue;
+                        if (qy >= cubeRowsY || qz >= cubeRowsZ) continue;  // owns nothing
                         const RowInfo& r = rows[g.rowIndex(qy, qz)];
                         cursor[q] = r.vertexBase;
                         // Start where the earliest of the four rows has owned edges.
-                        if (r.cubeLast >= r.cubeFirst) walkFirst = std::min(walkFirst, r.cubeFirst);
+                        if (r.edgeVertices) walkFirst = std::min(walkFirst, r.cubeFirst);
                     }
                     std::size_t triangleId = row.triangleBase;
-                    for (int ux = walkFirst; ux <= row.cubeLast;) {
-                        // Skip 7 cubes whose corners are all outside or all inside when no row
-                        // owns an edge there (the other rows' edges may leave these four rows).
-                        if ((word(own[0] + ux) | word(own[1] + ux) | word(own[2] + ux) |
-                             word(own[3] + ux)) == 0) {
-                            const std::uint64_t w0 = word(clsRow[0] + ux),
-                                                w1 = word(clsRow[1] + ux),
-                                                w2 = word(clsRow[2] + ux),
-                                                w3 = word(clsRow[3] + ux);
-                            if ((w0 | w1 | w2 | w3) == 0 || (w0 & w1 & w2 & w3) == kAllInside) {
-                                ux += 7;
-                                continue;
-                            }
+                    for (int ux = walkFirst; ux <= row.cubeLast; ux += 8) {
+                        std::uint64_t o[4];
+                        for (int q = 0; q < 4; ++q)
+                            o[q] = ownedWord(pointRow[q], rowStride, sliceStride, ux);
+                        const std::uint64_t c = caseWord(r0, r1, r2, r3, ux);
+                        if (c == 0 || c == ~std::uint64_t{0}) {
+                            // No triangles here, but rows 1-3 may own edges leaving the four
+                            // rows: step their cursors over them.
+                            for (int q = 0; q < 4; ++q)
+                                if (o[q])
+                                    cursor[q] += static_cast<std::uint32_t>(
+                                        (laneBitCounts(o[q]) * kLanes) >> 56);
+                            continue;
                         }
-                        const unsigned bits[4] = {own[0][ux], own[1][ux], own[2][ux], own[3][ux]};
-                        if (ux >= row.cubeFirst) {
-                            const std::size_t pi = g.pointIndex(ux, uy, uz);
-                            const mc::CubeCase& c =
-                                cases[cubeCase(cls, pi, rowStride, sliceStride)];
-                            // Owned edges of this point: create their vertices.
-                            if (bits[0]) {
-                                std::size_t id = cursor[0];
-                                for (int axis = 0; axis < 3; ++axis) {
-                                    if (!((bits[0] >> axis) & 1)) continue;
-                                    const EdgeVertex v = makeEdgeVertex(g, place, ux, uy, uz, axis);
-                                    mesh.positions[id] = v.position;
-                                    mesh.normals[id] = v.normal;
-                                    ++id;
-                                }
-                            }
-                            if (c.triangleCount) {
-                                std::uint32_t ref[12];
-                                for (int e = 0; e < 12; ++e) {
-                                    if (!((c.edgeMask >> e) & 1)) continue;
-                                    const int axis = e >> 2, o0 = e & 1, o1 = (e >> 1) & 1;
-                                    std::size_t id;
-                                    if (axis == 0) {
-                                        id = cursor[o0 +
-                                                    2 * o1];  // x-edge: point ux of row (o0, o1)
-                                    } else {
-                                        // y-edge: point ux + o0 of row (0, o1), after the x bit;
-                                        // z-edge: point ux + o0 of row (o1, 0), after x and y bits.
-                                        const int q = axis == 1 ? 2 * o1 : o1;
-                                        const unsigned before = axis == 1 ? 1u : 3u;
-                                        id = cursor[q];
-                                        if (o0) {
-                                            id += kBitCount3[bits[q]];
-                                            id += kBitCount3[own[q][ux + 1] & before];
-                                        } else {
-                                            id += kBitCount3[bits[q] & before];
-                                        }
-                                    }
-                                    ref[e] = static_cast<std::uint32_t>(id);
-                                }
-                                for (int t = 0; t < c.triangleCount; ++t) {
-                                    const auto& tri = c.triangles[t];
-                                    glm::uvec3 out(ref[tri[0]], ref[tri[1]], ref[tri[2]]);
-                                    if (mirrored) std::swap(out.y, out.z);
-                                    mesh.triangles[triangleId++] = out;
-                                }
-                            }
+                        // Per lane: owned vertices of each row up to and including that point.
+                        std::uint64_t upTo[4];
+                        for (int q = 0; q < 4; ++q) upTo[q] = laneBitCounts(o[q]) * kLanes;
+                        // Owned edges of the next point (y and z edges at the cube's far x).
+                        const std::uint64_t next0 = ownedWord(r0, rowStride, sliceStride, ux + 1),
+                                            next1 = ownedWord(r1, rowStride, sliceStride, ux + 1),
+                                            next2 = ownedWord(r2, rowStride, sliceStride, ux + 1);
+                        for (int k = 0; k < 8; ++k) {
+                            const PackedCase& pc = table[lane(c, k)];
+                            if (!pc.triangleCount) continue;
+                            // Ids of the first owned vertex of point ux + k (before) and of
+                            // point ux + k + 1 (after) in rows 0, 1 and 2; row 3 needs before.
+                            std::uint32_t before[4], after[3];
+                            for (int q = 0; q < 4; ++q)
+                                before[q] = cursor[q] + (k ? lane(upTo[q], k - 1) : 0u);
+                            for (int q = 0; q < 3; ++q) after[q] = cursor[q] + lane(upTo[q], k);
+                            const unsigned b0 = lane(o[0], k), b1 = lane(o[1], k),
+                                           b2 = lane(o[2], k);
+                            const unsigned n0 = lane(next0, k), n1 = lane(next1, k),
+                                           n2 = lane(next2, k);
+                            // Edge e: axis e / 4 from the corner offset by bits of e % 4 in
+                            // the other two axes (lower axis first). Within a point the owned
+                            // vertices come in the order x, y, z.
+                            std::uint32_t ref[12];
+                            ref[0] = before[0];
+                            ref[1] = before[1];
+                            ref[2] = before[2];
+                            ref[3] = before[3];
+                            ref[4] = before[0] + (b0 & 1);
+                            ref[5] = after[0] + (n0 & 1);
+                            ref[6] = before[2] + (b2 & 1);
+                            ref[7] = after[2] + (n2 & 1);
+                            ref[8] = before[0] + (b0 & 1) + ((b0 >> 1) & 1);
+                            ref[9] = after[0] + (n0 & 1) + ((n0 >> 1) & 1);
+                            ref[10] = before[1] + (b1 & 1) + ((b1 >> 1) & 1);
+                            ref[11] = after[1] + (n1 & 1) + ((n1 >> 1) & 1);
+                            const std::uint8_t* e = pc.edges;
+                            for (int t = 0; t < pc.triangleCount; ++t, e += 3)
+                                outTriangles[triangleId++] =
+                                    glm::uvec3(ref[e[0]], ref[e[1]], ref[e[2]]);
                         }
-                        for (int q = 0; q < 4; ++q) cursor[q] += kBitCount3[bits[q]];
-                        ++ux;
+                        for (int q = 0; q < 4; ++q)
+                            cursor[q] += static_cast<std::uint32_t>(upTo[q] >> 56);
                     }
                 }
             }

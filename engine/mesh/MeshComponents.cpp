@@ -72,7 +72,7 @@ std::vector<std::size_t> componentSizes(const Mesh& mesh) {
 void keepComponents(Mesh& mesh, const std::vector<bool>& keep) {
     constexpr std::uint32_t kUnused = std::numeric_limits<std::uint32_t>::max();
     std::vector<std::uint32_t> remap(mesh.positions.size(), kUnused);
-    std::vector<glm::uvec3> triangles;
+    MeshArray<glm::uvec3> triangles;
     std::vector<std::uint32_t> component;
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
         const std::uint32_t c = mesh.component[t];

@@ -3,7 +3,6 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "core/Error.h"
-#include "core/Parallel.h"
 #include "volume/Volume.h"
 #include "volume/VolumeStats.h"
 
@@ -66,22 +65,6 @@ TEST(VolumeStats, PercentilesOfKnownValues) {
     EXPECT_EQ(s.percentiles[1], 1.0);
     EXPECT_EQ(s.percentiles[2], 50.0);
     EXPECT_EQ(s.percentiles[3], 99.0);
-}
-
-TEST(Parallel, CoversEveryIndexOnceWithFixedChunks) {
-    for (int threads : {1, 2, 3, 8}) {
-        std::vector<int> hits(1000, 0);
-        fm::parallelFor(1000, threads, [&](int b, int e) {
-            for (int i = b; i < e; ++i) hits[i] += 1;
-        }, 4);
-        for (int h : hits) ASSERT_EQ(h, 1);
-    }
-}
-
-TEST(Parallel, RethrowsExceptionsFromWorkers) {
-    EXPECT_THROW(fm::parallelFor(10, 2, [](int b, int) {
-        if (b > 0) throw fm::Error("boom");
-    }), fm::Error);
 }
 
 }  // namespace
