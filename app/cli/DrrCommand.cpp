@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "cli/CommandRegistry.h"
-#include "cli/VolumeOption.h"
 #include "cli/SceneOptions.h"
+#include "cli/VolumeOption.h"
 #include "core/Error.h"
 #include "core/Parallel.h"
 #include "drr/Drr.h"
@@ -95,6 +95,7 @@ void runDrr(const DrrArgs& a) {
     fm::DrrValueOptions valueOptions;
     valueOptions.values = a.values == "raw" ? fm::DrrValues::Raw : fm::DrrValues::Mu;
     valueOptions.thresholdHU = a.thresholdHU;
+    valueOptions.threads = a.threads;
     start = std::chrono::steady_clock::now();
     const fm::DrrVolumePtr prepared = fm::prepareDrrVolume(volume, valueOptions);
     const double prepareMs = msSince(start);

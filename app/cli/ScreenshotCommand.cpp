@@ -77,6 +77,7 @@ void runScreenshot(const ScreenshotArgs& args) {
         fm::app::App app(*backend, options.app);
         app.waitForLoad();
         if (!app.scene()) throw fm::Error(app.state().load.error);
+        fm::app::checkGivenPoses(options.app, app.state().translationRangeMm);
         for (int i = 0; i < 3; ++i) app.frame();
         const auto exact = fm::app::measureSliderDrag(app, args.measureDrag, false);
         const auto coarse = fm::app::measureSliderDrag(app, args.measureDrag, true);

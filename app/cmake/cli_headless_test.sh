@@ -5,6 +5,7 @@
 #  2. `fluoromatch app` without DISPLAY says so and writes a headless screenshot (exit 0);
 #  3. a volume that cannot be read fails with the reader's message (exit 1), no PNG.
 #  4. geometry --geometry with --volume is refused (the volume would be ignored).
+#  5. a --reference-pose or --pose the sliders cannot reach is refused, not clamped.
 set -uo pipefail
 FM=$1
 OUT=$(mktemp -d)
@@ -39,4 +40,15 @@ rc=$?
 [ $rc -ne 0 ] || fail "geometry --geometry with --volume was accepted (the volume would be ignored)"
 grep -q "excludes" <<<"$msg" || fail "the refusal does not say the options exclude each other: $msg"
 "$FM" geometry --geometry "$OUT/g.json" > /dev/null || fail "geometry --geometry alone exited $?"
+# 5. poses beyond the sliders' reach (the knee's translation range is well under 500 mm).
+msg=$("$FM" screenshot --out "$OUT/far.png" --reference-pose 500,0,0,0,0,0 2>&1)
+rc=$?
+[ $rc -eq 1 ] || fail "an unreachable --reference-pose gave exit $rc, not 1"
+grep -q "reference-pose: x offset 500 mm is outside the slider range" <<<"$msg" \
+    || fail "the refusal does not name the parameter and range: $msg"
+[ ! -e "$OUT/far.png" ] || fail "a PNG was written for an unreachable reference pose"
+msg=$("$FM" screenshot --out "$OUT/far.png" --pose 0,0,-900,0,0,0 2>&1)
+rc=$?
+[ $rc -eq 1 ] || fail "an unreachable --pose gave exit $rc, not 1"
+grep -q "pose: z offset -900 mm" <<<"$msg" || fail "the --pose refusal is unclear: $msg"
 echo PASS

@@ -31,6 +31,11 @@ struct ParameterSpec {
 // The 2011 ranges for the angles; the translation range is set per volume (fits the CT).
 std::array<ParameterSpec, kParameterCount> parameterSpecs(double translationRangeMm);
 
+// Throws fm::Error naming the first parameter of `pose` outside its slider range. A pose given
+// on the command line must be one the sliders can reach: it is refused, not silently clamped.
+// `what` names the pose in the message ("--reference-pose").
+void checkPoseWithinSliders(const Pose& pose, double translationRangeMm, const std::string& what);
+
 enum class CompareMode { Difference, Overlay, Checkerboard };
 
 struct DisplaySettings {

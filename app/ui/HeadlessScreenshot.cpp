@@ -6,6 +6,12 @@
 
 namespace fm::app {
 
+void checkGivenPoses(const AppOptions& options, double translationRangeMm) {
+    if (options.userPose) checkPoseWithinSliders(*options.userPose, translationRangeMm, "--pose");
+    if (options.referencePose)
+        checkPoseWithinSliders(*options.referencePose, translationRangeMm, "--reference-pose");
+}
+
 render::RgbaImage renderHeadless(const HeadlessOptions& options,
                                  const std::function<void(App&)>& script) {
     auto backend = createOsmesaBackend(options.size);
@@ -13,6 +19,7 @@ render::RgbaImage renderHeadless(const HeadlessOptions& options,
     app.waitForLoad();
     if (!app.scene())
         throw Error(app.state().load.error.empty() ? "no volume loaded" : app.state().load.error);
+    checkGivenPoses(options.app, app.state().translationRangeMm);
     app.state().display.compare = options.compare;
     app.state().showHelp = options.showHelp;
     if (options.pressMatch) app.state().requests.match = true;

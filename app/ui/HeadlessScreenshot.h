@@ -22,9 +22,13 @@ struct HeadlessOptions {
     CompareMode compare = CompareMode::Difference;
 };
 
+// Throws fm::Error when a pose given in `options` lies outside the sliders' reach for a volume
+// whose translation range is `translationRangeMm`.
+void checkGivenPoses(const AppOptions& options, double translationRangeMm);
+
 // Draws the UI headless and returns the last frame. `script` (optional) runs after the load
 // with the live App, e.g. to drive the UI. Throws fm::Error (with the reader's message) when the
-// volume cannot be loaded.
+// volume cannot be loaded, or when a given pose is out of the sliders' reach.
 render::RgbaImage renderHeadless(const HeadlessOptions& options,
                                  const std::function<void(App&)>& script = {});
 

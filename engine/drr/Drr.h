@@ -32,6 +32,7 @@ struct DrrValueOptions {
     bool cropToContent = true;  // crop to the bounding box of the non-zero values
     int brickSize = 8;          // edge of the empty-space bricks in voxels (>= 1)
     int downsample = 1;         // >1: average f*f*f blocks first (approximate, for previews)
+    int threads = 0;            // preparation threads (0 = all cores); the result is the same
 };
 
 enum class DrrOutput {

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "core/Error.h"
+#include "core/Parallel.h"
 #include "drr/Drr.h"
 #include "drr/DrrVolume.h"
 
@@ -24,19 +25,33 @@ namespace {
 
 // Converted values of the whole source grid, downsampled by `f` (block means) if f > 1.
 // Returns the grid's dims, spacing and the world position of its voxel (0,0,0)'s centre.
+// In parallel over slices; every output value depends on its inputs only, and the error names
+// the first infinite voxel in memory order, so the result never depends on the thread count.
 std::vector<float> convertedValues(const Volume& volume, const DrrValueOptions& options,
-                                   glm::ivec3& dims, glm::dvec3& spacing, glm::dvec3& origin) {
+                                   int threads, glm::ivec3& dims, glm::dvec3& spacing,
+                                   glm::dvec3& origin) {
     const int f = options.downsample;
+    const std::size_t sliceSize = static_cast<std::size_t>(volume.dims.x) * volume.dims.y;
     std::vector<float> fine(volume.voxelCount());
-    for (std::size_t n = 0; n < fine.size(); ++n) {
-        const float stored = volume.values[n];
-        if (std::isinf(stored)) {
-            std::ostringstream msg;
-            msg << "volume '" << volume.meta.source << "' holds an infinite value at voxel " << n
-                << ": cannot compute a DRR";
-            throw Error(msg.str());
-        }
-        fine[n] = static_cast<float>(drrVoxelValue(stored, options));
+    constexpr std::size_t kNone = static_cast<std::size_t>(-1);
+    std::vector<std::size_t> firstInfinite(volume.dims.z, kNone);
+    parallelFor(
+        volume.dims.z, threads,
+        [&](int k0, int k1) {
+            for (int k = k0; k < k1; ++k)
+                for (std::size_t n = k * sliceSize; n < (k + 1) * sliceSize; ++n) {
+                    const float stored = volume.values[n];
+                    if (std::isinf(stored) && firstInfinite[k] == kNone) firstInfinite[k] = n;
+                    fine[n] = static_cast<float>(drrVoxelValue(stored, options));
+                }
+        },
+        4);
+    for (std::size_t n : firstInfinite) {
+        if (n == kNone) continue;
+        std::ostringstream msg;
+        msg << "volume '" << volume.meta.source << "' holds an infinite value at voxel " << n
+            << ": cannot compute a DRR";
+        throw Error(msg.str());
     }
     if (f == 1) {
         dims = volume.dims;
@@ -49,49 +64,89 @@ std::vector<float> convertedValues(const Volume& volume, const DrrValueOptions& 
     // Coarse voxel I covers fine voxels [I f, I f + f): its centre is at fine index I f + (f-1)/2.
     origin = volume.indexToWorld(glm::dvec3((f - 1) * 0.5));
     std::vector<float> coarse(static_cast<std::size_t>(dims.x) * dims.y * dims.z);
-    for (int K = 0; K < dims.z; ++K)
-        for (int J = 0; J < dims.y; ++J)
-            for (int I = 0; I < dims.x; ++I) {
-                double sum = 0.0;
-                int count = 0;
-                for (int k = K * f; k < std::min(K * f + f, volume.dims.z); ++k)
-                    for (int j = J * f; j < std::min(J * f + f, volume.dims.y); ++j)
-                        for (int i = I * f; i < std::min(I * f + f, volume.dims.x); ++i) {
-                            sum += fine[volume.index(i, j, k)];
-                            ++count;
-                        }
-                coarse[I + static_cast<std::size_t>(dims.x) *
-                               (J + static_cast<std::size_t>(dims.y) * K)] =
-                    static_cast<float>(sum / count);
-            }
+    parallelFor(
+        dims.z, threads,
+        [&](int K0, int K1) {
+            for (int K = K0; K < K1; ++K)
+                for (int J = 0; J < dims.y; ++J)
+                    for (int I = 0; I < dims.x; ++I) {
+                        double sum = 0.0;
+                        int count = 0;
+                        for (int k = K * f; k < std::min(K * f + f, volume.dims.z); ++k)
+                            for (int j = J * f; j < std::min(J * f + f, volume.dims.y); ++j)
+                                for (int i = I * f; i < std::min(I * f + f, volume.dims.x); ++i) {
+                                    sum += fine[volume.index(i, j, k)];
+                                    ++count;
+                                }
+                        coarse[I + static_cast<std::size_t>(dims.x) *
+                                       (J + static_cast<std::size_t>(dims.y) * K)] =
+                            static_cast<float>(sum / count);
+                    }
+        },
+        4);
     return coarse;
 }
 
-void buildBricks(DrrVolume& v) {
+void buildBricks(DrrVolume& v, int threads) {
     const int b = v.brickSize;
     v.brickDims = (v.dims + (b - 1)) / b;
     const std::size_t count =
         static_cast<std::size_t>(v.brickDims.x) * v.brickDims.y * v.brickDims.z;
     v.brickValue.assign(count, 0.0f);
     v.brickMixed.assign(count, 0);
-    for (int bk = 0; bk < v.brickDims.z; ++bk)
-        for (int bj = 0; bj < v.brickDims.y; ++bj)
-            for (int bi = 0; bi < v.brickDims.x; ++bi) {
-                const std::size_t brick =
-                    bi + static_cast<std::size_t>(v.brickDims.x) *
-                             (bj + static_cast<std::size_t>(v.brickDims.y) * bk);
-                const float first = v.values[v.at(bi * b, bj * b, bk * b)];
-                bool mixed = false;
-                for (int k = bk * b; k < std::min(bk * b + b, v.dims.z) && !mixed; ++k)
-                    for (int j = bj * b; j < std::min(bj * b + b, v.dims.y) && !mixed; ++j)
-                        for (int i = bi * b; i < std::min(bi * b + b, v.dims.x); ++i)
-                            if (v.values[v.at(i, j, k)] != first) {
-                                mixed = true;
-                                break;
-                            }
-                v.brickMixed[brick] = mixed ? 1 : 0;
-                v.brickValue[brick] = mixed ? 0.0f : first;
-            }
+    parallelFor(
+        v.brickDims.z, threads,
+        [&](int bk0, int bk1) {
+            for (int bk = bk0; bk < bk1; ++bk)
+                for (int bj = 0; bj < v.brickDims.y; ++bj)
+                    for (int bi = 0; bi < v.brickDims.x; ++bi) {
+                        const std::size_t brick =
+                            bi + static_cast<std::size_t>(v.brickDims.x) *
+                                     (bj + static_cast<std::size_t>(v.brickDims.y) * bk);
+                        const float first = v.values[v.at(bi * b, bj * b, bk * b)];
+                        bool mixed = false;
+                        for (int k = bk * b; k < std::min(bk * b + b, v.dims.z) && !mixed; ++k)
+                            for (int j = bj * b; j < std::min(bj * b + b, v.dims.y) && !mixed; ++j)
+                                for (int i = bi * b; i < std::min(bi * b + b, v.dims.x); ++i)
+                                    if (v.values[v.at(i, j, k)] != first) {
+                                        mixed = true;
+                                        break;
+                                    }
+                        v.brickMixed[brick] = mixed ? 1 : 0;
+                        v.brickValue[brick] = mixed ? 0.0f : first;
+                    }
+        },
+        4);
+}
+
+// Bounding box [lo, hi] of the non-zero values; hi.x < 0 when there are none. Per slice in
+// parallel (min and max combine in any order), each row scanned from both ends.
+void nonZeroBox(const std::vector<float>& grid, glm::ivec3 dims, int threads, glm::ivec3& lo,
+                glm::ivec3& hi) {
+    std::vector<glm::ivec3> sliceLo(dims.z, dims), sliceHi(dims.z, glm::ivec3(-1));
+    parallelFor(
+        dims.z, threads,
+        [&](int k0, int k1) {
+            for (int k = k0; k < k1; ++k)
+                for (int j = 0; j < dims.y; ++j) {
+                    const float* row = &grid[static_cast<std::size_t>(dims.x) *
+                                             (j + static_cast<std::size_t>(dims.y) * k)];
+                    int first = 0;
+                    while (first < dims.x && row[first] == 0.0f) ++first;
+                    if (first == dims.x) continue;
+                    int last = dims.x - 1;
+                    while (row[last] == 0.0f) --last;
+                    sliceLo[k] = glm::min(sliceLo[k], glm::ivec3(first, j, k));
+                    sliceHi[k] = glm::max(sliceHi[k], glm::ivec3(last, j, k));
+                }
+        },
+        4);
+    lo = dims;
+    hi = glm::ivec3(-1);
+    for (int k = 0; k < dims.z; ++k) {
+        lo = glm::min(lo, sliceLo[k]);
+        hi = glm::max(hi, sliceHi[k]);
+    }
 }
 
 }  // namespace
@@ -106,6 +161,7 @@ DrrVolumePtr prepareDrrVolume(const Volume& volume, const DrrValueOptions& optio
     if (options.downsample < 1 || options.downsample > 16)
         throw Error("DRR downsample factor must be 1..16, got " +
                     std::to_string(options.downsample));
+    if (options.threads < 0) throw Error("DRR preparation thread count must not be negative");
     if (options.thresholdHU && !std::isfinite(*options.thresholdHU))
         throw Error("DRR threshold must be a finite number");
 
@@ -117,45 +173,45 @@ DrrVolumePtr prepareDrrVolume(const Volume& volume, const DrrValueOptions& optio
         if ((1 << shift) == options.brickSize) v->brickShift = shift;
     glm::ivec3 gridDims;
     glm::dvec3 gridOrigin;
-    std::vector<float> grid = convertedValues(volume, options, gridDims, v->spacing, gridOrigin);
-    auto gridIndex = [&](int i, int j, int k) {
-        return i + static_cast<std::size_t>(gridDims.x) *
-                       (j + static_cast<std::size_t>(gridDims.y) * k);
-    };
+    const int threads = options.threads <= 0 ? defaultThreadCount() : options.threads;
+    std::vector<float> grid =
+        convertedValues(volume, options, threads, gridDims, v->spacing, gridOrigin);
 
     // Bounding box of the non-zero values (everything outside contributes exactly nothing).
-    glm::ivec3 lo = gridDims, hi(-1);
-    if (options.cropToContent) {
-        for (int k = 0; k < gridDims.z; ++k)
-            for (int j = 0; j < gridDims.y; ++j)
-                for (int i = 0; i < gridDims.x; ++i)
-                    if (grid[gridIndex(i, j, k)] != 0.0f) {
-                        lo = glm::min(lo, glm::ivec3(i, j, k));
-                        hi = glm::max(hi, glm::ivec3(i, j, k));
-                    }
-        v->empty = hi.x < 0;
-        if (v->empty) lo = hi = glm::ivec3(0);  // keep one voxel so every size stays positive
-    } else {
+    glm::ivec3 lo, hi;
+    nonZeroBox(grid, gridDims, threads, lo, hi);
+    v->empty = hi.x < 0;
+    if (!options.cropToContent) {
         lo = glm::ivec3(0);
         hi = gridDims - 1;
-        v->empty = std::all_of(grid.begin(), grid.end(), [](float x) { return x == 0.0f; });
+    } else if (v->empty) {
+        lo = hi = glm::ivec3(0);  // keep one voxel so every size stays positive
     }
     v->cropBegin = lo;
     v->dims = hi - lo + 1;
     v->paddedDims = v->dims + 2;
     v->values.assign(static_cast<std::size_t>(v->paddedDims.x) * v->paddedDims.y * v->paddedDims.z,
                      0.0f);
-    for (int k = 0; k < v->dims.z; ++k)
-        for (int j = 0; j < v->dims.y; ++j)
-            for (int i = 0; i < v->dims.x; ++i)
-                v->values[v->at(i, j, k)] = grid[gridIndex(lo.x + i, lo.y + j, lo.z + k)];
+    parallelFor(
+        v->dims.z, threads,
+        [&](int k0, int k1) {
+            for (int k = k0; k < k1; ++k)
+                for (int j = 0; j < v->dims.y; ++j) {
+                    const float* src =
+                        &grid[lo.x +
+                              static_cast<std::size_t>(gridDims.x) *
+                                  (lo.y + j + static_cast<std::size_t>(gridDims.y) * (lo.z + k))];
+                    std::copy(src, src + v->dims.x, &v->values[v->at(0, j, k)]);
+                }
+        },
+        4);
 
     v->origin = gridOrigin;
     v->direction = volume.direction;
     v->worldToLocal = glm::inverse(volume.direction);
     v->localShift = v->spacing * (0.5 - glm::dvec3(lo));
     v->invSpacing = 1.0 / v->spacing;
-    buildBricks(*v);
+    buildBricks(*v, threads);
     return v;
 }
 

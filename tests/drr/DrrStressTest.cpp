@@ -344,6 +344,37 @@ TEST(DrrStress, ThreadCountDoesNotChangeAPixel) {
     }
 }
 
+TEST(DrrStress, PreparationThreadCountDoesNotChangeAPixel) {
+    // Preparation runs per slice in parallel (conversion, downsampling, crop box, bricks):
+    // the prepared volume, and so every pixel, must be the same for any thread count.
+    const fm::Volume ct = ctLikeVolume(fm::test::rotation(10, {0, 0.2, 1}));
+    const fm::ProjectionGeometry g =
+        fm::test::orbitGeometry(ct.center(), 25, -10, 400, 300, 48, 2.0);
+    for (int downsample : {1, 3}) {
+        for (std::optional<double> threshold :
+             {std::optional<double>(), std::optional<double>(300.0)}) {
+            fm::DrrValueOptions v;
+            v.downsample = downsample;
+            v.thresholdHU = threshold;
+            v.threads = 1;
+            const auto one = fm::prepareDrrVolume(ct, v);
+            const fm::Image reference = fm::renderDrr(*one, g, {});
+            EXPECT_GT(fm::test::maxAbs(reference), 0.01);
+            for (int threads : {2, 3, 7}) {
+                v.threads = threads;
+                const auto many = fm::prepareDrrVolume(ct, v);
+                const fm::DrrVolumeInfo a = fm::drrVolumeInfo(*one), b = fm::drrVolumeInfo(*many);
+                EXPECT_EQ(a.dims, b.dims);
+                EXPECT_EQ(a.cropBegin, b.cropBegin);
+                EXPECT_EQ(a.bricksEmpty, b.bricksEmpty);
+                EXPECT_EQ(a.bricksUniform, b.bricksUniform);
+                EXPECT_EQ(reference.pixels, fm::renderDrr(*many, g, {}).pixels)
+                    << threads << " threads, downsample " << downsample;
+            }
+        }
+    }
+}
+
 TEST(DrrStress, EveryPixelFiniteInAwkwardGeometries) {
     const fm::Volume ct = ctLikeVolume(fm::test::rotation(90, {0, 0, 1}));
     const auto prepared = fm::prepareDrrVolume(ct, {});
@@ -417,8 +448,22 @@ TEST(DrrStress, BadInputsThrowErrors) {
     bad.downsample = 0;
     EXPECT_THROW(fm::prepareDrrVolume(v, bad), fm::Error);
     v.values[5] = std::numeric_limits<float>::infinity();
-    EXPECT_THROW(fm::prepareDrrVolume(v, {}), fm::Error);
-    v.values[5] = 1.0f;
+    v.values[60] = -std::numeric_limits<float>::infinity();
+    for (int threads : {1, 2, 4}) {  // the message names the first one, whatever the threads
+        bad = {};
+        bad.threads = threads;
+        try {
+            fm::prepareDrrVolume(v, bad);
+            ADD_FAILURE() << "an infinite voxel was accepted";
+        } catch (const fm::Error& e) {
+            EXPECT_NE(std::string(e.what()).find("infinite value at voxel 5:"), std::string::npos)
+                << e.what();
+        }
+    }
+    v.values[5] = v.values[60] = 1.0f;
+    bad = {};
+    bad.threads = -1;
+    EXPECT_THROW(fm::prepareDrrVolume(v, bad), fm::Error);
     const auto prepared = fm::prepareDrrVolume(v, {});
     fm::ProjectionGeometry g = fm::test::orbitGeometry(v.center(), 0, 0, 100, 100, 8, 1.0);
     g.source.x = std::nan("");
