@@ -9,8 +9,8 @@
 #include <string>
 
 #include "cli/CommandRegistry.h"
-#include "cli/VolumeOption.h"
 #include "cli/SearchCli.h"
+#include "cli/VolumeOption.h"
 #include "core/Error.h"
 #include "core/Parallel.h"
 #include "search/Evaluation.h"
@@ -76,8 +76,8 @@ void runEvaluate(const EvaluateArgs& a) {
             if (csv) {
                 const fm::StartBin& b = settings.bins[t.bin];
                 csv << fm::toString(t.method) << ',' << b.lowMm << ',' << b.highMm << ',' << t.start
-                    << ',' << t.startMtreMm << ',' << t.final.meanMm << ',' << t.final.inPlaneMm
-                    << ',' << t.final.outOfPlaneMm << ',' << t.seconds << ',' << t.cpuSeconds << ','
+                    << ',' << t.startMtreMm << ',' << t.final.meanMm << ',' << t.final.meanInPlaneMm
+                    << ',' << t.final.meanDepthMm << ',' << t.seconds << ',' << t.cpuSeconds << ','
                     << t.evaluations << ',' << (t.success ? 1 : 0)
                     << std::endl;  // flushed: partial runs count
             }

@@ -9,11 +9,12 @@
 #include <string>
 
 #include "cli/CommandRegistry.h"
-#include "cli/VolumeOption.h"
 #include "cli/SearchCli.h"
+#include "cli/VolumeOption.h"
 #include "core/Error.h"
+#include "match/PoseError.h"
 #include "search/Registration.h"
-#include "search/TargetError.h"
+#include "search/RegistrationTargets.h"
 #include "volume/VolumeSource.h"
 
 namespace {
@@ -86,15 +87,17 @@ void runRegister(const RegisterArgs& a) {
         std::printf("\n%-14s %9s %9s %9s %9s %9s %9s\n", "", "x mm", "y mm", "z mm", "az deg",
                     "el deg", "rot deg");
         printPoseRow("truth", truth->toArray());
-        printPoseRow("start error", fm::parameterError(*truth, start));
-        printPoseRow("final error", fm::parameterError(*truth, result.pose));
+        printPoseRow("start error", fm::poseDifference(*truth, start));
+        printPoseRow("final error", fm::poseDifference(*truth, result.pose));
         const auto targets = fm::registrationTargets(volume);
-        const fm::TargetError before = fm::targetError(model(*truth), model(start), targets);
-        const fm::TargetError after = fm::targetError(model(*truth), model(result.pose), targets);
+        const fm::TargetRegistrationError before =
+            fm::targetRegistrationError(model(*truth), model(start), targets);
+        const fm::TargetRegistrationError after =
+            fm::targetRegistrationError(model(*truth), model(result.pose), targets);
         std::printf(
             "\nmTRE        start %.3f mm -> final %.3f mm (in-plane %.3f mm, "
             "out-of-plane %.3f mm; %zu targets)\n",
-            before.meanMm, after.meanMm, after.inPlaneMm, after.outOfPlaneMm, targets.size());
+            before.meanMm, after.meanMm, after.meanInPlaneMm, after.meanDepthMm, targets.size());
     }
     std::printf("time        %.3f s (%d evaluations, %.2f ms each)%s\n", result.seconds,
                 result.evaluations, 1000.0 * result.seconds / std::max(1, result.evaluations),

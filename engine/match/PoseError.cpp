@@ -87,13 +87,10 @@ glm::dvec3 toCameraFrame(const ProjectionGeometry& geometry, const glm::dvec3& w
     return {glm::dot(d, geometry.detector.u), glm::dot(d, geometry.detector.v), glm::dot(d, n)};
 }
 
-TargetRegistrationError targetRegistrationError(const Pose& a, const Pose& b,
-                                                const SceneSetup& setup,
-                                                const glm::dvec3& volumeCenter,
+TargetRegistrationError targetRegistrationError(const ProjectionGeometry& ga,
+                                                const ProjectionGeometry& gb,
                                                 const std::vector<glm::dvec3>& points) {
     if (points.empty()) throw Error("target registration error: no target points");
-    const ProjectionGeometry ga = sceneGeometry(a, setup, volumeCenter);
-    const ProjectionGeometry gb = sceneGeometry(b, setup, volumeCenter);
     TargetRegistrationError e;
     for (const glm::dvec3& p : points) {
         const glm::dvec3 d = toCameraFrame(ga, p) - toCameraFrame(gb, p);
@@ -108,6 +105,15 @@ TargetRegistrationError targetRegistrationError(const Pose& a, const Pose& b,
     e.meanInPlaneMm /= n;
     e.meanDepthMm /= n;
     return e;
+}
+
+TargetRegistrationError targetRegistrationError(const Pose& a, const Pose& b,
+                                                const SceneSetup& setup,
+                                                const glm::dvec3& volumeCenter,
+                                                const std::vector<glm::dvec3>& points) {
+    if (points.empty()) throw Error("target registration error: no target points");
+    return targetRegistrationError(sceneGeometry(a, setup, volumeCenter),
+                                   sceneGeometry(b, setup, volumeCenter), points);
 }
 
 }  // namespace fm

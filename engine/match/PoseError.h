@@ -56,6 +56,13 @@ struct TargetRegistrationError {
     double maxMm = 0.0;          // the worst point
 };
 
+// mTRE between two projections of the same CT: each point in the camera frame of `a` and of
+// `b` (serves calibrated geometries and the search's pose models). Throws fm::Error if
+// `points` is empty.
+TargetRegistrationError targetRegistrationError(const ProjectionGeometry& a,
+                                                const ProjectionGeometry& b,
+                                                const std::vector<glm::dvec3>& points);
+
 // mTRE between two poses of the same scene. `volumeCenter` is Volume::center() of the CT the
 // points lie in. Throws fm::Error if `points` is empty (or a pose or the setup is unusable).
 TargetRegistrationError targetRegistrationError(const Pose& a, const Pose& b,

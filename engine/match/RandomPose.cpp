@@ -6,7 +6,7 @@
 
 #include "core/Error.h"
 #include "match/FilmCoverage.h"
-#include "match/SplitMix64.h"
+#include "core/Random.h"
 
 namespace fm {
 
@@ -36,7 +36,7 @@ Pose randomPose(const std::vector<glm::dvec3>& bonePoints, const glm::dvec3& vol
                 const SceneSetup& setup, std::uint64_t seed, const RandomPoseOptions& options) {
     validateRandomPoseOptions(options);
     if (bonePoints.empty()) throw Error("random pose: no bone points to frame");
-    SplitMix64 rng(seed);
+    Rng rng(seed);
     FilmCoverage best;
     for (int attempt = 0; attempt < options.maxTries; ++attempt) {
         Pose p;

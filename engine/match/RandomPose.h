@@ -25,7 +25,7 @@ struct RandomPoseOptions {
 // ranges, fractions outside 0..1 or maxTries < 1.
 void validateRandomPoseOptions(const RandomPoseOptions& options);
 
-// The first acceptable candidate drawn from SplitMix64(seed); every value rounded to 0.1 (mm or
+// The first acceptable candidate drawn from Rng(seed) (SplitMix64); every value rounded to 0.1 (mm or
 // deg) so that it reads well. Deterministic for a given seed and inputs. Throws fm::Error if
 // `bonePoints` is empty or no candidate in maxTries is acceptable.
 Pose randomPose(const std::vector<glm::dvec3>& bonePoints, const glm::dvec3& volumeCenter,

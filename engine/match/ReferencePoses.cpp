@@ -8,7 +8,7 @@
 #include <string_view>
 
 #include "core/Error.h"
-#include "match/SplitMix64.h"
+#include "core/Random.h"
 
 namespace fm {
 
@@ -81,7 +81,7 @@ std::vector<ReferencePose> readReferencePoses(const std::filesystem::path& path)
 
 std::size_t pickReferencePose(std::size_t count, std::uint64_t seed) {
     if (count == 0) throw Error("cannot pick a reference pose from an empty list");
-    SplitMix64 rng(seed);
+    Rng rng(seed);
     return static_cast<std::size_t>(rng.next() % count);
 }
 

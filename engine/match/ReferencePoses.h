@@ -25,7 +25,7 @@ std::vector<ReferencePose> parseReferencePoses(const std::string& text,
                                                const std::string& what = "reference poses");
 std::vector<ReferencePose> readReferencePoses(const std::filesystem::path& path);
 
-// Index in 0..count-1 chosen from the seed (SplitMix64: the same on every platform).
+// Index in 0..count-1 chosen from the seed (fm::Rng: the same on every platform).
 // Throws fm::Error if count is 0.
 std::size_t pickReferencePose(std::size_t count, std::uint64_t seed);
 

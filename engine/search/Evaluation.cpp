@@ -35,7 +35,7 @@ Pose startPoseInBin(const Pose& truth, const PoseModel& model,
             return Pose::fromArray(p);
         };
         auto mtre = [&](double t) {
-            return targetError(truthGeometry, model(poseAt(t)), targets).meanMm;
+            return targetRegistrationError(truthGeometry, model(poseAt(t)), targets).meanMm;
         };
         // Bracket the goal, then bisect (mTRE grows with t along a line for these ranges).
         double lo = 0.0, hi = 1.0;
@@ -92,8 +92,9 @@ std::vector<EvaluationTrial> runEvaluation(
                 t.method = method;
                 t.bin = static_cast<int>(b);
                 t.start = s;
-                t.startMtreMm = targetError(truthGeometry, model(start), targets).meanMm;
-                t.final = targetError(truthGeometry, model(r.pose), targets);
+                t.startMtreMm =
+                    targetRegistrationError(truthGeometry, model(start), targets).meanMm;
+                t.final = targetRegistrationError(truthGeometry, model(r.pose), targets);
                 t.seconds = r.seconds;
                 t.cpuSeconds = cpu;
                 t.evaluations = r.evaluations;
@@ -120,8 +121,8 @@ std::vector<EvaluationBinSummary> summarizeBins(const std::vector<EvaluationTria
                 ++s.count;
                 successes += t.success;
                 mtre.push_back(t.final.meanMm);
-                inPlane.push_back(t.final.inPlaneMm);
-                outOfPlane.push_back(t.final.outOfPlaneMm);
+                inPlane.push_back(t.final.meanInPlaneMm);
+                outOfPlane.push_back(t.final.meanDepthMm);
                 seconds.push_back(t.seconds);
                 cpu.push_back(t.cpuSeconds);
             }

@@ -12,8 +12,9 @@
 #include <functional>
 #include <vector>
 
+#include "match/PoseError.h"
 #include "search/Registration.h"
-#include "search/TargetError.h"
+#include "search/RegistrationTargets.h"
 
 namespace fm {
 
@@ -43,7 +44,7 @@ struct EvaluationTrial {
     int bin = 0;
     int start = 0;  // index within the bin
     double startMtreMm = 0.0;
-    TargetError final;
+    TargetRegistrationError final;
     double seconds = 0.0;     // wall clock
     double cpuSeconds = 0.0;  // processor time of the whole process (all threads)
     int evaluations = 0;

@@ -9,7 +9,7 @@
 #include <limits>
 #include <vector>
 
-#include "search/Random.h"
+#include "core/Random.h"
 
 namespace fm {
 

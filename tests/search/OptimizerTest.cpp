@@ -8,7 +8,7 @@
 #include "core/Error.h"
 #include "search/CmaEs.h"
 #include "search/Optimizer.h"
-#include "search/Random.h"
+#include "core/Random.h"
 
 namespace fm {
 namespace {

@@ -9,7 +9,7 @@
 #include "search/Evaluation.h"
 #include "search/PoseModel.h"
 #include "search/Registration.h"
-#include "search/TargetError.h"
+#include "search/RegistrationTargets.h"
 #include "volume/VolumeSource.h"
 
 namespace fm {
@@ -45,7 +45,7 @@ void expectNear(const glm::dvec3& a, const glm::dvec3& b, double tol) {
     EXPECT_NEAR(a.z, b.z, tol);
 }
 
-TEST(TargetError, TranslationsSplitIntoInPlaneAndDepth) {
+TEST(TargetRegistrationError, CameraTranslationsSplitIntoInPlaneAndDepth) {
     const ProjectionGeometry truth = sceneGeometry(Pose{}, defaultSceneSetup(), glm::dvec3(0.0));
     const std::vector<glm::dvec3> targets{{0, 0, 0}, {10, 20, -30}, {-40, 5, 12}};
     // Moving the camera by d along its own axes moves every target by -d in camera coordinates:
@@ -54,35 +54,12 @@ TEST(TargetError, TranslationsSplitIntoInPlaneAndDepth) {
     const glm::dvec3 d = 3.0 * truth.detector.u + 4.0 * truth.detector.normal();
     shifted.source += d;
     shifted.detector.origin += d;
-    const TargetError e = targetError(truth, shifted, targets);
+    const TargetRegistrationError e = targetRegistrationError(truth, shifted, targets);
     EXPECT_NEAR(e.meanMm, 5.0, 1e-9);
-    EXPECT_NEAR(e.inPlaneMm, 3.0, 1e-9);
-    EXPECT_NEAR(e.outOfPlaneMm, 4.0, 1e-9);
-    EXPECT_NEAR(targetError(truth, truth, targets).meanMm, 0.0, 1e-12);
-    EXPECT_THROW(targetError(truth, truth, {}), Error);
-}
-
-TEST(TargetError, AgreesWithThePoseBasedMtreOfMatch) {
-    // Two independent implementations of one definition: geometry-based here, pose-based in
-    // match/PoseError.h.
-    const auto targets = registrationTargets(knee().volume);
-    const Pose a = parsePose("1,-2,3,10,5,-4"), b = parsePose("-2,0.5,1,14,2,3");
-    const TargetError mine = targetError(knee().model(a), knee().model(b), targets);
-    const TargetRegistrationError theirs =
-        targetRegistrationError(a, b, knee().setup, knee().volume.center(), targets);
-    EXPECT_NEAR(mine.meanMm, theirs.meanMm, 1e-9);
-    EXPECT_NEAR(mine.inPlaneMm, theirs.meanInPlaneMm, 1e-9);
-    EXPECT_NEAR(mine.outOfPlaneMm, theirs.meanDepthMm, 1e-9);
-}
-
-TEST(TargetError, ParameterErrorWrapsAzimuth) {
-    Pose a, b;
-    a.azimuthDeg = 179.0;
-    b.azimuthDeg = -179.0;
-    b.offset.x = 2.5;
-    const auto d = parameterError(a, b);
-    EXPECT_NEAR(d[0], 2.5, 1e-12);
-    EXPECT_NEAR(d[3], 2.0, 1e-12);
+    EXPECT_NEAR(e.meanInPlaneMm, 3.0, 1e-9);
+    EXPECT_NEAR(e.meanDepthMm, 4.0, 1e-9);
+    EXPECT_NEAR(targetRegistrationError(truth, truth, targets).meanMm, 0.0, 1e-12);
+    EXPECT_THROW(targetRegistrationError(truth, truth, {}), Error);
 }
 
 TEST(PoseModel, FixedGeometryZeroPoseIsTheGivenGeometryAndMovesLikeTheScene) {
@@ -153,7 +130,8 @@ TEST(Registration, RecoversThePhantomPoseFromA5mm5DegStart) {
     const Image reference = render(knee().model(truth));
     const Pose start = parsePose("3,-3,2,13.5,2,-3");  // 3-3.5 mm and deg off per parameter
     const auto targets = registrationTargets(knee().volume);
-    const double startMtre = targetError(knee().model(truth), knee().model(start), targets).meanMm;
+    const double startMtre =
+        targetRegistrationError(knee().model(truth), knee().model(start), targets).meanMm;
     EXPECT_GT(startMtre, 4.0);  // the start really is that far off
     for (SearchMethod m : globalSearchMethods()) {
         RegistrationSettings s;
@@ -165,7 +143,8 @@ TEST(Registration, RecoversThePhantomPoseFromA5mm5DegStart) {
         s.polishEvaluations = 120;
         const Registration reg(knee().prepared, reference, knee().model, s);
         const RegistrationResult r = reg.run(start);
-        const TargetError e = targetError(knee().model(truth), knee().model(r.pose), targets);
+        const TargetRegistrationError e =
+            targetRegistrationError(knee().model(truth), knee().model(r.pose), targets);
         EXPECT_LT(e.meanMm, kSuccessMtreMm) << toString(m) << " ended at " << formatPose(r.pose);
         EXPECT_LE(r.evaluations, reg.totalBudget());
         EXPECT_FALSE(r.stopped);
@@ -225,7 +204,8 @@ TEST(Evaluation, StartPosesLandInTheirBins) {
     for (const StartBin& bin : standardStartBins())
         for (int i = 0; i < 5; ++i) {
             const Pose p = startPoseInBin(truth, knee().model, targets, bin, rng);
-            const double e = targetError(knee().model(truth), knee().model(p), targets).meanMm;
+            const double e =
+                targetRegistrationError(knee().model(truth), knee().model(p), targets).meanMm;
             EXPECT_GE(e, bin.lowMm);
             EXPECT_LE(e, bin.highMm);
         }

@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "core/Error.h"
-#include "search/Random.h"
+#include "core/Random.h"
 #include "similarity/Gradient.h"
 #include "similarity/GradientDifference.h"
 #include "similarity/GradientNcc.h"

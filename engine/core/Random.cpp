@@ -1,4 +1,4 @@
-#include "search/Random.h"
+#include "core/Random.h"
 
 #include <cmath>
 #include <numbers>
@@ -8,7 +8,7 @@ namespace fm {
 std::uint64_t Rng::below(std::uint64_t n) {
     const std::uint64_t limit = UINT64_MAX - UINT64_MAX % n;
     std::uint64_t x;
-    do x = engine_();
+    do x = next();
     while (x >= limit);
     return x % n;
 }
