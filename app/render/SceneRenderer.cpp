@@ -163,10 +163,9 @@ void SceneRenderer::resize(glm::ivec2 size) {
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
-void SceneRenderer::uploadMesh(const app::LoadedScene& scene) {
-    if (scene.generation == meshGeneration_) return;
-    meshGeneration_ = scene.generation;
-    const Mesh& mesh = *scene.mesh;
+void SceneRenderer::uploadMesh(const Mesh& mesh, std::uint64_t generation) {
+    if (generation == meshGeneration_) return;
+    meshGeneration_ = generation;
     std::vector<glm::vec3> interleaved;
     interleaved.reserve(mesh.positions.size() * 2);
     for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
@@ -189,7 +188,8 @@ void SceneRenderer::uploadMesh(const app::LoadedScene& scene) {
     glBindVertexArray(0);
 }
 
-void SceneRenderer::draw(const app::LoadedScene* scene, const Pose& pose, const app::View3d& view,
+void SceneRenderer::draw(const app::LoadedScene* scene, const Mesh* bone,
+                         std::uint64_t boneGeneration, const Pose& pose, const app::View3d& view,
                          GLuint filmTexture, glm::ivec2 size, bool multisample) {
     size = glm::max(size, glm::ivec2(16));
     resize(size);
@@ -232,8 +232,8 @@ void SceneRenderer::draw(const app::LoadedScene* scene, const Pose& pose, const 
         meshShader_.use();
         meshShader_.set("uViewProjection", viewProjection);
         meshShader_.set("uCameraPosition", camera.position);
-        if (view.showBone && meshIndexCount_ >= 0 && scene->mesh) {
-            uploadMesh(*scene);
+        if (view.showBone && bone) {
+            uploadMesh(*bone, boneGeneration);
             meshShader_.set("uModel", glm::translate(glm::mat4(1.0f), glm::vec3(shift)));
             meshShader_.set("uColor", kBoneColor);
             meshShader_.set("uAmbient", 0.25f);

@@ -12,6 +12,7 @@
 #include <glm/glm.hpp>
 
 #include "geometry/Pose.h"
+#include "mesh/Mesh.h"
 #include "platform/Gl.h"
 #include "render/Shader.h"
 #include "state/AppState.h"
@@ -38,8 +39,11 @@ class SceneRenderer {
     // Draws into the offscreen texture of the given size (re-created when the size changes).
     // `filmTexture` is the user's DRR (0: a blank film). Restores the default framebuffer.
     // `multisample` false draws straight into the shown texture (fast while interacting).
-    void draw(const app::LoadedScene* scene, const Pose& pose, const app::View3d& view,
-              GLuint filmTexture, glm::ivec2 size, bool multisample = true);
+    // `bone` (may be null) is the surface to show; it is uploaded again only when
+    // `boneGeneration` changes.
+    void draw(const app::LoadedScene* scene, const Mesh* bone, std::uint64_t boneGeneration,
+              const Pose& pose, const app::View3d& view, GLuint filmTexture, glm::ivec2 size,
+              bool multisample = true);
 
     GLuint texture() const { return resolveTexture_; }
     // The last drawn view as RGBA, row 0 = top (golden tests of the 3D view alone).
@@ -50,7 +54,7 @@ class SceneRenderer {
 
   private:
     void resize(glm::ivec2 size);
-    void uploadMesh(const app::LoadedScene& scene);
+    void uploadMesh(const Mesh& mesh, std::uint64_t generation);
 
     ShaderProgram meshShader_, lineShader_, filmShader_;
     glm::ivec2 size_{0};

@@ -74,6 +74,9 @@ std::shared_ptr<LoadedScene> buildScene(const std::string& spec, const SceneProg
     }
     progress("done", 1.0f);
 
+    const auto range = std::minmax_element(volume->values.begin(), volume->values.end());
+    scene->minValue = *range.first;
+    scene->maxValue = *range.second;
     scene->center = volume->center();
     for (int c = 0; c < 8; ++c) {
         const glm::dvec3 ijk((c & 1) ? volume->dims.x - 0.5 : -0.5,
@@ -97,11 +100,9 @@ std::shared_ptr<LoadedScene> buildScene(const std::string& spec, const SceneProg
     if (have > 0.0 && needed > have) scene->setup.filmSizeMm *= needed / have;
 
     char text[256];
-    std::snprintf(text, sizeof(text),
-                  "%d x %d x %d voxels of %.3g x %.3g x %.3g mm\n%zu bone triangles (iso %.4g)",
+    std::snprintf(text, sizeof(text), "%d x %d x %d voxels of %.3g x %.3g x %.3g mm",
                   volume->dims.x, volume->dims.y, volume->dims.z, volume->spacing.x,
-                  volume->spacing.y, volume->spacing.z, scene->mesh->triangleCount(),
-                  scene->isoValue);
+                  volume->spacing.y, volume->spacing.z);
     scene->summary = text;
     scene->volume = std::move(volume);
     scene->generation = nextGeneration++;

@@ -20,15 +20,16 @@ struct LoadedScene {
     std::uint64_t generation = 0;  // changes with every loaded scene (cache keys)
     std::shared_ptr<const Volume> volume;
     DrrVolumePtr drrVolume;
-    std::shared_ptr<const Mesh> mesh;        // bone surface, world mm
-    double isoValue = 0.0;                   // the surface level used
+    std::shared_ptr<const Mesh> mesh;        // bone surface at load, world mm
+    double isoValue = 0.0;                   // the surface level used (and the mTRE targets')
+    float minValue = 0.0f, maxValue = 0.0f;  // the volume's value range (bone level limits)
     SceneSetup setup;                        // distances and film, fitted to the volume
     glm::dvec3 center{0.0};                  // Volume::center()
     std::array<glm::dvec3, 8> boxCorners{};  // voxel-box corners, world mm (bit i: +i axis)
     double translationRangeMm = 100.0;       // slider range for the offsets
     std::vector<glm::dvec3> bonePoints;      // mTRE targets (engine/match); empty if no bone
     double loadSeconds = 0.0, prepareSeconds = 0.0, meshSeconds = 0.0;
-    std::string summary;  // one line for the UI
+    std::string summary;  // one line for the UI: size and spacing
 };
 
 // Progress of buildScene: stage name and fraction 0..1 over the stages.

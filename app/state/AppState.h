@@ -86,6 +86,7 @@ struct Timings {
     double lastCoarseMs = 0.0;
     double referenceDrrMs = 0.0;
     double frameMs = 0.0;  // CPU time of the last whole frame
+    double meshMs = 0.0;   // last bone surface (marching cubes)
     int coarseFactor = 2;  // detector downsampling while dragging
 };
 
@@ -122,7 +123,16 @@ struct Requests {
     bool applySolution = false;  // set the sliders to the solver's pose
     bool reveal = false;
     bool resetView = false;
+    bool remesh = false;  // rebuild the bone surface at BoneSurface::level
     std::optional<std::string> loadVolume;
+};
+
+// The bone surface of the 3D view: the level the user asks for, and what is shown.
+struct BoneSurface {
+    float level = 300.0f;                    // asked for (HU for CTs); rebuilt when a drag ends
+    float minLevel = 0.0f, maxLevel = 1.0f;  // the volume's value range
+    double shownLevel = 0.0;                 // the level of the surface drawn
+    std::size_t triangles = 0;               // ... and its size
 };
 
 struct AppState {
@@ -140,6 +150,7 @@ struct AppState {
     double toleranceOffsetMm = 0.0, toleranceAngleDeg = 0.0, toleranceMinNcc = 0.0;
     DisplaySettings display;
     View3d view;
+    BoneSurface bone;
     bool showHelp = false;
     bool showTimings = true;  // off for golden images: timings differ run to run
     std::string volumePathField;

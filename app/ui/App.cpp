@@ -6,7 +6,9 @@
 #include <algorithm>
 #include <chrono>
 
+#include "core/Error.h"
 #include "match/PoseError.h"
+#include "mesh/MarchingCubes.h"
 #include "platform/Gl.h"
 #include "render/SceneRenderer.h"
 #include "render/Texture.h"
@@ -86,6 +88,11 @@ void App::installLoadResult(SceneLoader::Result result) {
     state_.load.loadedSpec = scene_->spec;
     state_.load.summary = scene_->summary;
     state_.translationRangeMm = scene_->translationRangeMm;
+    state_.bone.minLevel = scene_->minValue;
+    state_.bone.maxLevel = std::max(scene_->maxValue, scene_->minValue + 1.0f);
+    state_.bone.level = static_cast<float>(scene_->isoValue);
+    showBone(scene_->mesh, scene_->isoValue);
+    state_.timings.meshMs = scene_->meshSeconds * 1000.0;
     for (int a = 0; a < 3; ++a)
         state_.userPose.offset[a] = std::clamp(
             state_.userPose.offset[a], -scene_->translationRangeMm, scene_->translationRangeMm);
@@ -104,6 +111,34 @@ void App::installLoadResult(SceneLoader::Result result) {
         newReference();
     }
     firstScene_ = false;
+}
+
+void App::showBone(std::shared_ptr<const Mesh> mesh, double level) {
+    bone_ = std::move(mesh);
+    ++boneGeneration_;
+    state_.bone.shownLevel = level;
+    state_.bone.triangles = bone_ ? bone_->triangleCount() : 0;
+}
+
+void App::remesh() {
+    // Cached: the surface is rebuilt only for a level other than the one shown.
+    if (!scene_ || double(state_.bone.level) == state_.bone.shownLevel) return;
+    MarchingCubesOptions options;
+    options.isoValue = state_.bone.level;
+    options.threads = options_.drrThreads;
+    const auto start = std::chrono::steady_clock::now();
+    std::shared_ptr<const Mesh> mesh;
+    try {
+        mesh = std::make_shared<const Mesh>(marchingCubes(*scene_->volume, options));
+    } catch (const Error& e) {  // e.g. more vertices than 32-bit indices hold: keep the old one
+        state_.load.error = e.what();
+        state_.bone.level = static_cast<float>(state_.bone.shownLevel);
+        return;
+    }
+    state_.timings.meshMs =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    ++remeshes_;
+    showBone(std::move(mesh), options.isoValue);
 }
 
 void App::newReference() {
@@ -192,6 +227,7 @@ void App::processRequests() {
         loader_.start(*requests.loadVolume);
     }
     if (requests.newReference) newReference();
+    if (requests.remesh) remesh();
     if (requests.stopSolve) {
         solver_.stop();
         pollSolver();
@@ -328,6 +364,7 @@ void App::frame() {
     // slider or orbits it skips multisampling (4x MSAA costs ~4x on llvmpipe).
     const bool fast = state_.interacting || ImGui::IsMouseDown(ImGuiMouseButton_Left);
     const SceneKey sceneKey{scene_ ? scene_->generation : 0,
+                            boneGeneration_,
                             state_.userPose.toArray(),
                             state_.view.azimuthDeg,
                             state_.view.elevationDeg,
@@ -341,9 +378,9 @@ void App::frame() {
                             shownKey_.level,
                             fast};
     if (sceneKey != sceneKey_) {
-        sceneRenderer_->draw(scene_.get(), state_.userPose, state_.view,
-                             userTexture_->empty() ? 0 : userTexture_->id(), ui_.sceneViewSize(),
-                             !fast);
+        sceneRenderer_->draw(scene_.get(), bone_.get(), boneGeneration_, state_.userPose,
+                             state_.view, userTexture_->empty() ? 0 : userTexture_->id(),
+                             ui_.sceneViewSize(), !fast);
         sceneKey_ = sceneKey;
         ++sceneDraws_;
     }

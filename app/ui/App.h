@@ -59,6 +59,8 @@ class App {
     int exactUserRenders() const { return exactUserRenders_; }
     int coarseUserRenders() const { return coarseUserRenders_; }
     int sceneDraws() const { return sceneDraws_; }  // how often the 3D view was redrawn
+    const Mesh* boneMesh() const { return bone_.get(); }
+    int remeshes() const { return remeshes_; }  // surfaces built for a new bone level
     const Solver& solver() const { return solver_; }
     // The pose whose DRR the user pane shows: the solver's best so far while it runs.
     const Pose& shownUserPose() const;
@@ -72,6 +74,8 @@ class App {
     void newReference();
     void startSolve();
     void pollSolver();
+    void showBone(std::shared_ptr<const Mesh> mesh, double level);
+    void remesh();
 
     RenderBackend& backend_;
     AppOptions options_;
@@ -79,6 +83,10 @@ class App {
     Ui ui_;
     SceneLoader loader_;
     std::shared_ptr<LoadedScene> scene_;
+    // The bone surface shown: the scene's until the user picks another level.
+    std::shared_ptr<const Mesh> bone_;
+    std::uint64_t boneGeneration_ = 0;  // changes with every new surface (GPU upload key)
+    int remeshes_ = 0;
     DrrCache referenceCache_{2}, userCache_{6};
     Image referenceDrr_, userDrr_;
     std::uint64_t referenceVersion_ = 0, userVersion_ = 0;
@@ -96,7 +104,7 @@ class App {
         bool operator==(const DisplayKey&) const = default;
     } shownKey_;
     struct SceneKey {
-        std::uint64_t generation = 0;
+        std::uint64_t generation = 0, boneSurface = 0;
         std::array<double, 6> pose{};
         float azimuth = 0, elevation = 0, zoom = 0;
         bool bone = false, box = false, apparatus = false;

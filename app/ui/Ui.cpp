@@ -148,7 +148,20 @@ void Ui::userPane(AppState& state, const Pane& pane, unsigned texture) {
 
 void Ui::scenePane(AppState& state, const Pane& pane, unsigned texture) {
     beginPane("3D view", pane);
-    const float reserve = ImGui::GetFrameHeightWithSpacing();
+    // The controls under the view take one row, or two when the pane is too narrow for one.
+    const ImGuiStyle& style = ImGui::GetStyle();
+    const float levelWidth = ImGui::CalcTextSize("-0000").x + style.FramePadding.x * 2;
+    const auto checkboxWidth = [&](const char* label) {
+        return ImGui::GetFrameHeight() + style.ItemInnerSpacing.x + ImGui::CalcTextSize(label).x;
+    };
+    const float firstPart = ImGui::CalcTextSize("Reset view").x + style.FramePadding.x * 2 +
+                            checkboxWidth("Bone") + levelWidth + style.ItemInnerSpacing.x +
+                            ImGui::CalcTextSize("level").x + 2 * style.ItemSpacing.x;
+    const float secondPart =
+        checkboxWidth("CT box") + checkboxWidth("Source+film") + style.ItemSpacing.x;
+    const bool twoRows =
+        firstPart + style.ItemSpacing.x + secondPart > ImGui::GetContentRegionAvail().x;
+    const float reserve = ImGui::GetFrameHeightWithSpacing() * (twoRows ? 2.0f : 1.0f);
     const ImVec2 avail = ImGui::GetContentRegionAvail();
     const ImVec2 size(std::max(16.0f, avail.x), std::max(16.0f, avail.y - reserve));
     const ImVec2 origin = ImGui::GetCursorScreenPos();
@@ -177,6 +190,18 @@ void Ui::scenePane(AppState& state, const Pane& pane, unsigned texture) {
     ImGui::SameLine();
     ImGui::Checkbox("Bone", &state.view.showBone);
     ImGui::SameLine();
+    ImGui::SetNextItemWidth(levelWidth);
+    ImGui::DragFloat("level", &state.bone.level, 5.0f, state.bone.minLevel, state.bone.maxLevel,
+                     "%.0f", ImGuiSliderFlags_AlwaysClamp);
+    record("drag:bone-level");
+    // Rebuilt once the drag (or typed value) is done, not at every step of it.
+    if (ImGui::IsItemDeactivatedAfterEdit()) state.requests.remesh = true;
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip(
+            "Level of the bone surface (HU for CTs): drag, or double-click and type.\n"
+            "Shown: %zu triangles at %.0f (marching cubes %.0f ms)",
+            state.bone.triangles, state.bone.shownLevel, state.timings.meshMs);
+    if (!twoRows) ImGui::SameLine();
     ImGui::Checkbox("CT box", &state.view.showBox);
     ImGui::SameLine();
     ImGui::Checkbox("Source+film", &state.view.showApparatus);
@@ -271,6 +296,9 @@ void Ui::parameterPane(AppState& state, const Pane& pane) {
         ImGui::TextColored(kDim, "%s",
                            load.loadedSpec.empty() ? "No CT loaded" : load.loadedSpec.c_str());
         ImGui::TextColored(kDim, "%s", load.summary.c_str());
+        if (!load.loadedSpec.empty())
+            ImGui::TextColored(kDim, "%zu bone triangles (iso %.4g)", state.bone.triangles,
+                               state.bone.shownLevel);
     }
     if (!load.error.empty()) ImGui::TextColored(kBad, "%s", load.error.c_str());
     ImGui::End();

@@ -7,6 +7,7 @@
 #include "AppFixture.h"
 #include "common/TestData.h"
 #include "drr/Drr.h"
+#include "mesh/MarchingCubes.h"
 #include "render/SceneRenderer.h"
 #include "scene/DrrCache.h"
 
@@ -69,6 +70,36 @@ double grabTolerance(const app::WidgetRect& rect) {
 }
 
 using ScriptedUi = HeadlessApp;
+
+TEST_F(ScriptedUi, DraggingTheBoneLevelRebuildsTheSurfaceOnceOnRelease) {
+    const Mesh* before = app->boneMesh();
+    ASSERT_NE(before, nullptr);
+    EXPECT_EQ(before->triangleCount(), app->scene()->mesh->triangleCount());
+    EXPECT_EQ(app->state().bone.shownLevel, 300.0);
+    const int drawsBefore = app->sceneDraws();
+    // Drag the level to the right: 5 units per pixel, so 40 px is about +200.
+    const app::WidgetRect level = script->widget("drag:bone-level");
+    script->drag(level.center(), level.center() + glm::vec2(40.0f, 0.0f), 8);
+    script->idle(2);
+    const float asked = app->state().bone.level;
+    EXPECT_GT(asked, 300.0f + 100.0f);
+    EXPECT_EQ(app->remeshes(), 1) << "one surface for the whole drag, built on release";
+    EXPECT_EQ(app->state().bone.shownLevel, double(asked));
+    // The shown surface is marching cubes at the new level (independently computed here).
+    MarchingCubesOptions options;
+    options.isoValue = asked;
+    const Mesh expected = marchingCubes(*app->scene()->volume, options);
+    ASSERT_NE(app->boneMesh(), nullptr);
+    EXPECT_EQ(app->boneMesh()->triangleCount(), expected.triangleCount());
+    // At ~500 the phantom's cortex (1000+) is a shell around the softer marrow: another surface.
+    EXPECT_NE(expected.triangleCount(), before->triangleCount());
+    EXPECT_EQ(app->state().bone.triangles, expected.triangleCount());
+    EXPECT_GT(app->sceneDraws(), drawsBefore) << "the 3D view shows the new surface";
+    // Asking again for the level already shown costs nothing.
+    app->state().requests.remesh = true;
+    script->idle(1);
+    EXPECT_EQ(app->remeshes(), 1);
+}
 
 TEST_F(ScriptedUi, DraggingTheAzimuthSliderChangesItAndRerendersTheUserDrr) {
     const Image before = app->userDrr();
