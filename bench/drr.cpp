@@ -15,11 +15,11 @@
 #include <cstdlib>
 #include <ctime>
 #include <filesystem>
-#include <fstream>
 #include <functional>
 #include <map>
 #include <memory>
 #include <optional>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -28,6 +28,7 @@
 #include "core/Error.h"
 #include "drr/Drr.h"
 #include "geometry/Pose.h"
+#include "io/AtomicFile.h"
 #include "io/ReadVolume.h"
 #include "phantom/Phantoms.h"
 
@@ -166,11 +167,7 @@ std::vector<Scene> loadScenes(bool quick) {
 }
 
 int runTable(const std::string& csvPath, bool quick) {
-    std::ofstream csv(csvPath);
-    if (!csv) {
-        std::fprintf(stderr, "cannot write %s\n", csvPath.c_str());
-        return 1;
-    }
+    std::ostringstream csv;  // written atomically at the end (io/AtomicFile)
     csv << "volume,dims,kept_dims,detector,mode,threads,ms_median,cpu_ms_median,max_rel_error,"
            "rms_rel_error\n";
     std::printf("%-20s %-12s %-12s %-8s %-16s %3s %9s %9s %11s %11s\n", "volume", "dims", "kept",
@@ -223,6 +220,7 @@ int runTable(const std::string& csvPath, bool quick) {
             }
         }
     }
+    fm::io::writeFileAtomically(csvPath, csv.str());
     std::printf("CSV written to %s\n", csvPath.c_str());
     return 0;
 }

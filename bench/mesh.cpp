@@ -13,11 +13,11 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <string>
 #include <vector>
 
+#include "io/AtomicFile.h"
 #include "io/ReadVolume.h"
 #include "io/VolumeWriter.h"
 #include "mesh/MarchingCubes.h"
@@ -95,11 +95,8 @@ int main(int argc, char** argv) {
     }
     // Volumes stay alive for the whole run (benchmarks hold pointers to them).
     static std::map<std::string, fm::Volume> volumes;
-    std::ofstream list;
-    if (!exportDir.empty()) {
-        std::filesystem::create_directories(exportDir);
-        list.open(std::filesystem::path(exportDir) / "volumes.txt");
-    }
+    std::string list;  // volumes.txt, written atomically (io/AtomicFile) after the volumes
+    if (!exportDir.empty()) std::filesystem::create_directories(exportDir);
     for (const auto& b : kVolumes) {
         if (!b.path.empty() && !std::filesystem::exists(sharedData() / b.path)) {
             std::fprintf(stderr, "skipping %s: %s not found\n", b.name.c_str(),
@@ -107,9 +104,11 @@ int main(int argc, char** argv) {
             continue;
         }
         const fm::Volume& v = volumes[b.name] = load(b);
-        if (list.is_open()) {
+        if (!exportDir.empty()) {
             fm::writeMetaImage(v, std::filesystem::path(exportDir) / (b.name + ".mha"), false);
-            list << b.name << " " << b.iso << "\n";
+            char iso[32];
+            std::snprintf(iso, sizeof iso, "%g", b.iso);
+            list += b.name + " " + iso + "\n";
         }
         for (int threads : {1, 2}) {
             benchmark::RegisterBenchmark(
@@ -126,6 +125,8 @@ int main(int argc, char** argv) {
                 ->UseRealTime();
         }
     }
+    if (!exportDir.empty())
+        fm::io::writeFileAtomically(std::filesystem::path(exportDir) / "volumes.txt", list);
     benchmark::RunSpecifiedBenchmarks();
     benchmark::Shutdown();
     return 0;

@@ -3,7 +3,7 @@
 // and out-of-plane parts, capture range and time per registration. See docs/search.md.
 #include <unistd.h>
 #include <cstdio>
-#include <fstream>
+#include <chrono>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -13,6 +13,7 @@
 #include "cli/VolumeOption.h"
 #include "core/Error.h"
 #include "core/Parallel.h"
+#include "io/AtomicFile.h"
 #include "search/Evaluation.h"
 #include "volume/VolumeSource.h"
 
@@ -42,11 +43,21 @@ void runEvaluate(const EvaluateArgs& a) {
         settings.methods.push_back(method);
     }
     if (settings.methods.empty()) throw fm::Error("--methods: give at least one method");
-    std::ofstream csv;
-    if (!a.csv.empty()) {
-        csv.open(a.csv);
-        if (!csv) throw fm::Error(a.csv + ": cannot open for writing");
-    }
+    // The CSV is rewritten whole and atomically: the header before any work (a path that
+    // cannot be written fails now, not after the run), then at most once a second while trials
+    // finish (an interrupted run keeps complete rows), and at the end. A pipe or device gets
+    // the whole file once, at the end.
+    const bool csv = !a.csv.empty();
+    const bool saveOften = csv && !fm::io::writesThrough(a.csv);
+    std::ostringstream rows;
+    rows << "method,bin_low_mm,bin_high_mm,start,start_mtre_mm,final_mtre_mm,"
+            "final_in_plane_mm,final_out_of_plane_mm,seconds,cpu_seconds,evaluations,success\n";
+    auto lastSave = std::chrono::steady_clock::now();
+    const auto saveCsv = [&] {
+        fm::io::writeFileAtomically(a.csv, rows.str());
+        lastSave = std::chrono::steady_clock::now();
+    };
+    if (saveOften) saveCsv();
 
     const fm::Volume volume = fm::loadVolume(a.volume);
     const fm::DrrVolumePtr prepared = fm::cli::prepareForSearch(volume, a.search.values);
@@ -66,26 +77,29 @@ void runEvaluate(const EvaluateArgs& a) {
                 fm::cli::describeLevels(settings.registration).c_str());
     std::fflush(stdout);
 
-    if (csv)
-        csv << "method,bin_low_mm,bin_high_mm,start,start_mtre_mm,final_mtre_mm,"
-               "final_in_plane_mm,final_out_of_plane_mm,seconds,cpu_seconds,evaluations,success\n";
     const bool interactive = isatty(fileno(stderr)) != 0;
     const auto trials = fm::runEvaluation(
         prepared, reference, model, truth, targets, settings,
         [&](const fm::EvaluationTrial& t, int done, int total) {
             if (csv) {
                 const fm::StartBin& b = settings.bins[t.bin];
-                csv << fm::toString(t.method) << ',' << b.lowMm << ',' << b.highMm << ',' << t.start
+                rows << fm::toString(t.method) << ',' << b.lowMm << ',' << b.highMm << ',' << t.start
                     << ',' << t.startMtreMm << ',' << t.final.meanMm << ',' << t.final.meanInPlaneMm
                     << ',' << t.final.meanDepthMm << ',' << t.seconds << ',' << t.cpuSeconds << ','
-                    << t.evaluations << ',' << (t.success ? 1 : 0)
-                    << std::endl;  // flushed: partial runs count
+                     << t.evaluations << ',' << (t.success ? 1 : 0) << '\n';
+                if (saveOften &&
+                    std::chrono::steady_clock::now() - lastSave > std::chrono::seconds(1))
+                    saveCsv();
             }
             if (interactive || done == total || done % 10 == 0)
                 std::fprintf(stderr, "%sregistration %d/%d (%s)%s", interactive ? "\r" : "", done,
                              total, fm::toString(t.method), interactive ? "   " : "\n");
         });
     if (interactive) std::fprintf(stderr, "\n");
+    if (csv) {
+        saveCsv();
+        std::printf("wrote %s\n", a.csv.c_str());
+    }
 
     std::printf("\n%-6s %-9s %4s %8s %12s %10s %13s %10s %9s\n", "method", "start mm", "n",
                 "success", "median mTRE", "in-plane", "out-of-plane", "time/reg", "cpu/reg");

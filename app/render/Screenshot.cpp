@@ -1,11 +1,13 @@
 #include "render/Screenshot.h"
 
 #include <stb_image.h>
-#include <stb_image_write.h>
 
 #include <cstring>
 
 #include "core/Error.h"
+#include "io/AtomicFile.h"
+#include "io/ByteSource.h"
+#include "io/PngWriter.h"
 #include "platform/Gl.h"
 
 namespace fm::render {
@@ -27,9 +29,11 @@ void writePng(const std::filesystem::path& path, const RgbaImage& image) {
         std::error_code ec;
         std::filesystem::create_directories(path.parent_path(), ec);
     }
-    if (!stbi_write_png(path.string().c_str(), image.width, image.height, 4, image.pixels.data(),
-                        image.width * 4))
-        throw Error("cannot write PNG " + path.string());
+    if (image.width <= 0 || image.height <= 0 ||
+        image.pixels.size() != std::size_t(image.width) * image.height * 4)
+        throw Error("cannot write PNG " + io::quoted(path) + ": the image is empty");
+    io::writeFileAtomically(path, encodePng(image.pixels.data(), image.width, image.height, 4,
+                                            image.width * 4));
 }
 
 RgbaImage readPng(const std::filesystem::path& path) {

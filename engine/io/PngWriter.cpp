@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "core/Error.h"
@@ -11,6 +12,22 @@
 #include "io/ByteSource.h"
 
 namespace fm {
+
+std::vector<std::uint8_t> encodePng(const std::uint8_t* pixels, int width, int height,
+                                    int channels, int rowBytes) {
+    // In memory: stb's file writer does not check its fwrite/fclose, so a full disk would pass.
+    std::vector<std::uint8_t> png;
+    const auto append = [](void* context, void* data, int size) {
+        auto* out = static_cast<std::vector<std::uint8_t>*>(context);
+        const auto* bytes = static_cast<const std::uint8_t*>(data);
+        out->insert(out->end(), bytes, bytes + size);
+    };
+    if (width <= 0 || height <= 0 || channels < 1 || channels > 4 ||
+        !stbi_write_png_to_func(append, &png, width, height, channels, pixels, rowBytes))
+        throw Error("PNG encoding failed (" + std::to_string(width) + " x " +
+                    std::to_string(height) + ")");
+    return png;
+}
 
 void writePng(const Image& image, const std::filesystem::path& path, float low, float high) {
     const std::string what = "PNG " + io::quoted(path);
@@ -31,10 +48,7 @@ void writePng(const Image& image, const std::filesystem::path& path, float low, 
         const double g = std::round((static_cast<double>(v) - low) / range * 255.0);
         grey[n] = static_cast<std::uint8_t>(g < 0.0 ? 0.0 : g > 255.0 ? 255.0 : g);
     }
-    io::writeViaTemporary(path, [&](const std::filesystem::path& temp) {
-        return stbi_write_png(temp.string().c_str(), image.width, image.height, 1, grey.data(),
-                              image.width) != 0;
-    });
+    io::writeFileAtomically(path, encodePng(grey.data(), image.width, image.height, 1, image.width));
 }
 
 }  // namespace fm

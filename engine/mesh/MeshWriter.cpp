@@ -5,12 +5,12 @@
 #include <cctype>
 #include <cstdio>
 #include <cstring>
-#include <fstream>
 #include <string>
 #include <system_error>
 #include <vector>
 
 #include "core/Error.h"
+#include "io/AtomicFile.h"
 
 namespace fm {
 namespace {
@@ -123,27 +123,7 @@ void writeMesh(const Mesh& mesh, const std::filesystem::path& path) {
     else
         bytes = encodeObj(mesh);
 
-    std::filesystem::path temp = path;
-    temp += ".tmp-fluoromatch";
-    {
-        std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-        if (!out)
-            throw Error("writing mesh '" + path.string() + "': cannot create " + temp.string());
-        out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-        out.close();
-        if (!out) {
-            std::error_code ignored;
-            std::filesystem::remove(temp, ignored);
-            throw Error("writing mesh '" + path.string() + "': write failed (disk full?)");
-        }
-    }
-    std::error_code ec;
-    std::filesystem::rename(temp, path, ec);
-    if (ec) {
-        std::error_code ignored;
-        std::filesystem::remove(temp, ignored);
-        throw Error("writing mesh '" + path.string() + "': " + ec.message());
-    }
+    io::writeFileAtomically(path, bytes.data(), bytes.size());
 }
 
 }  // namespace fm

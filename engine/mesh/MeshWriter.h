@@ -1,7 +1,7 @@
 #pragma once
 // Writing a mesh to disk, format from the extension: .ply (binary little-endian, with
 // normals), .stl (binary, facet normals from the winding), .obj (text, with normals).
-// Atomic: written to a temporary file beside the target, then renamed over it.
+// Written through io/AtomicFile: checked, atomic, never over a special file.
 #include <filesystem>
 
 #include "mesh/Mesh.h"

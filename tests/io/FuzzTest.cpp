@@ -1,7 +1,9 @@
 // Random corruption of valid small files: every reader must either return a valid volume or
-// throw fm::Error. Never crash, hang, trip a sanitizer or throw anything else.
+// throw fm::Error. Never crash, hang, trip a sanitizer or throw anything else. And the writers
+// under a disk that fills up at a random byte.
 #include <gtest/gtest.h>
 
+#include <functional>
 #include <iostream>
 #include <random>
 #include <sstream>
@@ -9,7 +11,11 @@
 #include "IoTestFiles.h"
 #include "common/TestData.h"
 #include "core/Error.h"
+#include "io/AtomicFile.h"
+#include "io/PngWriter.h"
 #include "io/ReadVolume.h"
+#include "io/VolumeWriter.h"
+#include "mesh/MeshWriter.h"
 
 namespace {
 
@@ -189,3 +195,69 @@ TEST(Fuzz, LegacyVtk) {
 }
 
 }  // namespace
+
+// The writers' failure paths: every writer, with the disk filling up after a random number of
+// bytes (the AtomicFile hook), either writes exactly what it writes unhindered or throws
+// fm::Error naming the file, keeping the old file and leaving no temporary behind.
+
+TEST(Fuzz, WritersUnderAFillingDisk) {
+    const fs::path dir = fm::test::scratchDir("fuzz_writers");
+    fm::Volume volume = fm::Volume::allocate({12, 10, 8});
+    for (std::size_t n = 0; n < volume.values.size(); ++n)
+        volume.values[n] = static_cast<float>(n % 97) * 3.5f - 100.0f;
+    fm::Image image(48, 32);
+    for (std::size_t n = 0; n < image.pixels.size(); ++n)
+        image.pixels[n] = static_cast<float>((n * 37) % 255);
+    fm::Mesh mesh;
+    mesh.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    mesh.normals = {{-1, -1, -1}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    mesh.triangles = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+    const std::vector<std::pair<std::string, std::function<void(const fs::path&)>>> writers = {
+        {"a.png", [&](const fs::path& p) { fm::writePng(image, p, 0.0f, 255.0f); }},
+        {"a.mha", [&](const fs::path& p) { fm::writeMetaImage(volume, p, true); }},
+        {"b.mha", [&](const fs::path& p) { fm::writeMetaImage(volume, p, false); }},
+        {"a.nii.gz", [&](const fs::path& p) { fm::writeNifti(volume, p); }},
+        {"a.nii", [&](const fs::path& p) { fm::writeNifti(volume, p); }},
+        {"a.ply", [&](const fs::path& p) { fm::writeMesh(mesh, p); }},
+        {"a.stl", [&](const fs::path& p) { fm::writeMesh(mesh, p); }},
+        {"a.obj", [&](const fs::path& p) { fm::writeMesh(mesh, p); }},
+        {"d.mha", [&](const fs::path& p) { fm::writeImage(image, p); }},
+    };
+    std::mt19937 rng(kSeed);
+    int refused = 0, written = 0;
+    for (const auto& [name, write] : writers) {
+        SCOPED_TRACE(name);
+        const fs::path reference = dir / ("reference-" + name);
+        write(reference);
+        const Bytes expected = fm::test::readFile(reference);
+        fs::remove(reference);
+        const fs::path target = dir / name;
+        for (int trial = 0; trial < 40; ++trial) {
+            fm::test::writeFile(target, std::string("old"));
+            const std::uintmax_t room =
+                std::uniform_int_distribution<std::uintmax_t>(0, expected.size() + 8)(rng);
+            fm::io::setWriteLimitForTesting(room);
+            try {
+                write(target);
+                fm::io::setWriteLimitForTesting(std::nullopt);
+                ASSERT_GE(room, expected.size());
+                ASSERT_TRUE(fm::test::readFile(target) == expected) << "room " << room;
+                ++written;
+            } catch (const fm::Error& e) {
+                fm::io::setWriteLimitForTesting(std::nullopt);
+                ASSERT_LT(room, expected.size());
+                ASSERT_NE(std::string(e.what()).find(name), std::string::npos) << e.what();
+                ASSERT_EQ(fm::test::readFile(target), fm::test::toBytes("old")) << "room " << room;
+                ++refused;
+            }
+            int entries = 0;
+            for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir)) ++entries;
+            ASSERT_EQ(entries, 1) << "a temporary was left behind (room " << room << ")";
+            fs::remove(target);
+        }
+    }
+    std::cout << "writers under a filling disk: " << written << " written, " << refused
+              << " refused\n";
+    EXPECT_GT(refused, 0);
+    EXPECT_GT(written, 0);
+}
