@@ -1,12 +1,14 @@
-// `fluoromatch geometry`: the projection geometry JSON for six pose parameters (or a checked,
-// rewritten copy of a geometry file). Both modes of `drr` go through the same code path, so the
-// JSON printed here is exactly what `drr --pose` renders.
+// `fluoromatch geometry`: the projection geometry JSON for six pose parameters, a checked,
+// rewritten copy of a geometry file, or a camera calibration (MayaCam 2.0/1.0, JointTrack) as
+// geometry. Both modes of `drr` go through the same code path, so the JSON printed here is
+// exactly what `drr --pose` renders. `--out cam.txt` writes a MayaCam 2.0 file instead.
 #include <cstdio>
 #include <fstream>
 #include <iostream>
 #include <memory>
 #include <sstream>
 
+#include "camera/CameraFile.h"
 #include "cli/CommandRegistry.h"
 #include "cli/SceneOptions.h"
 #include "core/Error.h"
@@ -20,8 +22,29 @@ struct GeometryArgs {
     fm::cli::SceneOptions scene;
     std::string volume = fm::kDefaultVolumeSpec;
     std::string center;  // "x,y,z": volume centre given directly
+    std::string camera;     // calibration file
+    std::string imageSize;  // "WxH" for calibrations without a size (JointTrack)
     std::string out;
 };
+
+glm::ivec2 parseImageSize(const std::string& text) {
+    const auto x = text.find('x');
+    try {
+        if (x == std::string::npos) throw fm::Error("");
+        std::size_t used1 = 0, used2 = 0;
+        const int w = std::stoi(text.substr(0, x), &used1);
+        const int h = std::stoi(text.substr(x + 1), &used2);
+        if (used1 != x || used2 != text.size() - x - 1 || w < 1 || h < 1) throw fm::Error("");
+        return {w, h};
+    } catch (const std::exception&) {
+        throw fm::Error("--image-size: expected WxH in pixels (e.g. 1024x1024), got \"" + text + "\"");
+    }
+}
+
+bool wantsMayaCam(const std::string& out) {
+    const std::string ext = std::filesystem::path(out).extension().string();
+    return ext == ".txt" || ext == ".TXT";
+}
 
 glm::dvec3 parseCenter(const std::string& text) {
     // Reuse the pose parser's strict number handling: "x,y,z" + three zero angles.
@@ -32,7 +55,7 @@ glm::dvec3 parseCenter(const std::string& text) {
     }
 }
 
-void runGeometry(const GeometryArgs& a) {
+fm::ProjectionGeometry geometryOfScene(const GeometryArgs& a) {
     glm::dvec3 center{0.0};
     if (!a.scene.usesGeometryFile()) {
         if (!a.center.empty()) {
@@ -42,15 +65,38 @@ void runGeometry(const GeometryArgs& a) {
             center = v.center();
         }
     }
-    const fm::ProjectionGeometry g = fm::cli::geometryFrom(a.scene, center);
+    return fm::cli::geometryFrom(a.scene, center);
+}
+
+void runGeometry(const GeometryArgs& a) {
+    if (!a.imageSize.empty() && a.camera.empty())
+        throw fm::Error("--image-size applies to --camera only");
+    fm::ProjectionGeometry g;
+    std::string source;
+    if (!a.camera.empty()) {
+        std::optional<glm::ivec2> size;
+        if (!a.imageSize.empty()) size = parseImageSize(a.imageSize);
+        const fm::CameraReadResult r = fm::readCameraFile(a.camera, size);
+        for (const auto& w : r.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+        if (size) fm::checkImageSize(r.camera, a.camera, size->x, size->y, "--image-size");
+        g = fm::toProjectionGeometry(r.camera);
+        source = r.format + " calibration " + a.camera;
+    } else {
+        g = geometryOfScene(a);
+        source = fm::cli::describeGeometrySource(a.scene);
+    }
+    if (!a.out.empty() && wantsMayaCam(a.out)) {
+        fm::writeMayaCam2(a.out, fm::cameraFromGeometry(g, source));
+        std::fprintf(stderr, "wrote %s (MayaCam 2.0, from %s)\n", a.out.c_str(), source.c_str());
+        return;
+    }
     const std::string json = fm::geometryToJson(g);
     if (a.out.empty()) {
         std::cout << json;
         return;
     }
     fm::io::writeFileAtomically(a.out, std::vector<std::uint8_t>(json.begin(), json.end()));
-    std::fprintf(stderr, "wrote %s (%s)\n", a.out.c_str(),
-                 fm::cli::describeGeometrySource(a.scene).c_str());
+    std::fprintf(stderr, "wrote %s (%s)\n", a.out.c_str(), source.c_str());
 }
 
 FM_REGISTER_COMMAND("geometry", 30, [](CLI::App& app) {
@@ -73,7 +119,19 @@ FM_REGISTER_COMMAND("geometry", 30, [](CLI::App& app) {
         volume->excludes(geometryFile);
         center->excludes(geometryFile);
     }
-    cmd->add_option("--out", args->out, "Write the JSON to this file instead of printing it");
+    auto* camera = cmd->add_option("--camera", args->camera,
+                                   "Camera calibration (MayaCam 2.0 .txt, MayaCam 1.0 .csv, "
+                                   "JointTrack JT_INTCALIB, geometry JSON) to print as geometry");
+    for (const char* other : {"--pose", "--geometry", "--size", "--film", "--distance"})
+        if (auto* o = cmd->get_option_no_throw(other)) camera->excludes(o);
+    camera->excludes(volume);
+    camera->excludes(center);
+    cmd->add_option("--image-size", args->imageSize,
+                    "Image size WxH of the radiographs, for calibrations that hold none "
+                    "(JointTrack); checked against the file's otherwise");
+    cmd->add_option("--out", args->out,
+                    "Write the JSON to this file instead of printing it; a .txt name writes a "
+                    "MayaCam 2.0 calibration (Autoscoper) instead");
     cmd->callback([args] { runGeometry(*args); });
     return cmd;
 });

@@ -1,0 +1,40 @@
+#!/usr/bin/env bash
+# Camera calibrations on the command line (needs the shared data; skips without it):
+#  1. `geometry --camera` prints a MayaCam 2.0 calibration as geometry JSON whose source is the
+#     camera centre; `--out cam.txt` writes MayaCam 2.0 that reads back to the same JSON;
+#  2. a JointTrack calibration without --image-size is refused (exit 1), with it accepted;
+#  3. a calibration that disagrees with --image-size is refused.
+set -uo pipefail
+FM=$1
+DATA=${FM_DATA_DIR:-$(dirname "$0")/../../../shared/data}
+CAM="$DATA/autoscoper-bvr/Calibration/xr_calib_wrist_cam01.txt"
+JT="$DATA/jtml-kneel-tka-fluoro/calibration.txt"
+if [ ! -f "$CAM" ] || [ ! -f "$JT" ]; then
+    [ "${CI:-}" = "true" ] && { echo "FAIL: shared data missing under CI"; exit 1; }
+    echo "shared data not found: skipped"; exit 77
+fi
+OUT=$(mktemp -d)
+trap 'rm -rf "$OUT"' EXIT
+fail() { echo "FAIL: $*"; exit 1; }
+
+"$FM" geometry --camera "$CAM" > "$OUT/a.json" || fail "geometry --camera exited $?"
+python3 - "$OUT/a.json" <<'PY' || fail "source is not the camera centre (-530.0, 87.9, -728.2)"
+import json, sys
+s = json.load(open(sys.argv[1]))["source"]
+assert all(abs(a - b) < 0.1 for a, b in zip(s, (-530.0, 87.9, -728.2))), s
+PY
+"$FM" geometry --camera "$CAM" --out "$OUT/cam.txt" || fail "--out cam.txt exited $?"
+[ "$(head -1 "$OUT/cam.txt")" = "image size" ] || fail "cam.txt is not MayaCam 2.0"
+"$FM" geometry --camera "$OUT/cam.txt" > "$OUT/b.json" || fail "reading the written cam.txt exited $?"
+python3 - "$OUT/a.json" "$OUT/b.json" <<'PY' || fail "MayaCam 2.0 written and read back gives another geometry"
+import json, sys
+a, b = (json.load(open(f)) for f in sys.argv[1:3])
+flat = lambda g: g["source"] + sum((g["detector"][k] for k in ("size", "spacing", "origin", "u", "v")), [])
+assert all(abs(x - y) < 1e-9 for x, y in zip(flat(a), flat(b))), (a, b)
+PY
+
+"$FM" geometry --camera "$JT" > /dev/null 2>&1 && fail "JointTrack calibration without --image-size accepted"
+"$FM" geometry --camera "$JT" --image-size 1024x1024 > /dev/null || fail "JointTrack with --image-size exited $?"
+msg=$("$FM" geometry --camera "$CAM" --image-size 1024x1024 2>&1) && fail "size mismatch accepted"
+grep -q "image size" <<<"$msg" || fail "size mismatch message does not name the field: $msg"
+echo "camera CLI checks passed"

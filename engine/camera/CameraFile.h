@@ -1,0 +1,24 @@
+#pragma once
+// Reads any camera calibration we understand, choosing the format by content:
+//   first line `image size`          -> MayaCam 2.0 (.txt)
+//   first word JT_INTCALIB/JTA_INTCALIB -> JointTrack (needs the image size of the radiograph)
+//   first character `{`              -> fluoromatch geometry JSON (docs/geometry.md)
+//   otherwise                        -> MayaCam 1.0 (.csv)
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "camera/MayaCam.h"
+
+namespace fm {
+
+// Calibration files are small: anything larger is the wrong file.
+inline constexpr std::size_t kMaxCameraFileBytes = 1 << 20;
+
+CameraReadResult parseCameraText(const std::string& text, const std::string& what,
+                                 std::optional<glm::ivec2> imageSize);
+// `imageSize` is required for formats that do not hold one (JointTrack); fm::Error otherwise.
+CameraReadResult readCameraFile(const std::filesystem::path& path,
+                                std::optional<glm::ivec2> imageSize = std::nullopt);
+
+}  // namespace fm
