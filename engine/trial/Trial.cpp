@@ -1,0 +1,257 @@
+#include "trial/Trial.h"
+
+#include <algorithm>
+#include <system_error>
+
+#include <nlohmann/json.hpp>
+
+#include "core/Error.h"
+#include "io/AtomicFile.h"
+#include "io/ByteSource.h"
+#include "io/HeaderText.h"
+#include "io/StrictJson.h"
+#include "trial/AutoscoperConfig.h"
+
+namespace fm {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::json;
+
+namespace {
+
+constexpr std::uintmax_t kMaxTrialBytes = 16 << 20;
+
+// Strict JSON access with the file and the field in every message.
+struct Reader {
+    std::string file;
+    [[noreturn]] void fail(const std::string& field, const std::string& why) const {
+        throw Error(file + ": \"" + field + "\" " + why);
+    }
+    const Json& member(const Json& o, const char* key, const std::string& field) const {
+        if (!o.is_object()) fail(field, "must be an object");
+        const auto it = o.find(key);
+        if (it == o.end()) fail(field + "." + key, "is missing");
+        return *it;
+    }
+    std::string text(const Json& v, const std::string& field) const {
+        if (!v.is_string() || v.get<std::string>().empty()) fail(field, "must be a non-empty string");
+        return v.get<std::string>();
+    }
+    std::vector<double> numbers(const Json& v, std::size_t n, const std::string& field) const {
+        if (!v.is_array() || v.size() != n)
+            fail(field, "must be an array of " + std::to_string(n) + " numbers");
+        std::vector<double> out;
+        for (const Json& x : v) {
+            if (!x.is_number()) fail(field, "must hold numbers only");
+            out.push_back(x.get<double>());
+        }
+        return out;
+    }
+};
+
+VolumeFrame parseVolumeFrame(const Reader& r, const Json& v, const std::string& field) {
+    const std::string s = r.text(v, field);
+    if (s == "autoscoper") return VolumeFrame::Autoscoper;
+    if (s == "fluoromatch") return VolumeFrame::Fluoromatch;
+    r.fail(field, "must be \"autoscoper\" or \"fluoromatch\", not \"" + s + "\"");
+}
+
+TrialPose parsePose(const Reader& r, const Json& p, const std::string& field) {
+    TrialPose pose;
+    const Json& frame = r.member(p, "frame", field);
+    if (!frame.is_number_integer() || frame.get<long long>() < 0 || frame.get<long long>() > 10000000)
+        r.fail(field + ".frame", "must be a frame index >= 0");
+    pose.frame = static_cast<int>(frame.get<long long>());
+    const auto m = r.numbers(r.member(p, "world_from_volume", field), 16, field + ".world_from_volume");
+    std::array<double, 16> a{};
+    std::copy(m.begin(), m.end(), a.begin());
+    pose.worldFromVolume = RigidTransform::fromRowMajor4x4(a, r.file + " " + field);
+    pose.volumeFrame = parseVolumeFrame(r, r.member(p, "volume_frame", field), field + ".volume_frame");
+    return pose;
+}
+
+fs::path resolve(const fs::path& base, const std::string& p) {
+    const fs::path path(p);
+    return path.is_absolute() ? path : (base / path).lexically_normal();
+}
+
+Trial readTrialJson(const fs::path& path) {
+    const std::uintmax_t size = io::fileSize(path);
+    if (size > kMaxTrialBytes) throw Error(io::quoted(path) + ": too large for a trial file");
+    const io::Bytes bytes = io::readFileRange(path, 0, static_cast<std::size_t>(size));
+    const Json root = io::parseStrictJson(std::string(bytes.begin(), bytes.end()), io::quoted(path));
+    const Reader r{io::quoted(path)};
+    const fs::path base = path.parent_path();
+    Trial t;
+    t.source = path;
+    t.name = root.contains("name") ? r.text(root["name"], "name") : path.stem().string();
+    const Json& cams = r.member(root, "cameras", "trial");
+    if (!cams.is_array() || cams.empty()) r.fail("cameras", "must be a non-empty array");
+    for (std::size_t i = 0; i < cams.size(); ++i) {
+        const std::string f = "cameras[" + std::to_string(i) + "]";
+        TrialCamera c;
+        c.name = "cam";
+        c.name += std::to_string(i + 1);
+        if (cams[i].contains("name")) c.name = r.text(cams[i]["name"], f + ".name");
+        c.calibration = resolve(base, r.text(r.member(cams[i], "calibration", f), f + ".calibration"));
+        c.frames = resolve(base, r.text(r.member(cams[i], "frames", f), f + ".frames"));
+        t.cameras.push_back(c);
+    }
+    const Json& bones = r.member(root, "bones", "trial");
+    if (!bones.is_array() || bones.empty()) r.fail("bones", "must be a non-empty array");
+    for (std::size_t i = 0; i < bones.size(); ++i) {
+        const std::string f = "bones[" + std::to_string(i) + "]";
+        TrialBone b;
+        b.name = r.text(r.member(bones[i], "name", f), f + ".name");
+        for (const TrialBone& other : t.bones)
+            if (other.name == b.name) r.fail(f + ".name", "repeats the bone name \"" + b.name + "\"");
+        b.volume = resolve(base, r.text(r.member(bones[i], "volume", f), f + ".volume"));
+        const auto s = r.numbers(r.member(bones[i], "voxel_size", f), 3, f + ".voxel_size");
+        for (double x : s)
+            if (!(x > 0.0) || x > 1000.0) r.fail(f + ".voxel_size", "must be positive mm (at most 1000)");
+        b.voxelSize = {s[0], s[1], s[2]};
+        if (bones[i].contains("flip")) {
+            const auto fl = r.numbers(bones[i]["flip"], 3, f + ".flip");
+            for (double x : fl)
+                if (x != 0.0 && x != 1.0) r.fail(f + ".flip", "must hold 0 or 1");
+            b.flip = {int(fl[0]), int(fl[1]), int(fl[2])};
+        }
+        if (bones[i].contains("mesh")) b.mesh = resolve(base, r.text(bones[i]["mesh"], f + ".mesh"));
+        t.bones.push_back(b);
+    }
+    if (root.contains("render_resolution")) {
+        const auto rr = r.numbers(root["render_resolution"], 2, "render_resolution");
+        for (double x : rr)
+            if (x < 1 || x > 16384 || x != int(x))
+                r.fail("render_resolution", "must be whole pixels, 1..16384");
+        t.renderResolution = {int(rr[0]), int(rr[1])};
+    }
+    if (root.contains("optimization_offsets")) {
+        const auto o = r.numbers(root["optimization_offsets"], 6, "optimization_offsets");
+        for (int i = 0; i < 6; ++i) {
+            if (!(o[i] > 0.0)) r.fail("optimization_offsets", "must be positive");
+            t.optimizationOffsets[i] = o[i];
+        }
+    }
+    if (root.contains("keyframes")) {
+        const Json& k = root["keyframes"];
+        if (!k.is_object()) r.fail("keyframes", "must be an object of bone name -> list of poses");
+        for (auto it = k.begin(); it != k.end(); ++it) {
+            const std::string f = "keyframes." + it.key();
+            t.bone(it.key());  // must name a bone of the trial
+            if (!it->is_array()) r.fail(f, "must be an array of poses");
+            std::vector<TrialPose> poses;
+            for (std::size_t i = 0; i < it->size(); ++i)
+                poses.push_back(parsePose(r, (*it)[i], f + "[" + std::to_string(i) + "]"));
+            std::sort(poses.begin(), poses.end(),
+                      [](const TrialPose& a, const TrialPose& b) { return a.frame < b.frame; });
+            for (std::size_t i = 1; i < poses.size(); ++i)
+                if (poses[i].frame == poses[i - 1].frame)
+                    r.fail(f, "has two keyframes for frame " + std::to_string(poses[i].frame));
+            t.keyframes[it.key()] = std::move(poses);
+        }
+    }
+    for (auto it = root.begin(); it != root.end(); ++it) {
+        static const char* known[] = {"name", "cameras", "bones", "render_resolution",
+                                      "optimization_offsets", "keyframes", "comment"};
+        if (std::find(std::begin(known), std::end(known), it.key()) == std::end(known))
+            t.warnings.push_back(io::quoted(path) + ": unknown key \"" + it.key() + "\" ignored");
+    }
+    return t;
+}
+
+Trial trialFromConfig(const fs::path& path) {
+    const AutoscoperConfig cfg = readAutoscoperConfig(path);
+    Trial t;
+    t.source = path;
+    t.name = path.stem().string();
+    t.warnings = cfg.warnings;
+    for (std::size_t i = 0; i < cfg.calibrations.size(); ++i) {
+        std::string name = "cam";  // piecewise: GCC 12 warns falsely on "literal" + string
+        name += std::to_string(i + 1);
+        t.cameras.push_back({name, cfg.calibrations[i], cfg.cameraRootDirs[i]});
+    }
+    for (std::size_t i = 0; i < cfg.volumes.size(); ++i) {
+        TrialBone b;
+        b.name = cfg.volumes[i].file.stem().string();
+        for (const TrialBone& other : t.bones)
+            if (other.name == b.name) {
+                b.name += '_';
+                b.name += std::to_string(i + 1);
+            }
+        b.volume = cfg.volumes[i].file;
+        b.voxelSize = cfg.volumes[i].voxelSize;
+        b.flip = cfg.volumes[i].flip;
+        if (!cfg.meshes.empty()) b.mesh = cfg.meshes[i];
+        t.bones.push_back(b);
+    }
+    t.renderResolution = cfg.renderResolution;
+    t.optimizationOffsets = cfg.optimizationOffsets;
+    return t;
+}
+
+}  // namespace
+
+const char* toString(VolumeFrame frame) {
+    return frame == VolumeFrame::Autoscoper ? "autoscoper" : "fluoromatch";
+}
+
+const TrialBone& Trial::bone(const std::string& name) const {
+    for (const TrialBone& b : bones)
+        if (b.name == name) return b;
+    std::string names;
+    for (const TrialBone& b : bones) names += (names.empty() ? "" : ", ") + b.name;
+    throw Error("trial " + io::quoted(source) + " has no bone \"" + name + "\" (it has " + names + ")");
+}
+
+Trial readTrial(const fs::path& path) {
+    const std::string ext = io::toLower(path.extension().string());
+    if (ext == ".cfg") return trialFromConfig(path);
+    if (ext == ".json") return readTrialJson(path);
+    throw Error(io::quoted(path) + ": a trial is an Autoscoper .cfg or a fluoromatch .json file");
+}
+
+void writeTrialJson(const fs::path& path, const Trial& trial) {
+    const fs::path base = fs::absolute(path).parent_path();
+    auto rel = [&](const fs::path& p) { return fs::absolute(p).lexically_relative(base).generic_string(); };
+    Json root;
+    root["name"] = trial.name;
+    for (const TrialCamera& c : trial.cameras)
+        root["cameras"].push_back({{"name", c.name}, {"calibration", rel(c.calibration)}, {"frames", rel(c.frames)}});
+    for (const TrialBone& b : trial.bones) {
+        Json j{{"name", b.name},
+               {"volume", rel(b.volume)},
+               {"voxel_size", {b.voxelSize.x, b.voxelSize.y, b.voxelSize.z}},
+               {"flip", {b.flip.x, b.flip.y, b.flip.z}}};
+        if (!b.mesh.empty()) j["mesh"] = rel(b.mesh);
+        root["bones"].push_back(j);
+    }
+    root["render_resolution"] = {trial.renderResolution.x, trial.renderResolution.y};
+    root["optimization_offsets"] = trial.optimizationOffsets;
+    for (const auto& [bone, poses] : trial.keyframes)
+        for (const TrialPose& p : poses)
+            root["keyframes"][bone].push_back({{"frame", p.frame},
+                                               {"world_from_volume", p.worldFromVolume.toRowMajor4x4()},
+                                               {"volume_frame", toString(p.volumeFrame)}});
+    const std::string s = root.dump(2) + "\n";
+    io::writeFileAtomically(path, std::vector<std::uint8_t>(s.begin(), s.end()));
+}
+
+void checkTrialFiles(const Trial& trial) {
+    std::error_code ec;
+    const std::string t = "trial " + io::quoted(trial.source);
+    for (const TrialCamera& c : trial.cameras) {
+        if (!fs::is_regular_file(c.calibration, ec))
+            throw Error(t + ": camera " + c.name + " calibration " + io::quoted(c.calibration) + " does not exist");
+        if (!fs::exists(c.frames, ec))
+            throw Error(t + ": camera " + c.name + " frames " + io::quoted(c.frames) + " do not exist");
+    }
+    for (const TrialBone& b : trial.bones) {
+        if (!fs::is_regular_file(b.volume, ec))
+            throw Error(t + ": bone " + b.name + " volume " + io::quoted(b.volume) + " does not exist");
+        if (!b.mesh.empty() && !fs::is_regular_file(b.mesh, ec))
+            throw Error(t + ": bone " + b.name + " mesh " + io::quoted(b.mesh) + " does not exist");
+    }
+}
+
+}  // namespace fm
