@@ -53,6 +53,7 @@ class OsmesaBackend final : public RenderBackend {
         for (int k : input_.keys)
             if (k >= 0 && k < ImGuiKey_COUNT) io.KeysDown[k] = true;
         io.KeyCtrl = input_.ctrl;
+        io.KeyShift = input_.shift;
         for (char c : input_.text) io.AddInputCharacter(static_cast<unsigned char>(c));
         // Input is per frame: wheel, text and keys do not repeat; the mouse stays where it is.
         input_.wheel = 0.0f;

@@ -18,6 +18,7 @@ struct FrameInput {
     std::string text;       // characters typed this frame
     std::vector<int> keys;  // ImGuiKey_* held down this frame (Enter, Backspace, ...)
     bool ctrl = false;
+    bool shift = false;
     std::vector<std::string> dropped;  // paths dropped onto the "window" this frame
 };
 

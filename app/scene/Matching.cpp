@@ -7,82 +7,95 @@
 #include "core/Error.h"
 #include "match/MatchVerdict.h"
 #include "match/PoseError.h"
-#include "match/RandomPose.h"
+#include "match/ReferenceDraw.h"
 #include "match/ReferencePoses.h"
 
 namespace fm::app {
 namespace {
 
-std::filesystem::path referencePosesFile() {
-    if (const char* env = std::getenv("FM_REFERENCE_POSES"); env && *env) return env;
-    return std::filesystem::path(FM_DATA_DIR_DEFAULT) / "reference_poses.txt";
-}
-
 bool samePose(const Pose& a, const Pose& b) {
     return a.toArray() == b.toArray();
+}
+
+bool matches(const Pose& reference, const Pose& candidate) {
+    return judgeMatch(reference, candidate, 0.0).match;
 }
 
 }  // namespace
 
 MatchTolerancesView matchTolerances() {
     const MatchTolerances t;
-    return {t.offsetMm, t.angleDeg, t.minNcc};
+    return {t.offsetMm, t.angleDeg};
 }
 
-ReferenceChoice chooseReference(const LoadedScene& scene, std::uint64_t seed, const Pose* avoid) {
-    // The 2011 way for the default scene: one of the listed parameter sets, so no reference is
-    // blank. The list's poses are made for the knee phantom.
-    const std::filesystem::path file = referencePosesFile();
-    if (scene.spec == "phantom:knee" && std::filesystem::exists(file)) {
-        const std::vector<ReferencePose> poses = readReferencePoses(file);
+ReferenceChoice chooseReference(const LoadedScene& scene, std::uint64_t seed, const Pose& current,
+                                Difficulty difficulty, const Pose* avoid) {
+    // A teacher's list, when one is named.
+    if (const char* env = std::getenv("FM_REFERENCE_POSES"); env && *env) {
+        const std::vector<ReferencePose> poses = readReferencePoses(env);
         for (std::uint64_t k = 0; k < 64; ++k) {
             const std::size_t index = pickReferencePose(poses.size(), seed + k * 0x9E3779B9ull);
-            if (avoid && poses.size() > 1 && samePose(poses[index].pose, *avoid)) continue;
             const ReferencePose& r = poses[index];
-            return {r.pose, "reference_poses.txt line " + std::to_string(r.line) +
+            if (matches(r.pose, current) || (avoid && samePose(r.pose, *avoid))) continue;
+            return {r.pose, std::filesystem::path(env).filename().string() + " line " +
+                                std::to_string(r.line) +
                                 (r.label.empty() ? "" : " (" + r.label + ")")};
         }
     }
-    // Any other CT: a random pose whose bone covers enough of the film.
+    // Otherwise drawn around a clinical view, for the phantom as for any CT.
     if (!scene.bonePoints.empty()) {
         for (std::uint64_t k = 0; k < 16; ++k) {
             try {
-                Pose p = randomPose(scene.bonePoints, scene.center, scene.setup, seed + k);
-                for (int a = 0; a < 3; ++a)  // keep it reachable with the sliders
-                    p.offset[a] = std::clamp(p.offset[a], -scene.translationRangeMm,
-                                             scene.translationRangeMm);
-                if (avoid && samePose(p, *avoid)) continue;
-                return {p, "random pose (seed " + std::to_string(seed + k) + ")"};
+                const ReferenceDraw d =
+                    drawReferencePose(scene.bonePoints, scene.center, scene.setup, current,
+                                      seed + k, difficulty, scene.translationRangeMm);
+                if (avoid && samePose(d.pose, *avoid)) continue;
+                return {d.pose, std::string("random around ") + d.view + " (" +
+                                    difficultyName(difficulty) + ")"};
             } catch (const Error&) {
                 break;  // no acceptable candidate: fall through to a plain view
             }
         }
     }
-    Pose p;
-    p.azimuthDeg = avoid && samePose(p, *avoid) ? 90.0 : 0.0;
-    return {p, "plain view (no bone found for a random pose)"};
+    for (const double azimuth : {0.0, 90.0, -90.0, 180.0}) {
+        Pose p;
+        p.azimuthDeg = azimuth;
+        if (!matches(p, current) && !(avoid && samePose(p, *avoid)))
+            return {p, "plain view (no bone found for a random pose)"};
+    }
+    return {Pose{}, "plain view"};  // unreachable: four views 90 deg apart cannot all match
+}
+
+double sceneMtre(const LoadedScene& scene, const Pose& reference, const Pose& candidate) {
+    if (scene.bonePoints.empty()) return 0.0;
+    return targetRegistrationError(reference, candidate, scene.setup, scene.center,
+                                   scene.bonePoints)
+        .meanMm;
 }
 
 MatchOutcome evaluateMatch(const LoadedScene& scene, const Pose& user, const Pose& reference,
                            const Image& userDrr, const Image& referenceDrr) {
-    const MatchVerdict verdict = judgeMatch(reference, user, imageAgreement(referenceDrr, userDrr));
     MatchOutcome m;
-    m.matched = verdict.match;
-    m.ncc = verdict.ncc;
-    m.verdict = verdict.message;
+    m.poseErrorMm = sceneMtre(scene, reference, user);
+    m.judged = judgeMatch(reference, user, m.poseErrorMm);
+    m.matched = m.judged.match;
+    m.ncc = imageAgreement(referenceDrr, userDrr);
     for (int p = 0; p < kParameterCount; ++p) {
-        const ParameterHint& h = verdict.hints[p];
+        const ParameterHint& h = m.judged.hints[p];
         m.error[p] = h.error;
         m.direction[p] = h.status == ParameterStatus::TooHigh  ? +1
                          : h.status == ParameterStatus::TooLow ? -1
                                                                : 0;
     }
-    m.furthestParameter = verdict.parametersWithinTolerance ? -1 : verdict.worstParameter;
-    if (!scene.bonePoints.empty())
-        m.poseErrorMm =
-            targetRegistrationError(reference, user, scene.setup, scene.center, scene.bonePoints)
-                .meanMm;
+    m.furthestParameter = m.matched ? -1 : m.judged.worstParameter;
     return m;
+}
+
+void wordOutcome(MatchOutcome& m, HintWording wording, bool showNumbers) {
+    m.numbersShown = showNumbers;
+    m.verdict = verdictMessage(m.judged, wording, showNumbers);
+    for (int p = 0; p < kParameterCount; ++p)
+        m.hintCells[p] = hintText(m.judged.hints[p], p, wording, showNumbers);
 }
 
 }  // namespace fm::app

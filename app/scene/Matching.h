@@ -15,22 +15,28 @@ struct ReferenceChoice {
     std::string source;  // "data/reference_poses.txt entry 3 of 12" or "random pose"
 };
 
-// One of the reference parameter sets (at random, by `seed`), or a random pose whose bone
-// covers enough of the film when the data file is missing.
-// `avoid` (optional): the current reference, never picked again right away.
-// The file is $FM_REFERENCE_POSES if set, else data/reference_poses.txt of the source tree; its
-// poses are made for the default knee phantom, so other CTs get random poses.
-ReferenceChoice chooseReference(const LoadedScene& scene, std::uint64_t seed,
-                                const Pose* avoid = nullptr);
+// A hidden pose drawn around a clinical view at `difficulty` (engine/match drawReferencePose),
+// never a match of `current` (the user's pose) nor equal to `avoid` (the current reference).
+// When $FM_REFERENCE_POSES names a list of poses (a teacher's set, see
+// data/reference_poses.txt), one of them is picked instead, skipping any within tolerance of
+// `current`.
+ReferenceChoice chooseReference(const LoadedScene& scene, std::uint64_t seed, const Pose& current,
+                                Difficulty difficulty, const Pose* avoid = nullptr);
 
 // The judge's tolerances (engine/match defaults), shown in Help and docs/app.md.
 struct MatchTolerancesView {
-    double offsetMm, angleDeg, minNcc;
+    double offsetMm, angleDeg;
 };
 MatchTolerancesView matchTolerances();
 
 // Per-parameter errors, hints, the furthest-off parameter, mTRE over the bone and NCC.
 MatchOutcome evaluateMatch(const LoadedScene& scene, const Pose& user, const Pose& reference,
                            const Image& userDrr, const Image& referenceDrr);
+
+// mTRE of `candidate` against `reference` over the scene's bone points (0 without any).
+double sceneMtre(const LoadedScene& scene, const Pose& reference, const Pose& candidate);
+
+// Fills the outcome's texts for the hint wording; numbers only when `showNumbers`.
+void wordOutcome(MatchOutcome& outcome, HintWording wording, bool showNumbers);
 
 }  // namespace fm::app

@@ -8,6 +8,8 @@
 #include <vector>
 
 #include "geometry/Pose.h"
+#include "match/MatchVerdict.h"
+#include "match/ReferenceDraw.h"
 
 namespace fm::app {
 
@@ -59,13 +61,18 @@ struct View3d {
 // What Match reported, kept for display (all numbers come from engine/match).
 struct MatchOutcome {
     bool matched = false;
+    MatchVerdict judged;                           // the engine's verdict
     std::array<double, kParameterCount> error{};   // user minus reference, per parameter
     std::array<int, kParameterCount> direction{};  // +1 too high, -1 too low, 0 within tolerance
     int furthestParameter = -1;                    // the one furthest off (-1 when matched)
     double poseErrorMm = 0.0;                      // mean target registration error over the bone
-    double ncc = 0.0;                              // image similarity of the two DRRs
-    std::string verdict;                           // one line: "The images match." / hint
+    double ncc = 0.0;                              // image similarity (information only)
     int attempt = 0;                               // which attempt this was
+    // The texts shown, worded by the hint mode; numbers only after a match or Reveal
+    // (App::refreshMatchTexts).
+    std::string verdict;                                  // one line
+    std::array<std::string, kParameterCount> hintCells;   // per parameter
+    bool numbersShown = false;
 };
 
 struct LoadStatus {
@@ -102,7 +109,10 @@ struct SolveStatus {
     std::vector<float> costHistory;  // best cost per batch of the current level
     Pose bestPose, candidate;
     double elapsedMs = 0.0;
-    // When finished: the final pose judged like a user's attempt (engine/match PoseError).
+    // When finished: the final pose judged like a user's attempt (engine/match); the numbers
+    // (mTRE, error per parameter) are shown only once the reference is revealed.
+    bool matched = false;
+    Closeness closeness = Closeness::Far;
     double poseErrorMm = 0.0;
     std::array<double, kParameterCount> error6{};  // solution minus reference, per parameter
     bool applied = false;                          // the user took the solution onto the sliders
@@ -143,15 +153,19 @@ struct AppState {
     std::optional<double> bestUserPoseErrorMm;  // the user's best mTRE over this reference
     std::optional<MatchOutcome> match;
     bool matchIsStale = false;    // the pose moved since the last Match
-    std::string referenceSource;  // "data/reference_poses.txt #3" or "random pose"
+    std::string referenceSource;  // "random around AP (medium)", "given on the command line"
+    HintWording hintWording = HintWording::Direction;
+    Difficulty difficulty = Difficulty::Medium;  // of the next New reference image
 
     double translationRangeMm = 100.0;
     // The judge's tolerances (engine/match), shown with the verdict and in Help.
-    double toleranceOffsetMm = 0.0, toleranceAngleDeg = 0.0, toleranceMinNcc = 0.0;
+    double toleranceOffsetMm = 0.0, toleranceAngleDeg = 0.0;
     DisplaySettings display;
     View3d view;
     BoneSurface bone;
     bool showHelp = false;
+    // The parameter the arrow keys nudge (KeyboardNudge): Up/Down or a click select it.
+    int selectedParameter = kOffsetX;
     bool showTimings = true;  // off for golden images: timings differ run to run
     std::string volumePathField;
     LoadStatus load;

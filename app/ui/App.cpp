@@ -7,6 +7,7 @@
 #include <chrono>
 
 #include "core/Error.h"
+#include "match/MatchVerdict.h"
 #include "match/PoseError.h"
 #include "mesh/MarchingCubes.h"
 #include "platform/Gl.h"
@@ -49,7 +50,6 @@ App::App(RenderBackend& backend, AppOptions options)
     const MatchTolerancesView tolerances = matchTolerances();
     state_.toleranceOffsetMm = tolerances.offsetMm;
     state_.toleranceAngleDeg = tolerances.angleDeg;
-    state_.toleranceMinNcc = tolerances.minNcc;
     state_.volumePathField = options_.volumeSpec;
     state_.requests.loadVolume = options_.volumeSpec;
 }
@@ -145,7 +145,8 @@ void App::newReference() {
     if (!scene_) return;
     const bool haveReference = referenceKey_.has_value();
     const ReferenceChoice choice =
-        chooseReference(*scene_, nextSeed_++, haveReference ? &state_.referencePose : nullptr);
+        chooseReference(*scene_, nextSeed_++, state_.userPose, state_.difficulty,
+                        haveReference ? &state_.referencePose : nullptr);
     state_.referencePose = choice.pose;
     state_.referenceSource = choice.source;
     state_.referenceRevealed = false;
@@ -202,12 +203,10 @@ void App::pollSolver() {
     if (s.finished && !solveJudged_ && scene_) {
         // Judged like a user's attempt: per-parameter error and mTRE against the reference.
         out.error6 = poseDifference(state_.referencePose, s.bestPose);
-        out.poseErrorMm =
-            scene_->bonePoints.empty()
-                ? 0.0
-                : targetRegistrationError(state_.referencePose, s.bestPose, scene_->setup,
-                                          scene_->center, scene_->bonePoints)
-                      .meanMm;
+        out.poseErrorMm = sceneMtre(*scene_, state_.referencePose, s.bestPose);
+        const MatchVerdict verdict = judgeMatch(state_.referencePose, s.bestPose, out.poseErrorMm);
+        out.matched = verdict.match;
+        out.closeness = verdict.closeness;
         solveJudged_ = true;
     }
 }
@@ -261,6 +260,14 @@ void App::processRequests() {
         state_.match = std::move(outcome);
         state_.matchIsStale = false;
     }
+    refreshMatchTexts();
+}
+
+void App::refreshMatchTexts() {
+    // The numbers (signed errors, mTRE) only once they no longer give the answer away.
+    if (state_.match)
+        wordOutcome(*state_.match, state_.hintWording,
+                    state_.match->matched || state_.referenceRevealed);
 }
 
 void App::updateImages() {
@@ -355,6 +362,7 @@ void App::frame() {
     textures.user = userTexture_->empty() ? 0 : userTexture_->id();
     textures.compare = compareTexture_->empty() ? 0 : compareTexture_->id();
     textures.scene3d = sceneRenderer_->texture();
+    refreshMatchTexts();  // the hint mode or Reveal may have changed since
     ui_.draw(state_, textures);
 
     processRequests();

@@ -70,6 +70,7 @@ class App {
   private:
     void installLoadResult(SceneLoader::Result result);
     void processRequests();
+    void refreshMatchTexts();
     void updateImages();
     void newReference();
     void startSolve();

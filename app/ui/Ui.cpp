@@ -1,35 +1,20 @@
 #include "ui/Ui.h"
 
+#include "ui/UiWidgets.h"
+
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
-#include <cstdarg>
 #include <cstdint>
 #include <cstdio>
 
 namespace fm::app {
 namespace {
 
-constexpr ImGuiWindowFlags kPaneFlags =
-    ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
-    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBringToFrontOnFocus;
-const ImVec4 kGood{0.45f, 0.90f, 0.45f, 1.0f};
-const ImVec4 kWarn{1.00f, 0.70f, 0.30f, 1.0f};
-const ImVec4 kBad{1.00f, 0.40f, 0.40f, 1.0f};
-const ImVec4 kDim{0.65f, 0.65f, 0.70f, 1.0f};
-
-ImTextureID toImTexture(unsigned id) {
-    return reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(id));
-}
-
-bool beginPane(const char* title, const Pane& pane) {
-    ImGui::SetNextWindowPos(ImVec2(pane.pos.x, pane.pos.y), ImGuiCond_Always);
-    ImGui::SetNextWindowSize(ImVec2(pane.size.x, pane.size.y), ImGuiCond_Always);
-    return ImGui::Begin(title, nullptr, kPaneFlags);
-}
+using namespace widgets;
 
 // The largest square that fits the remaining content region, centred horizontally.
 float squareImage(unsigned texture, float reserveBelow) {
@@ -41,56 +26,6 @@ float squareImage(unsigned texture, float reserveBelow) {
     else
         ImGui::Dummy(ImVec2(side, side));
     return side;
-}
-
-void poseLine(const Pose& pose) {
-    // Compact: it must fit under the image at 960 px wide windows.
-    ImGui::Text("%.1f, %.1f, %.1f mm | %.1f, %.1f, %.1f deg", pose.offset.x, pose.offset.y,
-                pose.offset.z, pose.azimuthDeg, pose.elevationDeg, pose.rotationDeg);
-}
-
-double& poseValue(Pose& pose, int parameter) {
-    switch (parameter) {
-        case kOffsetX:
-            return pose.offset.x;
-        case kOffsetY:
-            return pose.offset.y;
-        case kOffsetZ:
-            return pose.offset.z;
-        case kAzimuth:
-            return pose.azimuthDeg;
-        case kElevation:
-            return pose.elevationDeg;
-        default:
-            return pose.rotationDeg;
-    }
-}
-
-// A bullet whose text wraps at the window edge (BulletText does not wrap).
-void bulletWrapped(const char* format, ...) IM_FMTARGS(1);
-void bulletWrapped(const char* format, ...) {
-    ImGui::Bullet();
-    va_list args;
-    va_start(args, format);
-    ImGui::TextWrappedV(format, args);
-    va_end(args);
-}
-
-// Dimmed text that wraps.
-void dimWrapped(const char* format, ...) IM_FMTARGS(1);
-void dimWrapped(const char* format, ...) {
-    ImGui::PushStyleColor(ImGuiCol_Text, kDim);
-    va_list args;
-    va_start(args, format);
-    ImGui::TextWrappedV(format, args);
-    va_end(args);
-    ImGui::PopStyleColor();
-}
-
-std::string idName(const char* name) {  // "x offset" -> "x-offset"
-    std::string s(name);
-    std::replace(s.begin(), s.end(), ' ', '-');
-    return s;
 }
 
 }  // namespace
@@ -118,6 +53,7 @@ void Ui::draw(AppState& state, const UiTextures& textures) {
     comparePane(state, layout.compare, textures.compare);
     matchPane(state, layout.match);
     if (state.showHelp) helpWindow(state);
+    keyboard(state);
 }
 
 void Ui::referencePane(AppState& state, const Pane& pane, unsigned texture) {
@@ -240,17 +176,33 @@ void Ui::parameterPane(AppState& state, const Pane& pane) {
         const double before = value;
         ImGui::PushID(p);
         ImGui::AlignTextToFramePadding();
-        ImGui::TextUnformatted(spec.name);
+        // The parameter the arrow keys nudge is highlighted.
+        if (p == state.selectedParameter)
+            ImGui::TextColored(kSelected, "%s", spec.name);
+        else
+            ImGui::TextUnformatted(spec.name);
+        record("label:" + id);
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("Up/Down select a parameter, Left/Right nudge it by 1 %s "
+                              "(Shift: 0.1)", spec.unit);
         ImGui::SameLine(labelWidth + ImGui::GetStyle().WindowPadding.x);
         // Slider and number field edit the same value, so each follows the other (as in 2011).
         ImGui::SetNextItemWidth(sliderWidth);
-        ImGui::SliderScalar("##slider", ImGuiDataType_Double, &value, &spec.min, &spec.max, "%.1f");
-        if (ImGui::IsItemActive()) state.interacting = true;
+        // No text on the slider (the grab would cover it; the number field beside shows the
+        // value), and no rounding by ImGui's format: the value is kept to 0.1 mm / deg here.
+        if (ImGui::SliderScalar("##slider", ImGuiDataType_Double, &value, &spec.min, &spec.max,
+                                ""))
+            value = std::round(value * 10.0) / 10.0;
+        if (ImGui::IsItemActive()) {
+            state.interacting = true;
+            state.selectedParameter = p;
+        }
         record("slider:" + id);
         ImGui::SameLine();
         ImGui::SetNextItemWidth(inputWidth);
         ImGui::InputDouble("##input", &value, 0.0, 0.0, "%.2f", ImGuiInputTextFlags_AutoSelectAll);
         record("input:" + id);
+        if (ImGui::IsItemActive()) state.selectedParameter = p;
         ImGui::SameLine();
         ImGui::TextUnformatted(spec.unit);
         ImGui::PopID();
@@ -291,16 +243,18 @@ void Ui::parameterPane(AppState& state, const Pane& pane) {
         std::snprintf(overlay, sizeof(overlay), "%s (%.1f s)", load.stage.c_str(),
                       load.elapsedSeconds);
         ImGui::ProgressBar(load.progress, ImVec2(-1.0f, 0.0f), overlay);
-        ImGui::TextColored(kDim, "Loading %s ...", load.requestedSpec.c_str());
+        elidedText(kDim, "Loading " + load.requestedSpec + " ...");
     } else {
-        ImGui::TextColored(kDim, "%s",
-                           load.loadedSpec.empty() ? "No CT loaded" : load.loadedSpec.c_str());
-        ImGui::TextColored(kDim, "%s", load.summary.c_str());
-        if (!load.loadedSpec.empty())
-            ImGui::TextColored(kDim, "%zu bone triangles (iso %.4g)", state.bone.triangles,
-                               state.bone.shownLevel);
+        elidedText(kDim, load.loadedSpec.empty() ? "No CT loaded" : load.loadedSpec);
+        elidedText(kDim, load.summary);
+        if (!load.loadedSpec.empty()) {
+            char text[96];
+            std::snprintf(text, sizeof(text), "%zu bone triangles (iso %.4g)",
+                          state.bone.triangles, state.bone.shownLevel);
+            elidedText(kDim, text);
+        }
     }
-    if (!load.error.empty()) ImGui::TextColored(kBad, "%s", load.error.c_str());
+    if (!load.error.empty()) coloredWrapped(kBad, load.error);  // wraps: never cut off
     ImGui::End();
 }
 
@@ -332,7 +286,9 @@ void Ui::comparePane(AppState& state, const Pane& pane, unsigned texture) {
                          : state.display.compare == CompareMode::Overlay
                              ? "magenta: reference\ngreen: yours"
                              : "tiles alternate\nreference / yours";
+    ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + controlsWidth);
     ImGui::TextColored(kDim, "%s", legend);
+    ImGui::PopTextWrapPos();
     ImGui::Checkbox("Auto window", &state.display.autoWindow);
     record("checkbox:auto-window");
     ImGui::SetNextItemWidth(controlsWidth - ImGui::CalcTextSize("Window").x - 8.0f);
@@ -357,225 +313,6 @@ void Ui::comparePane(AppState& state, const Pane& pane, unsigned texture) {
                        t.lastCoarseMs);
     ImGui::TextColored(kDim, "frame %.1f ms", t.frameMs);
     ImGui::EndGroup();
-    ImGui::End();
-}
-
-void Ui::matchPane(AppState& state, const Pane& pane) {
-    beginPane("Match", pane);
-    // Two tabs: the pane is too short for the verdict table and the solve result together.
-    if (ImGui::BeginTabBar("##match-tabs")) {
-        const bool mine = ImGui::BeginTabItem("Your match");
-        record("tab:match");
-        if (mine) {
-            matchTab(state);
-            ImGui::EndTabItem();
-        }
-        const bool computer = ImGui::BeginTabItem("Solve");
-        record("tab:solve");
-        if (computer) {
-            solveSection(state);
-            ImGui::EndTabItem();
-        }
-        ImGui::EndTabBar();
-    }
-    ImGui::End();
-}
-
-void Ui::matchTab(AppState& state) {
-    if (ImGui::Button("New reference image")) state.requests.newReference = true;
-    record("button:new-reference");
-    ImGui::SameLine();
-    if (ImGui::Button("Match")) state.requests.match = true;
-    record("button:match");
-    ImGui::SameLine();
-    if (ImGui::Button("Help")) state.showHelp = !state.showHelp;
-    record("button:help");
-    ImGui::SameLine();
-    ImGui::TextColored(kDim, "attempts: %d", state.attempts);
-
-    bool reveal = state.referenceRevealed;
-    if (ImGui::Checkbox("Reveal the reference parameters", &reveal)) {
-        if (reveal)
-            state.requests.reveal = true;
-        else
-            state.referenceRevealed = false;
-    }
-    record("checkbox:reveal");
-
-    if (!state.match) {
-        ImGui::TextWrapped(
-            "Move the six parameters until your DRR matches the reference, then "
-            "press Match.");
-        dimWrapped(
-            "A match: every offset within %.3g mm, every angle within %.3g deg, and NCC "
-            "of the images at least %.3g.",
-            state.toleranceOffsetMm, state.toleranceAngleDeg, state.toleranceMinNcc);
-    } else {
-        const MatchOutcome& m = *state.match;
-        ImGui::PushTextWrapPos(0.0f);
-        ImGui::TextColored(m.matched ? kGood : kWarn, "%s", m.verdict.c_str());
-        ImGui::PopTextWrapPos();
-        ImGui::Text("pose error (mTRE) %.2f mm   NCC %.4f%s", m.poseErrorMm, m.ncc,
-                    state.matchIsStale ? "   (pose moved since)" : "");
-        const auto specs = parameterSpecs(state.translationRangeMm);
-        const int columns = state.referenceRevealed ? 4 : 3;
-        if (ImGui::BeginTable("hints", columns,
-                              ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
-            // Explicit weights: content-based widths would need an extra frame to settle.
-            ImGui::TableSetupColumn("parameter", ImGuiTableColumnFlags_WidthStretch, 2.0f);
-            ImGui::TableSetupColumn("error", ImGuiTableColumnFlags_WidthStretch, 1.2f);
-            ImGui::TableSetupColumn("hint", ImGuiTableColumnFlags_WidthStretch, 1.0f);
-            if (state.referenceRevealed)
-                ImGui::TableSetupColumn("reference", ImGuiTableColumnFlags_WidthStretch, 1.0f);
-            ImGui::TableHeadersRow();
-            const auto reference = state.referencePose.toArray();
-            for (int p = 0; p < kParameterCount; ++p) {
-                ImGui::TableNextRow();
-                ImGui::TableNextColumn();
-                if (p == m.furthestParameter)
-                    ImGui::TextColored(kWarn, "%s (furthest)", specs[p].name);
-                else
-                    ImGui::TextUnformatted(specs[p].name);
-                ImGui::TableNextColumn();
-                ImGui::Text("%+.1f %s", m.error[p], specs[p].unit);
-                ImGui::TableNextColumn();
-                if (m.direction[p] > 0)
-                    ImGui::TextColored(kWarn, "too high");
-                else if (m.direction[p] < 0)
-                    ImGui::TextColored(kWarn, "too low");
-                else
-                    ImGui::TextColored(kGood, "ok");
-                if (state.referenceRevealed) {
-                    ImGui::TableNextColumn();
-                    ImGui::Text("%.1f", reference[p]);
-                }
-            }
-            ImGui::EndTable();
-        }
-    }
-}
-
-void Ui::solveSection(AppState& state) {
-    SolveStatus& solve = state.solve;
-    ImGui::AlignTextToFramePadding();
-    ImGui::TextUnformatted("Computer:");
-    ImGui::SameLine();
-    ImGui::SetNextItemWidth(ImGui::CalcTextSize("Particle swarm").x + ImGui::GetFrameHeight() +
-                            2 * ImGui::GetStyle().FramePadding.x);
-    if (solve.running) ImGui::BeginDisabled();
-    ImGui::Combo("##method", &solve.method, kSolveMethodLabels, kSolveMethodCount);
-    if (solve.running) ImGui::EndDisabled();
-    record("combo:solve-method");
-    ImGui::SameLine();
-    if (solve.running) {
-        if (ImGui::Button("Stop")) state.requests.stopSolve = true;
-        record("button:stop-solve");
-    } else {
-        if (ImGui::Button("Solve")) state.requests.solve = true;
-        record("button:solve");
-    }
-    if (!solve.error.empty()) ImGui::TextColored(kBad, "%s", solve.error.c_str());
-    if (!solve.running && !solve.finished) {
-        dimWrapped("Solve: the automatic search from your pose, to compare with your attempts.");
-        return;
-    }
-
-    char overlay[160];
-    std::snprintf(overlay, sizeof(overlay), "level %d/%d %s  %d/%d", solve.level + 1,
-                  std::max(1, solve.levelCount), solve.stage.c_str(), solve.evaluations,
-                  solve.budget);
-    const float fraction =
-        solve.budget > 0 ? std::min(1.0f, float(solve.evaluations) / float(solve.budget)) : 0.0f;
-    ImGui::ProgressBar(solve.finished && !solve.stopped ? 1.0f : fraction, ImVec2(-1.0f, 0.0f),
-                       overlay);
-    record("progress:solve");
-    if (!solve.costHistory.empty()) {
-        ImGui::PlotLines("##cost", solve.costHistory.data(), int(solve.costHistory.size()), 0,
-                         "best cost (this level)", FLT_MAX, FLT_MAX,
-                         // PlotLines (1.86) takes no negative "fill" width: give it outright.
-                         ImVec2(ImGui::GetContentRegionAvail().x, 40.0f));
-        record("plot:solve-cost");
-    }
-    if (solve.running) {
-        ImGui::TextColored(kDim, "candidate");
-        ImGui::SameLine();
-        poseLine(solve.candidate);
-        if (state.showTimings) ImGui::TextColored(kDim, "%.1f s", solve.elapsedMs / 1000.0);
-        return;
-    }
-
-    // Finished: the computer's answer beside the user's attempts.
-    ImGui::TextColored(solve.poseErrorMm < 1.0 ? kGood : kWarn, "computer mTRE %.2f mm%s",
-                       solve.poseErrorMm, solve.stopped ? " (stopped)" : "");
-    ImGui::SameLine();
-    if (state.showTimings)
-        ImGui::TextColored(kDim, "%d evals, %.1f s", solve.evaluations, solve.elapsedMs / 1000.0);
-    else
-        ImGui::TextColored(kDim, "%d evals", solve.evaluations);
-    poseLine(solve.bestPose);
-    ImGui::TextColored(kDim, "error %+.1f %+.1f %+.1f mm | %+.1f %+.1f %+.1f deg", solve.error6[0],
-                       solve.error6[1], solve.error6[2], solve.error6[3], solve.error6[4],
-                       solve.error6[5]);
-    if (state.bestUserPoseErrorMm)
-        ImGui::Text("you: %d attempt%s, best mTRE %.2f mm", state.attempts,
-                    state.attempts == 1 ? "" : "s", *state.bestUserPoseErrorMm);
-    else
-        ImGui::Text("you: no attempt yet");
-    if (ImGui::Button(solve.applied ? "Applied" : "Apply solution"))
-        state.requests.applySolution = true;
-    record("button:apply-solution");
-}
-
-void Ui::helpWindow(AppState& state) {
-    const ImVec2 display = ImGui::GetIO().DisplaySize;
-    // Centred, as wide as fits, as tall as its text (auto-resize), opaque.
-    const float width = std::min(620.0f, display.x - 40.0f);
-    ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y * 0.5f), ImGuiCond_Always,
-                            ImVec2(0.5f, 0.5f));
-    ImGui::SetNextWindowSize(ImVec2(width, 0.0f), ImGuiCond_Always);
-    ImGui::SetNextWindowBgAlpha(1.0f);
-    if (ImGui::Begin("Help", &state.showHelp,
-                     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse |
-                         ImGuiWindowFlags_NoMove)) {
-        ImGui::TextWrapped(
-            "The task: the left image is a radiograph (DRR) of the CT taken from a hidden pose. "
-            "Find that pose: move the six parameters until your DRR (middle) matches it, then "
-            "press Match.");
-        ImGui::Spacing();
-        ImGui::TextUnformatted("The six parameters:");
-        bulletWrapped(
-            "x, y, z offset (mm): where the CT's centre sits relative to the "
-            "isocenter, the point between source and film.");
-        bulletWrapped(
-            "azimuth (-180..180 deg) and elevation (-90..90 deg): where the X-ray "
-            "source stands on its sphere around the isocenter.");
-        bulletWrapped("rotation (-90..90 deg): the film's turn in its own plane.");
-        ImGui::Spacing();
-        ImGui::TextUnformatted("Controls:");
-        bulletWrapped("Drag a slider, or type a number in the field beside it.");
-        bulletWrapped(
-            "Match: compares your pose with the hidden one; within tolerance the "
-            "images match, otherwise each parameter gets a hint (too high / too "
-            "low) and the one furthest off is named. Attempts are counted.");
-        bulletWrapped(
-            "A match needs every offset within %.3g mm and every angle within "
-            "%.3g deg of the hidden pose, and the images to correlate (NCC >= %.3g).",
-            state.toleranceOffsetMm, state.toleranceAngleDeg, state.toleranceMinNcc);
-        bulletWrapped("New reference image: another hidden pose. Reveal shows its values.");
-        bulletWrapped(
-            "Solve: the computer searches from your pose with the chosen method (live: its "
-            "best pose in your DRR, a cost curve; Stop keeps its best so far), then shows its "
-            "error and time beside your attempts. Apply solution puts its pose on the sliders.");
-        bulletWrapped(
-            "Compare: difference, overlay or checkerboard of the two images, with "
-            "window and level.");
-        bulletWrapped("3D view: drag to orbit, mouse wheel to zoom, Reset view.");
-        bulletWrapped(
-            "Open another CT: type a path (file, DICOM folder or phantom:NAME) or "
-            "drop it onto the window.");
-        if (ImGui::Button("Close")) state.showHelp = false;
-        record("button:close-help");
-    }
     ImGui::End();
 }
 

@@ -48,9 +48,10 @@ class Ui {
     void parameterPane(AppState& state, const Pane& pane);
     void comparePane(AppState& state, const Pane& pane, unsigned texture);
     void matchPane(AppState& state, const Pane& pane);
-    void matchTab(AppState& state);      // the Match pane's tabs: the user's attempts ...
-    void solveSection(AppState& state);  // ... and the computer's (Solve)
-    void helpWindow(AppState& state);
+    void matchTab(AppState& state);      // MatchPanel.cpp: the user's attempts ...
+    void solveSection(AppState& state);  // SolvePanel.cpp: ... and the computer's
+    void helpWindow(AppState& state);    // HelpWindow.cpp
+    void keyboard(AppState& state);      // KeyboardNudge.cpp: arrows, Enter, Escape
 
     std::map<std::string, WidgetRect> rects_;
     glm::ivec2 sceneViewSize_{320, 320};

@@ -55,11 +55,13 @@ void UiScript::type(const std::string& text) {
     frame();
 }
 
-void UiScript::pressKey(int imguiKey, bool ctrl) {
+void UiScript::pressKey(int imguiKey, bool ctrl, bool shift) {
     input_.keys = {imguiKey};
     input_.ctrl = ctrl;
+    input_.shift = shift;
     frame();
     input_.ctrl = false;
+    input_.shift = false;
     frame();
 }
 

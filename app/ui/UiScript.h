@@ -21,7 +21,8 @@ class UiScript {
     // Press at `from`, move to `to` in `steps` frames, release (steps + 2 frames).
     void drag(glm::vec2 from, glm::vec2 to, int steps);
     void type(const std::string& text);              // one frame
-    void pressKey(int imguiKey, bool ctrl = false);  // down one frame, then up one frame
+    // Down one frame, then up one frame.
+    void pressKey(int imguiKey, bool ctrl = false, bool shift = false);
     void drop(const std::string& path);              // a file dropped onto the window
     void wheel(glm::vec2 position, float amount);    // one frame
 

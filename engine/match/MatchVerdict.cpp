@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <sstream>
 #include <vector>
 
@@ -18,29 +19,53 @@ void validateTolerances(const MatchTolerances& t) {
     if (!positive(t.angleDeg))
         throw Error("match tolerance for angles must be positive, got " +
                     std::to_string(t.angleDeg) + " deg");
-    if (!std::isfinite(t.minNcc) || t.minNcc < -1.0 || t.minNcc > 1.0)
-        throw Error("match minimum NCC must be in -1..1, got " + std::to_string(t.minNcc));
 }
 
-MatchVerdict judgeMatch(const Pose& reference, const Pose& user, double ncc,
+Closeness parameterCloseness(double error, double tolerance) {
+    const double ratio = std::abs(error) / tolerance;
+    if (ratio <= kVeryCloseTolerances) return Closeness::VeryClose;
+    if (ratio <= kCloseTolerances) return Closeness::Close;
+    return Closeness::Far;
+}
+
+Closeness poseCloseness(double mtreMm) {
+    if (mtreMm < kVeryCloseMtreMm) return Closeness::VeryClose;
+    if (mtreMm < kCloseMtreMm) return Closeness::Close;
+    return Closeness::Far;
+}
+
+const char* closenessName(Closeness c) {
+    switch (c) {
+        case Closeness::VeryClose:
+            return "very close";
+        case Closeness::Close:
+            return "close";
+        default:
+            return "far";
+    }
+}
+
+MatchVerdict judgeMatch(const Pose& reference, const Pose& user, double mtreMm,
                         const MatchTolerances& tolerances) {
     validateTolerances(tolerances);
     for (double v : reference.toArray())
         if (!std::isfinite(v)) throw Error("match: the reference pose is not finite");
     for (double v : user.toArray())
         if (!std::isfinite(v)) throw Error("match: the pose to judge is not finite");
-    if (!std::isfinite(ncc)) throw Error("match: the image similarity (NCC) is not finite");
+    if (!std::isfinite(mtreMm) || mtreMm < 0.0)
+        throw Error("match: the target registration error is not a finite distance");
 
     MatchVerdict verdict;
-    verdict.ncc = ncc;
-    verdict.imagesAgree = ncc >= tolerances.minNcc;
-    verdict.parametersWithinTolerance = true;
+    verdict.mtreMm = mtreMm;
+    verdict.closeness = poseCloseness(mtreMm);
+    verdict.match = true;
     const auto error = poseDifference(reference, user);
     double worstRatio = -1.0;
     for (int i = 0; i < kPoseParameterCount; ++i) {
         ParameterHint& h = verdict.hints[i];
         h.error = error[i];
         h.tolerance = tolerances.forParameter(i);
+        h.closeness = parameterCloseness(h.error, h.tolerance);
         const char* word = "OK";
         if (h.error > h.tolerance) {
             h.status = ParameterStatus::TooHigh;
@@ -49,7 +74,7 @@ MatchVerdict judgeMatch(const Pose& reference, const Pose& user, double ncc,
             h.status = ParameterStatus::TooLow;
             word = "too low";
         }
-        if (h.status != ParameterStatus::Ok) verdict.parametersWithinTolerance = false;
+        if (h.status != ParameterStatus::Ok) verdict.match = false;
         h.text = std::string(poseParameterName(i)) + " " + word;
         const double ratio = std::abs(h.error) / h.tolerance;
         if (ratio > worstRatio) {
@@ -57,27 +82,45 @@ MatchVerdict judgeMatch(const Pose& reference, const Pose& user, double ncc,
             verdict.worstParameter = i;
         }
     }
-    verdict.match = verdict.parametersWithinTolerance && verdict.imagesAgree;
+    return verdict;
+}
 
+std::string hintText(const ParameterHint& h, int parameter, HintWording wording,
+                     bool showNumbers) {
+    std::string text = h.status == ParameterStatus::TooHigh  ? "too high"
+                       : h.status == ParameterStatus::TooLow ? "too low"
+                                                             : "ok";
+    if (wording == HintWording::Bands && h.status != ParameterStatus::Ok)
+        text += std::string(", ") + closenessName(h.closeness);
+    if (showNumbers) {
+        char number[48];
+        std::snprintf(number, sizeof(number), " (%+.1f %s)", h.error, poseParameterUnit(parameter));
+        text += number;
+    }
+    return text;
+}
+
+std::string verdictMessage(const MatchVerdict& v, HintWording wording, bool showNumbers) {
     std::ostringstream msg;
     msg.setf(std::ios::fixed);
     msg.precision(1);
-    const ParameterHint& worst = verdict.hints[verdict.worstParameter];
-    const char* unit = poseParameterUnit(verdict.worstParameter);
-    if (verdict.match) {
-        msg << "Match! Every parameter is within tolerance; the images correlate at ";
-        msg.precision(3);
-        msg << ncc << ".";
-    } else if (!verdict.parametersWithinTolerance) {
-        msg << "No match yet: " << worst.text << " (off by " << std::abs(worst.error) << " " << unit
-            << ", tolerance " << worst.tolerance << " " << unit << ").";
-    } else {
-        msg << "No match: the parameters are within tolerance but the images differ (NCC ";
-        msg.precision(3);
-        msg << ncc << " < " << tolerances.minNcc << ").";
+    const ParameterHint& worst = v.hints[v.worstParameter];
+    const char* unit = poseParameterUnit(v.worstParameter);
+    if (v.match) {
+        msg << "Match! Every parameter is within tolerance (mTRE " << v.mtreMm << " mm).";
+        return msg.str();
     }
-    verdict.message = msg.str();
-    return verdict;
+    msg << "No match yet: " << worst.text << " is furthest off";
+    if (showNumbers) {
+        msg << " (by " << std::abs(worst.error) << " " << unit << ", tolerance "
+            << worst.tolerance << " " << unit << "); mTRE " << v.mtreMm << " mm.";
+    } else if (wording == HintWording::Bands) {
+        msg << " (" << closenessName(worst.closeness) << "); the pose as a whole is "
+            << closenessName(v.closeness) << ".";
+    } else {
+        msg << ".";
+    }
+    return msg.str();
 }
 
 double imageAgreement(const Image& reference, const Image& user) {

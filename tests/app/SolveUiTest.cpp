@@ -5,6 +5,7 @@
 
 #include "AppFixture.h"
 #include "drr/Drr.h"
+#include "match/MatchVerdict.h"
 #include "match/PoseError.h"
 #include "scene/DrrCache.h"
 
@@ -90,6 +91,10 @@ TEST_F(SolveUi, SolveFromNearTheReferenceFindsItWithoutTouchingTheUsersPose) {
     EXPECT_LT(solve.poseErrorMm, kSolvedMtreMm);
     const auto diff = poseDifference(app->state().referencePose, solve.bestPose);
     for (int k = 0; k < 6; ++k) EXPECT_DOUBLE_EQ(solve.error6[k], diff[k]) << "parameter " << k;
+    // Judged like a user's attempt, in words: a match.
+    EXPECT_TRUE(solve.matched);
+    EXPECT_EQ(solve.closeness, Closeness::VeryClose);
+    EXPECT_TRUE(script->widget("text:solve-verdict").max.y > 0.0f) << "the verdict is drawn";
     EXPECT_TRUE(samePose(app->state().userPose, start)) << "finished, but not applied";
     EXPECT_TRUE(samePose(app->shownUserPose(), start)) << "the user pane is the user's again";
     EXPECT_EQ(app->state().attempts, 0) << "the computer's answer is no attempt of the user's";
@@ -141,6 +146,11 @@ TEST_F(SolveUi, StopEndsTheRunPromptlyAndKeepsTheBestSoFar) {
     EXPECT_FALSE(samePose(solve.bestPose, start)) << "the best so far is kept, not the start";
     EXPECT_LT(solve.poseErrorMm, mtre(start)) << "the best so far improved on the start";
     EXPECT_NEAR(solve.poseErrorMm, mtre(solve.bestPose), kSameComputationMm);
+    // The stopped answer is judged like a user's: match or not, as the engine's judge says.
+    const MatchVerdict judged =
+        judgeMatch(app->state().referencePose, solve.bestPose, mtre(solve.bestPose));
+    EXPECT_EQ(solve.matched, judged.match);
+    EXPECT_EQ(solve.closeness, judged.closeness);
     EXPECT_TRUE(samePose(app->state().userPose, start)) << "Stop does not apply the solution";
 }
 

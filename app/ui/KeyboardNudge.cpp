@@ -1,0 +1,48 @@
+// The keyboard, when no text field has it: Up/Down select a parameter (or a click on its
+// slider or field), Left/Right
+// nudge it by one step (1 mm / 1 deg; with Shift 0.1), Enter presses Match, Escape closes Help.
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "ui/Ui.h"
+#include "ui/UiWidgets.h"
+
+namespace fm::app {
+
+namespace {
+constexpr double kStep = 1.0, kFineStep = 0.1;  // mm or deg
+
+bool pressed(ImGuiKey key) {
+    return ImGui::IsKeyPressed(ImGui::GetKeyIndex(key), true);
+}
+}  // namespace
+
+void Ui::keyboard(AppState& state) {
+    const ImGuiIO& io = ImGui::GetIO();
+    if (pressed(ImGuiKey_Escape) && state.showHelp) {
+        state.showHelp = false;
+        return;
+    }
+    if (io.WantTextInput) return;  // typing a number or a path: the keys are the field's
+    if (pressed(ImGuiKey_Enter) || pressed(ImGuiKey_KeyPadEnter)) state.requests.match = true;
+    int& selected = state.selectedParameter;
+    if (pressed(ImGuiKey_UpArrow)) selected = (selected + kParameterCount - 1) % kParameterCount;
+    if (pressed(ImGuiKey_DownArrow)) selected = (selected + 1) % kParameterCount;
+    const int direction = (pressed(ImGuiKey_RightArrow) ? 1 : 0) -
+                          (pressed(ImGuiKey_LeftArrow) ? 1 : 0);
+    if (direction == 0) return;
+    const auto specs = parameterSpecs(state.translationRangeMm);
+    double& value = widgets::poseValue(state.userPose, selected);
+    const double step = io.KeyShift ? kFineStep : kStep;
+    // On the 0.1 grid, so that nudges add up exactly as shown.
+    const double nudged = std::round((value + direction * step) * 10.0) / 10.0;
+    const double clamped = std::clamp(nudged, specs[selected].min, specs[selected].max);
+    if (clamped != value) {
+        value = clamped;
+        state.matchIsStale = true;
+    }
+}
+
+}  // namespace fm::app

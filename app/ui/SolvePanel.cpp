@@ -1,0 +1,101 @@
+// The Solve tab: the computer's search from the user's pose, live, then its answer judged like a
+// user's attempt (match / no match, in words); the numbers against the truth only after Reveal.
+#include <imgui.h>
+
+#include <algorithm>
+#include <cfloat>
+#include <cstdio>
+
+#include "ui/Ui.h"
+#include "ui/UiWidgets.h"
+
+namespace fm::app {
+
+using namespace widgets;
+
+void Ui::solveSection(AppState& state) {
+    SolveStatus& solve = state.solve;
+    ImGui::AlignTextToFramePadding();
+    ImGui::TextUnformatted("Computer:");
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(ImGui::CalcTextSize("Particle swarm").x + ImGui::GetFrameHeight() +
+                            2 * ImGui::GetStyle().FramePadding.x);
+    if (solve.running) ImGui::BeginDisabled();
+    ImGui::Combo("##method", &solve.method, kSolveMethodLabels, kSolveMethodCount);
+    if (solve.running) ImGui::EndDisabled();
+    record("combo:solve-method");
+    ImGui::SameLine();
+    if (solve.running) {
+        if (ImGui::Button("Stop")) state.requests.stopSolve = true;
+        record("button:stop-solve");
+    } else {
+        if (ImGui::Button("Solve")) state.requests.solve = true;
+        record("button:solve");
+    }
+    if (!solve.error.empty()) coloredWrapped(kBad, solve.error);
+    if (!solve.running && !solve.finished) {
+        dimWrapped("Solve: the automatic search from your pose, to compare with your attempts.");
+        return;
+    }
+
+    char overlay[160];
+    std::snprintf(overlay, sizeof(overlay), "level %d/%d %s  %d/%d", solve.level + 1,
+                  std::max(1, solve.levelCount), solve.stage.c_str(), solve.evaluations,
+                  solve.budget);
+    const float fraction =
+        solve.budget > 0 ? std::min(1.0f, float(solve.evaluations) / float(solve.budget)) : 0.0f;
+    ImGui::ProgressBar(solve.finished && !solve.stopped ? 1.0f : fraction, ImVec2(-1.0f, 0.0f),
+                       overlay);
+    record("progress:solve");
+    if (!solve.costHistory.empty()) {
+        ImGui::PlotLines("##cost", solve.costHistory.data(), int(solve.costHistory.size()), 0,
+                         "best cost (this level)", FLT_MAX, FLT_MAX,
+                         // PlotLines (1.86) takes no negative "fill" width: give it outright.
+                         ImVec2(ImGui::GetContentRegionAvail().x, 40.0f));
+        record("plot:solve-cost");
+    }
+    if (solve.running) {
+        ImGui::TextColored(kDim, "candidate");
+        ImGui::SameLine();
+        poseLine(solve.candidate);
+        if (state.showTimings) ImGui::TextColored(kDim, "%.1f s", solve.elapsedMs / 1000.0);
+        return;
+    }
+
+    // Finished: the computer's answer, judged like a user's attempt.
+    std::string verdict = solve.matched
+                              ? "The computer's answer matches the reference."
+                              : std::string("No match: the computer's answer is ") +
+                                    closenessName(solve.closeness) + " from the reference.";
+    if (solve.stopped) verdict += " (stopped)";
+    coloredWrapped(solve.matched ? kGood : kWarn, verdict);
+    record("text:solve-verdict");
+    if (state.showTimings)
+        ImGui::TextColored(kDim, "%d evals, %.1f s", solve.evaluations, solve.elapsedMs / 1000.0);
+    else
+        ImGui::TextColored(kDim, "%d evals", solve.evaluations);
+    ImGui::SameLine();
+    poseLine(solve.bestPose);
+    if (state.referenceRevealed) {
+        ImGui::Text("mTRE %.2f mm, error %+.1f %+.1f %+.1f mm | %+.1f %+.1f %+.1f deg",
+                    solve.poseErrorMm, solve.error6[0], solve.error6[1], solve.error6[2],
+                    solve.error6[3], solve.error6[4], solve.error6[5]);
+        if (state.bestUserPoseErrorMm)
+            ImGui::Text("you: %d attempt%s, best mTRE %.2f mm", state.attempts,
+                        state.attempts == 1 ? "" : "s", *state.bestUserPoseErrorMm);
+    } else {
+        dimWrapped("Reveal shows its error against the hidden pose.");
+    }
+    if (!state.referenceRevealed || !state.bestUserPoseErrorMm) {
+        if (state.attempts > 0)
+            ImGui::Text("you: %d attempt%s%s", state.attempts, state.attempts == 1 ? "" : "s",
+                        state.match && state.match->matched ? ", matched" : "");
+        else
+            ImGui::Text("you: no attempt yet");
+    }
+    if (ImGui::Button(solve.applied ? "Applied" : "Apply solution"))
+        state.requests.applySolution = true;
+    record("button:apply-solution");
+}
+
+}  // namespace fm::app

@@ -1,0 +1,45 @@
+#pragma once
+// Small ImGui helpers shared by the panes (app/ui/*Pane.cpp, *Panel.cpp): colours, fixed pane
+// windows, wrapping text, the pose line. Only ImGui calls; no state of their own.
+#include <imgui.h>
+
+#include <cstdint>
+#include <string>
+
+#include "geometry/Pose.h"
+#include "ui/Layout.h"
+
+namespace fm::app::widgets {
+
+inline constexpr ImGuiWindowFlags kPaneFlags =
+    ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBringToFrontOnFocus;
+inline const ImVec4 kGood{0.45f, 0.90f, 0.45f, 1.0f};
+inline const ImVec4 kWarn{1.00f, 0.70f, 0.30f, 1.0f};
+inline const ImVec4 kBad{1.00f, 0.40f, 0.40f, 1.0f};
+inline const ImVec4 kDim{0.65f, 0.65f, 0.70f, 1.0f};
+inline const ImVec4 kSelected{0.40f, 0.75f, 1.00f, 1.0f};
+
+inline ImTextureID toImTexture(unsigned id) {
+    return reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(id));
+}
+
+// A fixed window at the pane's rectangle.
+bool beginPane(const char* title, const Pane& pane);
+// "x, y, z mm | az, el, rot deg" in one compact line.
+void poseLine(const Pose& pose);
+// The parameter (Pose::toArray() order) as a reference into the pose.
+double& poseValue(Pose& pose, int parameter);
+// A bullet whose text wraps at the window edge (BulletText does not wrap).
+void bulletWrapped(const char* format, ...) IM_FMTARGS(1);
+// Dimmed text that wraps.
+void dimWrapped(const char* format, ...) IM_FMTARGS(1);
+// Coloured text that wraps.
+void coloredWrapped(const ImVec4& color, const std::string& text);
+// One line of text cut to the available width with "...", the whole text in a tooltip when
+// hovered (long paths, load errors).
+void elidedText(const ImVec4& color, const std::string& text);
+// "x offset" -> "x-offset" (widget ids for tests).
+std::string idName(const char* name);
+
+}  // namespace fm::app::widgets
