@@ -33,6 +33,10 @@ void runInfo(const std::string& spec) {
                     v.direction[a].y, v.direction[a].z);
     std::printf("orientation  %s\n", fm::orientationCode(v.direction).c_str());
     std::printf("units        %s\n", fm::toString(v.meta.units));
+    if (s.nanCount + s.infiniteCount > 0)
+        std::printf("non-finite   %zu NaN and %zu infinite voxels (not a CT value; the figures below "
+                    "leave them out, and a DRR refuses them)\n",
+                    s.nanCount, s.infiniteCount);
     std::printf("values       min %.6g  max %.6g  mean %.6g\n", s.min, s.max, s.mean);
     std::printf("percentiles  1%%: %.6g  5%%: %.6g  50%%: %.6g  95%%: %.6g  99%%: %.6g\n",
                 s.percentiles[0], s.percentiles[1], s.percentiles[2], s.percentiles[3],

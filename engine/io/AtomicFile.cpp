@@ -44,8 +44,8 @@ std::size_t allowedBytes(std::size_t wanted) {
 }
 
 [[noreturn]] void fail(const fs::path& target, const std::string& step, int error) {
-    throw Error("cannot write " + quoted(target) + ": " + step + " failed: " +
-                std::strerror(error));
+    throw Error("cannot write " + quoted(target) + ": " + step +
+                " failed: " + std::strerror(error));
 }
 
 // An open file descriptor, closed (unchecked) if still open when an error unwinds.
@@ -157,8 +157,7 @@ Target inspect(const fs::path& requested) {
 }
 
 // A pipe or device: written in place; a FIFO nobody reads is refused rather than waited on.
-void writeThrough(const Target& t, const fs::path& requested, const void* data,
-                  std::size_t size) {
+void writeThrough(const Target& t, const fs::path& requested, const void* data, std::size_t size) {
     Descriptor d;
     d.fd = ::open(t.path.c_str(), O_WRONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
     if (d.fd < 0) {
@@ -240,15 +239,13 @@ void writeViaTemporary(const fs::path& path, const std::function<bool(const fs::
         std::error_code ec;
         fs::create_directories(scratch, ec);
         Bytes content;
-        withTemporary(Target{scratch / path.filename()},
-                      [&](Descriptor& d, const fs::path& temp) {
-                          d.close(path);
-                          if (!writeTo(temp))
-                              throw Error("cannot write " + quoted(path) +
-                                          " (disk full or no permission?)");
-                          content = readFilePrefix(temp, static_cast<std::size_t>(fileSize(temp)));
-                          ::unlink(temp.c_str());
-                      });
+        withTemporary(Target{scratch / path.filename()}, [&](Descriptor& d, const fs::path& temp) {
+            d.close(path);
+            if (!writeTo(temp))
+                throw Error("cannot write " + quoted(path) + " (disk full or no permission?)");
+            content = readFilePrefix(temp, static_cast<std::size_t>(fileSize(temp)));
+            ::unlink(temp.c_str());
+        });
         return writeThrough(t, path, content.data(), content.size());
     }
     withTemporary(t, [&](Descriptor& d, const fs::path& temp) {

@@ -3,6 +3,7 @@
 #include <zlib.h>
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <limits>
 #include <sstream>
@@ -171,48 +172,81 @@ struct InflateStream {
     }
 };
 
-Bytes inflateFrom(InputFeed& feed, std::size_t maxOutput, const std::string& what) {
+// Beyond the promised size, a verified stream may hold this much more (discarded) before its
+// end: enough for trailing padding, too little for a zip bomb to cost real time.
+std::size_t trailingAllowance(std::size_t maxOutput) {
+    return std::max<std::size_t>(maxOutput, std::size_t(4) << 20);
+}
+
+Bytes inflateFrom(InputFeed& feed, std::size_t maxOutput, const std::string& what, InflateEnd end) {
     InflateStream s;
-    // 15 + 32: accept both zlib and gzip headers (MetaImage uses zlib, NIfTI/NRRD gzip).
+    // 15 + 32: accept both zlib and gzip headers (MetaImage uses zlib, NIfTI/NRRD gzip). zlib
+    // checks the trailer (CRC-32 and length for gzip, Adler-32 for zlib) when it reaches the
+    // stream's end, which is why a verified read must get there.
     if (inflateInit2(&s.z, 15 + 32) != Z_OK) throw Error(what + ": cannot start decompression");
     s.open = true;
 
     Bytes out;
     std::size_t produced = 0;
-    while (produced < maxOutput) {
-        if (!feed.refill(s.z)) break;  // input ended before the stream did: caller sees short
-        if (out.size() == produced) {
-            // Grow with what actually arrives, never straight to the promised size.
-            const std::size_t grow = std::max<std::size_t>(out.size(), 1 << 16);
-            out.resize(std::min(maxOutput, out.size() + grow));
+    std::size_t discarded = 0;  // verified reads: output beyond maxOutput, inflated to the end
+    std::uint8_t scratch[16384];
+    bool ended = false;
+    const auto corrupt = [&](int rc) {
+        const std::string detail = s.z.msg ? s.z.msg : "error " + std::to_string(rc);
+        throw Error(what + ": corrupt compressed data (" + detail + ")");
+    };
+    while (true) {
+        const bool full = produced == maxOutput;
+        if (full && end == InflateEnd::PrefixOnly) break;
+        if (full && discarded > trailingAllowance(maxOutput))
+            throw Error(what + ": the compressed stream holds more than " +
+                        std::to_string(maxOutput + discarded) + " bytes, far beyond the " +
+                        std::to_string(maxOutput) + " the header promises");
+        if (!feed.refill(s.z)) break;  // input ended before the stream did (checked below)
+        std::size_t room = 0;
+        if (!full) {
+            if (out.size() == produced) {
+                // Grow with what actually arrives, never straight to the promised size.
+                const std::size_t grow = std::max<std::size_t>(out.size(), 1 << 16);
+                out.resize(std::min(maxOutput, out.size() + grow));
+            }
+            room = std::min<std::size_t>(out.size() - produced, 1u << 30);
+            s.z.next_out = out.data() + produced;
+        } else {
+            room = sizeof scratch;
+            s.z.next_out = scratch;
         }
-        const std::size_t room = std::min<std::size_t>(out.size() - produced, 1u << 30);
-        s.z.next_out = out.data() + produced;
         s.z.avail_out = static_cast<uInt>(room);
         const int rc = inflate(&s.z, Z_NO_FLUSH);
-        produced += room - s.z.avail_out;
+        (full ? discarded : produced) += room - s.z.avail_out;
         if (rc == Z_STREAM_END) {
             // Another gzip member may follow (concatenated .gz files are valid gzip).
+            ended = true;
             if (!feed.refill(s.z)) break;
             if (s.z.avail_in >= 1 && s.z.next_in[0] == 0x1f) {
-                if (inflateReset(&s.z) != Z_OK) break;
+                if (inflateReset(&s.z) != Z_OK) corrupt(rc);
+                ended = false;
                 continue;
             }
             break;  // trailing bytes after the stream: ignored, as gzip does
         }
         if (rc == Z_BUF_ERROR) continue;  // needs more input or output; loop decides
-        if (rc != Z_OK) {
-            const std::string detail = s.z.msg ? s.z.msg : "error " + std::to_string(rc);
-            throw Error(what + ": corrupt compressed data (" + detail + ")");
-        }
+        if (rc != Z_OK) corrupt(rc);
     }
+    // A stream cut short: the caller reports a shortfall of data; full data without the end
+    // marker and checksum cannot be trusted.
+    if (end == InflateEnd::Verified && !ended && produced == maxOutput)
+        throw Error(what +
+                    ": the compressed stream is truncated: it ends before its checksum "
+                    "(the data cannot be verified)");
     out.resize(produced);
     return out;
 }
 
 }  // namespace
 
-Bytes inflateFile(const fs::path& path, std::uintmax_t offset, std::size_t maxOutput) {
+Bytes inflateFile(const fs::path& path, std::uintmax_t offset, std::size_t maxOutput,
+                  InflateEnd end) {
     const std::uintmax_t size = fileSize(path);
     if (offset > size)
         throw Error(quoted(path) + " is truncated: compressed data should start at byte " +
@@ -221,15 +255,15 @@ Bytes inflateFile(const fs::path& path, std::uintmax_t offset, std::size_t maxOu
     in.seekg(static_cast<std::streamoff>(offset));
     InputFeed feed;
     feed.file = &in;
-    return inflateFrom(feed, maxOutput, quoted(path));
+    return inflateFrom(feed, maxOutput, quoted(path), end);
 }
 
 Bytes inflateBuffer(const std::uint8_t* data, std::size_t size, std::size_t maxOutput,
-                    const std::string& what) {
+                    const std::string& what, InflateEnd end) {
     InputFeed feed;
     feed.memory = data;
     feed.memorySize = size;
-    return inflateFrom(feed, maxOutput, what);
+    return inflateFrom(feed, maxOutput, what, end);
 }
 
 Bytes deflateBuffer(const std::uint8_t* data, std::size_t size, bool gzipFormat, int level) {
@@ -281,9 +315,10 @@ std::size_t checkedMultiply(std::size_t a, std::size_t b, const std::string& wha
 namespace {
 
 template <typename T>
-void convertTyped(const std::uint8_t* raw, std::size_t count, bool swapBytes, float* out,
-                  double slope, double intercept) {
+std::size_t convertTyped(const std::uint8_t* raw, std::size_t count, bool swapBytes, float* out,
+                         double slope, double intercept) {
     const bool identity = slope == 1.0 && intercept == 0.0;
+    std::size_t overflowed = 0;
     for (std::size_t n = 0; n < count; ++n) {
         std::uint8_t bytes[sizeof(T)];
         std::memcpy(bytes, raw + n * sizeof(T), sizeof(T));
@@ -292,20 +327,25 @@ void convertTyped(const std::uint8_t* raw, std::size_t count, bool swapBytes, fl
         std::memcpy(&v, bytes, sizeof(T));
         const double d = static_cast<double>(v);
         const double scaled = identity ? d : d * slope + intercept;
-        // Doubles beyond float range become +-inf rather than undefined behaviour.
-        if (scaled > std::numeric_limits<float>::max())
+        // Doubles beyond float range become +-inf rather than undefined behaviour; a finite
+        // sample that did so is counted (the caller refuses it: the file held no infinity).
+        if (scaled > std::numeric_limits<float>::max()) {
             out[n] = std::numeric_limits<float>::infinity();
-        else if (scaled < -std::numeric_limits<float>::max())
+            overflowed += std::isfinite(d);
+        } else if (scaled < -std::numeric_limits<float>::max()) {
             out[n] = -std::numeric_limits<float>::infinity();
-        else
+            overflowed += std::isfinite(d);
+        } else {
             out[n] = static_cast<float>(scaled);
+        }
     }
+    return overflowed;
 }
 
 }  // namespace
 
-void convertToFloat(const std::uint8_t* raw, std::size_t count, ScalarType type, bool swapBytes,
-                    float* out, double slope, double intercept) {
+std::size_t convertToFloat(const std::uint8_t* raw, std::size_t count, ScalarType type,
+                           bool swapBytes, float* out, double slope, double intercept) {
     switch (type) {
         case ScalarType::U8:
             return convertTyped<std::uint8_t>(raw, count, false, out, slope, intercept);
@@ -328,6 +368,7 @@ void convertToFloat(const std::uint8_t* raw, std::size_t count, ScalarType type,
         case ScalarType::F64:
             return convertTyped<double>(raw, count, swapBytes, out, slope, intercept);
     }
+    return 0;
 }
 
 std::string ByteReader::text(std::size_t offset, std::size_t length) const {

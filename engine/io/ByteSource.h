@@ -40,15 +40,23 @@ Bytes readFileRange(const std::filesystem::path& path, std::uintmax_t offset, st
 bool hasGzipMagic(const std::uint8_t* data, std::size_t size);
 bool fileHasGzipMagic(const std::filesystem::path& path);
 
+// How far inflation goes. Verified (for data): to the stream's end, where zlib checks the
+// CRC-32 / Adler-32 and length; a failed check, or a stream whose data is complete but whose end
+// and checksum are missing, is an fm::Error. Output beyond maxOutput is inflated and discarded
+// (up to max(maxOutput, 4 MiB) more; beyond that the stream is refused). PrefixOnly (for
+// sniffing and headers): stops at maxOutput, nothing checked past it.
+enum class InflateEnd { Verified, PrefixOnly };
+
 // Inflates a gzip or zlib stream (auto-detected; concatenated gzip members are followed) read
-// from the file starting at `offset`, producing at most `maxOutput` bytes: inflation stops
-// there, so the output never exceeds what the caller's header promised. Returns what was
-// produced (possibly less than maxOutput when the stream ends early: the caller checks).
-// Throws fm::Error naming the file on corrupt compressed data.
-Bytes inflateFile(const std::filesystem::path& path, std::uintmax_t offset, std::size_t maxOutput);
+// from the file starting at `offset`, producing at most `maxOutput` bytes: the output never
+// exceeds what the caller's header promised. Returns what was produced (possibly less than
+// maxOutput when the stream ends early: the caller checks). Throws fm::Error naming the file on
+// corrupt compressed data.
+Bytes inflateFile(const std::filesystem::path& path, std::uintmax_t offset, std::size_t maxOutput,
+                  InflateEnd end = InflateEnd::Verified);
 // The same on a buffer in memory; `what` names the source in messages.
 Bytes inflateBuffer(const std::uint8_t* data, std::size_t size, std::size_t maxOutput,
-                    const std::string& what);
+                    const std::string& what, InflateEnd end = InflateEnd::Verified);
 
 // zlib (RFC 1950) or gzip (RFC 1952) compression of a buffer, for the writers. Level 1 by
 // default: on CT floats it is several times faster than zlib's default 6 for files only a few
@@ -62,9 +70,11 @@ std::size_t checkedMultiply(std::size_t a, std::size_t b, const std::string& wha
 
 // Converts `count` samples of `type` starting at raw[0] to float. `swapBytes` when the data's
 // byte order differs from the host's. Values go through double: out = v * slope + intercept.
-// `raw` must hold count * scalarSize(type) bytes (the caller checked).
-void convertToFloat(const std::uint8_t* raw, std::size_t count, ScalarType type, bool swapBytes,
-                    float* out, double slope = 1.0, double intercept = 0.0);
+// `raw` must hold count * scalarSize(type) bytes (the caller checked). A result beyond float
+// range becomes +-inf; the return value counts the finite samples that did so (rescaling or
+// narrowing overflowed: volumeFromRaw refuses the file).
+std::size_t convertToFloat(const std::uint8_t* raw, std::size_t count, ScalarType type,
+                           bool swapBytes, float* out, double slope = 1.0, double intercept = 0.0);
 
 // Bounds-checked reads of binary header fields with optional byte swapping.
 class ByteReader {

@@ -254,8 +254,9 @@ Volume readNifti(const fs::path& path) {
     const std::string what = quoted(headerPath);
 
     const bool headerGzipped = fileHasGzipMagic(headerPath);
-    const Bytes head = headerGzipped ? inflateFile(headerPath, 0, kNifti2HeaderSize)
-                                     : readFilePrefix(headerPath, kNifti2HeaderSize);
+    const Bytes head = headerGzipped
+                           ? inflateFile(headerPath, 0, kNifti2HeaderSize, InflateEnd::PrefixOnly)
+                           : readFilePrefix(headerPath, kNifti2HeaderSize);
     const NiftiHeader h = parseHeader(head, what);
 
     // Dimensions: dim[0] axes, each >= 1; a CT is 3D (a single 2D slice is accepted).

@@ -47,8 +47,15 @@ Volume volumeFromRaw(glm::ivec3 dims, const Bytes& raw, std::size_t offset, Scal
         throw Error(msg.str());
     }
     Volume v = Volume::allocate(dims);
-    convertToFloat(raw.data() + offset, v.voxelCount(), type, swapBytes, v.values.data(), slope,
-                   intercept);
+    const std::size_t overflowed = convertToFloat(raw.data() + offset, v.voxelCount(), type,
+                                                  swapBytes, v.values.data(), slope, intercept);
+    if (overflowed > 0) {
+        std::ostringstream msg;
+        msg << what << ": " << overflowed << " of " << v.voxelCount() << " " << toString(type)
+            << " samples fall outside float range once rescaled (slope " << slope
+            << ", intercept " << intercept << "): the header's scaling is absurd";
+        throw Error(msg.str());
+    }
     return v;
 }
 

@@ -69,7 +69,7 @@ std::string detectVolumeFormat(const fs::path& path) {
     if (std::string f = formatFromExtension(path); !f.empty()) return f;
     Bytes head = readFilePrefix(path, kSniffBytes);
     if (hasGzipMagic(head.data(), head.size())) {
-        head = inflateFile(path, 0, kSniffBytes);
+        head = inflateFile(path, 0, kSniffBytes, io::InflateEnd::PrefixOnly);
         if (looksLikeNifti(head)) return "nifti";
         throw Error(quoted(path) + ": gzip file that does not hold a NIfTI volume");
     }

@@ -5,29 +5,29 @@
 
 #include <sys/mount.h>
 #include <sys/socket.h>
-#include <sys/un.h>
 #include <sys/stat.h>
+#include <sys/un.h>
 #include <unistd.h>
 
-#include <cerrno>
-#include <cstring>
-#include <filesystem>
 #include <algorithm>
 #include <atomic>
+#include <cerrno>
 #include <chrono>
+#include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <string>
 #include <thread>
 #include <vector>
 
+#include "IoTestFiles.h"
+#include "TestExpect.h"
+#include "common/TestData.h"
 #include "core/Error.h"
 #include "io/AtomicFile.h"
 #include "io/PngWriter.h"
 #include "io/VolumeWriter.h"
-#include "IoTestFiles.h"
-#include "TestExpect.h"
-#include "common/TestData.h"
 #include "mesh/MeshWriter.h"
 
 namespace fs = std::filesystem;
@@ -232,8 +232,8 @@ TEST(AtomicFile, FoldersMissingFoldersAndSocketsAreRefused) {
 TEST(AtomicFile, LinksAreFollowedAndModesKept) {
     const fs::path dir = fm::test::scratchDir("atomic_links");
     fm::test::writeFile(dir / "real.csv", std::string("old"));
-    fs::permissions(dir / "real.csv", fs::perms::owner_read | fs::perms::owner_write |
-                                          fs::perms::group_read);
+    fs::permissions(dir / "real.csv",
+                    fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read);
     fs::create_symlink("real.csv", dir / "link.csv");
     fm::io::writeFileAtomically(dir / "link.csv", std::string("new"));
     EXPECT_TRUE(fs::is_symlink(fs::symlink_status(dir / "link.csv")));

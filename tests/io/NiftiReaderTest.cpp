@@ -195,6 +195,22 @@ TEST(NiftiReader, SlopeAndIntercept) {
     }
 }
 
+TEST(NiftiReader, RescalingBeyondFloatRangeIsRefused) {
+    // int16 samples up to 32767 times a float32 slope of 1e38 exceed float range (3.4e38): the
+    // file held no infinity, so the voxels would be invented; refused naming the scaling. A
+    // float64 NIfTI-2 intercept of -1e300 likewise.
+    const fs::path dir = fm::test::scratchDir("nifti_rescale_overflow");
+    NiftiSpec s = smallSpec(ScalarType::I16);
+    s.sclSlope = 1e38;
+    expectError([&] { fm::readVolume(writeSpec(s, dir, "slope.nii")); }, "slope.nii",
+                "outside float range once rescaled");
+    s.version = 2;
+    s.sclSlope = 1.0;
+    s.sclInter = -1e300;
+    expectError([&] { fm::readVolume(writeSpec(s, dir, "inter.nii")); }, "inter.nii",
+                "outside float range once rescaled");
+}
+
 TEST(NiftiReader, TwoDimensionalImageIsOneSlice) {
     const fs::path dir = fm::test::scratchDir("nifti_2d");
     NiftiSpec s = smallSpec();

@@ -106,8 +106,15 @@ TEST(ByteSource, InflationNeverExceedsTheCap) {
     const Bytes zeros(16u << 20, 0);
     const Bytes bomb = fm::test::gzipBytes(zeros);
     EXPECT_LT(bomb.size(), 20000u);
-    const Bytes out = fm::io::inflateBuffer(bomb.data(), bomb.size(), 1000, "bomb");
+    const Bytes out = fm::io::inflateBuffer(bomb.data(), bomb.size(), 1000, "bomb",
+                                            fm::io::InflateEnd::PrefixOnly);
     EXPECT_EQ(out.size(), 1000u);
+    // Read as data (verified to its checksum), it is refused once it passes 4 MiB beyond.
+    expectError([&] { fm::io::inflateBuffer(bomb.data(), bomb.size(), 1000, "'bomb.gz'"); },
+                "bomb.gz", "far beyond");
+    // A little more than promised is inflated to the end and checked, then cut to the promise.
+    const Bytes extra = fm::test::gzipBytes(Bytes(3000, 4));
+    EXPECT_EQ(fm::io::inflateBuffer(extra.data(), extra.size(), 1000, "extra"), Bytes(1000, 4));
     // A stream that ends early returns what it has; the caller reports the shortfall.
     const Bytes small = fm::test::gzipBytes(Bytes(10, 7));
     EXPECT_EQ(fm::io::inflateBuffer(small.data(), small.size(), 1000, "small").size(), 10u);

@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "core/Error.h"
@@ -65,6 +67,29 @@ TEST(VolumeStats, PercentilesOfKnownValues) {
     EXPECT_EQ(s.percentiles[1], 1.0);
     EXPECT_EQ(s.percentiles[2], 50.0);
     EXPECT_EQ(s.percentiles[3], 99.0);
+}
+
+TEST(VolumeStats, NonFiniteVoxelsAreCountedAndLeftOut) {
+    // The same 0..100 ramp with NaN and +-inf voxels added: every figure is the ramp's.
+    fm::Volume v = fm::Volume::allocate({105, 1, 1});
+    for (int i = 0; i <= 100; ++i) v.at(i, 0, 0) = static_cast<float>(i);
+    v.at(101, 0, 0) = std::numeric_limits<float>::quiet_NaN();
+    v.at(102, 0, 0) = std::numeric_limits<float>::quiet_NaN();
+    v.at(103, 0, 0) = std::numeric_limits<float>::infinity();
+    v.at(104, 0, 0) = -std::numeric_limits<float>::infinity();
+    // NaN first: std::minmax_element over raw values would report garbage here.
+    std::swap(v.at(0, 0, 0), v.at(101, 0, 0));
+    const fm::VolumeStats s = fm::computeStats(v, {0, 50, 100});
+    EXPECT_EQ(s.nanCount, 2u);
+    EXPECT_EQ(s.infiniteCount, 2u);
+    EXPECT_EQ(s.min, 0.0f);
+    EXPECT_EQ(s.max, 100.0f);
+    EXPECT_NEAR(s.mean, 50.0, kTol);
+    EXPECT_EQ(s.percentiles, (std::vector<double>{0.0, 50.0, 100.0}));
+    // Nothing finite: refused, not a NaN statistic.
+    fm::Volume allNan = fm::Volume::allocate({2, 1, 1});
+    allNan.values.assign(2, std::numeric_limits<float>::quiet_NaN());
+    EXPECT_THROW(fm::computeStats(allNan), fm::Error);
 }
 
 }  // namespace
