@@ -14,6 +14,7 @@
 #include "core/Error.h"
 #include "core/Parallel.h"
 #include "io/AtomicFile.h"
+#include "scene/VolumeScene.h"
 #include "search/Evaluation.h"
 #include "volume/VolumeSource.h"
 
@@ -62,8 +63,11 @@ void runEvaluate(const EvaluateArgs& a) {
     const fm::Volume volume = fm::loadVolume(a.volume);
     const fm::DrrVolumePtr prepared = fm::cli::prepareForSearch(volume, a.search.values);
     const fm::Pose truth = fm::parsePose(a.truth);
-    const fm::PoseModel model = fm::scenePoseModel(fm::defaultSceneSetup(), volume.center());
-    const fm::Image reference = fm::cli::renderReference(*prepared, model(truth));
+    const auto parameterization =
+        std::make_shared<fm::Pose2011Parameterization>(fm::defaultSceneSetup(), volume.center());
+    const fm::EvaluationScene scene{fm::volumeScene(prepared), parameterization, 0};
+    const fm::Image reference =
+        fm::cli::renderReference(*prepared, parameterization->geometry(truth));
     const auto targets = fm::registrationTargets(volume);
     const int threads = a.search.threads == 0 ? fm::defaultThreadCount() : a.search.threads;
 
@@ -79,7 +83,7 @@ void runEvaluate(const EvaluateArgs& a) {
 
     const bool interactive = isatty(fileno(stderr)) != 0;
     const auto trials = fm::runEvaluation(
-        prepared, reference, model, truth, targets, settings,
+        scene, reference, truth.toArray(), targets, settings,
         [&](const fm::EvaluationTrial& t, int done, int total) {
             if (csv) {
                 const fm::StartBin& b = settings.bins[t.bin];

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -13,6 +14,7 @@
 #include "cli/VolumeOption.h"
 #include "core/Error.h"
 #include "match/PoseError.h"
+#include "scene/VolumeScene.h"
 #include "search/Registration.h"
 #include "search/RegistrationTargets.h"
 #include "volume/VolumeSource.h"
@@ -46,16 +48,23 @@ void runRegister(const RegisterArgs& a) {
     const fm::DrrVolumePtr prepared = fm::cli::prepareForSearch(volume, a.search.values);
     const fm::SceneSetup setup = fm::defaultSceneSetup();
 
-    fm::PoseModel model;
+    // The 2011 scene: the CT stays; its camera is the 2011 camera or the calibrated g.json
+    // camera moved like it.
+    std::shared_ptr<const fm::SceneParameterization> parameterization;
+    std::function<fm::ProjectionGeometry(const fm::Pose&)> model;
     fm::Image reference;
     std::optional<fm::Pose> truth;
     if (synthetic) {
         truth = fm::parsePose(a.referencePose);
-        model = fm::scenePoseModel(setup, volume.center());
+        auto p = std::make_shared<fm::Pose2011Parameterization>(setup, volume.center());
+        model = [p](const fm::Pose& pose) { return p->geometry(pose); };
+        parameterization = p;
         reference = fm::cli::renderReference(*prepared, model(*truth));
     } else {
-        model =
-            fm::fixedGeometryPoseModel(fm::readGeometryFile(a.geometry), setup, volume.center());
+        auto p = std::make_shared<fm::FixedCamera2011Parameterization>(
+            fm::readGeometryFile(a.geometry), setup, volume.center());
+        model = [p](const fm::Pose& pose) { return p->geometry(pose); };
+        parameterization = p;
         reference = fm::cli::readReferenceImage(a.reference);
         if (!a.truth.empty()) truth = fm::parsePose(a.truth);
     }
@@ -74,13 +83,15 @@ void runRegister(const RegisterArgs& a) {
                 fm::toString(settings.similarity), static_cast<unsigned long long>(settings.seed),
                 fm::cli::describeLevels(settings).c_str());
 
-    const fm::Registration registration(prepared, reference, model, settings);
+    const fm::Registration registration(fm::volumeScene(prepared), parameterization,
+                                        {{0, reference, {}}}, settings);
     fm::cli::ProgressBar bar(isatty(fileno(stderr)) != 0);
-    const fm::RegistrationResult result =
-        registration.run(start, [&](const fm::RegistrationProgress& p) { bar.update(p); });
+    const fm::RegistrationResult result = registration.run(
+        start.toArray(), [&](const fm::RegistrationProgress& p) { bar.update(p); });
     bar.finish();
+    const fm::Pose finalPose = result.pose();
 
-    std::printf("\nfinal pose  %s\n", fm::formatPose(result.pose).c_str());
+    std::printf("\nfinal pose  %s\n", fm::formatPose(finalPose).c_str());
     std::printf("similarity  %.5f (%s at the finest level)\n", result.similarity,
                 fm::toString(settings.similarity));
     if (truth) {
@@ -88,12 +99,12 @@ void runRegister(const RegisterArgs& a) {
                     "el deg", "rot deg");
         printPoseRow("truth", truth->toArray());
         printPoseRow("start error", fm::poseDifference(*truth, start));
-        printPoseRow("final error", fm::poseDifference(*truth, result.pose));
+        printPoseRow("final error", fm::poseDifference(*truth, finalPose));
         const auto targets = fm::registrationTargets(volume);
         const fm::TargetRegistrationError before =
             fm::targetRegistrationError(model(*truth), model(start), targets);
         const fm::TargetRegistrationError after =
-            fm::targetRegistrationError(model(*truth), model(result.pose), targets);
+            fm::targetRegistrationError(model(*truth), model(finalPose), targets);
         std::printf(
             "\nmTRE        start %.3f mm -> final %.3f mm (in-plane %.3f mm, "
             "out-of-plane %.3f mm; %zu targets)\n",

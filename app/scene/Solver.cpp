@@ -3,7 +3,7 @@
 #include <exception>
 
 #include "core/Error.h"
-#include "search/PoseModel.h"
+#include "scene/VolumeScene.h"
 
 namespace fm::app {
 namespace {
@@ -64,8 +64,10 @@ void Solver::start(std::shared_ptr<const LoadedScene> scene, Image reference, co
                            settings]() {
         const auto began = std::chrono::steady_clock::now();
         try {
-            const Registration registration(scene->drrVolume, reference,
-                                            scenePoseModel(scene->setup, scene->center), settings);
+            const Registration registration(
+                volumeScene(scene->drrVolume),
+                std::make_shared<Pose2011Parameterization>(scene->setup, scene->center),
+                {{0, reference, {}}}, settings);
             {
                 std::lock_guard lock(mutex_);
                 snapshot_.budget = registration.totalBudget();
@@ -73,7 +75,7 @@ void Solver::start(std::shared_ptr<const LoadedScene> scene, Image reference, co
                 ++snapshot_.version;
             }
             const RegistrationResult result = registration.run(
-                start,
+                start.toArray(),
                 [&](const RegistrationProgress& p) {
                     std::lock_guard lock(mutex_);
                     if (p.level != snapshot_.level) snapshot_.costHistory.clear();
@@ -85,14 +87,14 @@ void Solver::start(std::shared_ptr<const LoadedScene> scene, Image reference, co
                     snapshot_.budget = p.evaluationBudget;
                     snapshot_.bestCost = p.bestCost;
                     snapshot_.costHistory.push_back(static_cast<float>(p.bestCost));
-                    snapshot_.bestPose = p.bestPose;
-                    snapshot_.candidate = p.candidate;
+                    snapshot_.bestPose = p.bestPose();
+                    snapshot_.candidate = p.candidatePose();
                     snapshot_.elapsedMs = msSince(began);
                     ++snapshot_.version;
                 },
                 &stopFlag_);
             std::lock_guard lock(mutex_);
-            snapshot_.bestPose = result.pose;
+            snapshot_.bestPose = result.pose();
             snapshot_.evaluations = result.evaluations;
             snapshot_.stopped = result.stopped;
             snapshot_.stage = result.stopped ? "stopped" : "done";

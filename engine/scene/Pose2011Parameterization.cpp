@@ -42,15 +42,26 @@ void Pose2011Parameterization::apply(const SceneParams& params, Scene& scene) co
 
 SceneParams Pose2011Parameterization::fromSearchPoint(const SceneParams& start,
                                                       const std::array<double, 6>& p) const {
-    // Translations along the start camera's axes move the CT offset; angles add.
     const Pose s = Pose::fromArray(start);
-    const DetectorGeometry& d = geometry(s).detector;
-    Pose pose = s;
+    return poseFromSearchPoint(s, geometry(s).detector, p).toArray();
+}
+
+Pose poseFromSearchPoint(const Pose& start, const DetectorGeometry& d,
+                         const std::array<double, 6>& p) {
+    // Translations along the start camera's axes move the CT offset; angles add.
+    Pose pose = start;
     pose.offset += p[0] * d.u + p[1] * d.v + p[2] * d.normal();
-    pose.azimuthDeg = wrapAzimuth(s.azimuthDeg + p[3]);
-    pose.elevationDeg = s.elevationDeg + p[4];
-    pose.rotationDeg = s.rotationDeg + p[5];
-    return pose.toArray();
+    pose.azimuthDeg = wrapAzimuth(start.azimuthDeg + p[3]);
+    pose.elevationDeg = start.elevationDeg + p[4];
+    pose.rotationDeg = start.rotationDeg + p[5];
+    return pose;
+}
+
+Scene sceneAt(const Scene& scene, const SceneParameterization& parameterization,
+              const SceneParams& params) {
+    Scene moved = scene;
+    parameterization.apply(params, moved);
+    return moved;
 }
 
 }  // namespace fm

@@ -4,8 +4,9 @@
 // search, the app and tracking work the same for all of them:
 //   Pose2011Parameterization     the 2011 teaching scene: the CT stays, the camera moves
 //                                (CT offset x, y, z; source azimuth, elevation; film rotation)
-//   (later) an object's pose in a camera's frame (real X-rays, one bone at a time), a slice
-//   plane's pose (MRI).
+//   FixedCamera2011Parameterization  a calibrated camera (g.json) moved like the 2011 camera
+//   ObjectPoseParameterization   one object's pose in a camera's frame (real X-rays, one
+//                                bone at a time, tracking; ObjectPoseParameterization.h)
 #include <array>
 #include <memory>
 
@@ -42,6 +43,19 @@ class SceneParameterization {
 
 using SceneParameterizationPtr = std::shared_ptr<const SceneParameterization>;
 
+// A copy of `scene` moved to `params`.
+Scene sceneAt(const Scene& scene, const SceneParameterization& parameterization,
+              const SceneParams& params);
+
+// The 2011 search step: the CT offset moves along the axes of `startDetector` (u, v, normal)
+// by point[0..2] mm; azimuth (wrapped to (-180, 180]), elevation and rotation add point[3..5].
+Pose poseFromSearchPoint(const Pose& start, const DetectorGeometry& startDetector,
+                         const std::array<double, 6>& point);
+inline Pose poseFromSearchPoint(const Pose& start, const ProjectionGeometry& startGeometry,
+                                const std::array<double, 6>& point) {
+    return poseFromSearchPoint(start, startGeometry.detector, point);
+}
+
 // The 2011 scene: `camera` of the scene is sceneGeometry(pose, setup, volumeCenter); objects do
 // not move (the CT stays at the identity pose, where its file puts it).
 class Pose2011Parameterization final : public SceneParameterization {
@@ -60,6 +74,30 @@ class Pose2011Parameterization final : public SceneParameterization {
   private:
     SceneSetup setup_;
     glm::dvec3 center_;
+    std::size_t camera_;
+};
+
+// A calibrated camera (a reference image's g.json) moved rigidly exactly as the 2011 scene
+// moves its camera between the zero pose and `pose`: the zero pose reproduces the given
+// geometry and every number keeps its 2011 meaning (offset in mm, azimuth / elevation /
+// rotation in degrees about the CT centre). The CT stays at the identity pose.
+class FixedCamera2011Parameterization final : public SceneParameterization {
+  public:
+    // Throws fm::Error if `geometry` or `setup` is invalid.
+    FixedCamera2011Parameterization(const ProjectionGeometry& geometry, SceneSetup setup,
+                                    glm::dvec3 volumeCenter, std::size_t camera = 0);
+
+    std::array<ParameterInfo, 6> describe() const override;
+    void apply(const SceneParams& params, Scene& scene) const override;
+    SceneParams fromSearchPoint(const SceneParams& start,
+                                const std::array<double, 6>& point) const override;
+
+    ProjectionGeometry geometry(const Pose& pose) const;
+
+  private:
+    Pose2011Parameterization scene_;
+    ProjectionGeometry given_;
+    ProjectionGeometry inZeroCamera_;  // the given camera in the zero-pose camera's frame
     std::size_t camera_;
 };
 

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "core/Error.h"
+#include "scene/VolumeScene.h"
 
 namespace fm {
 
@@ -13,12 +14,17 @@ std::vector<StartBin> standardStartBins() {
     return {{0, 2}, {2, 5}, {5, 10}, {10, 20}};
 }
 
-Pose startPoseInBin(const Pose& truth, const PoseModel& model,
-                    const std::vector<glm::dvec3>& targets, const StartBin& bin, Rng& rng) {
+ProjectionGeometry EvaluationScene::camera(const SceneParams& params) const {
+    if (!parameterization) throw Error("evaluation: no scene parameterization");
+    return cameraInObjectFrameAt(scene, *parameterization, params, 0, targetObject);
+}
+
+SceneParams startInBin(const SceneParams& truth, const EvaluationScene& scene,
+                       const std::vector<glm::dvec3>& targets, const StartBin& bin, Rng& rng) {
     if (!(bin.lowMm >= 0.0 && bin.highMm > bin.lowMm))
         throw Error("start bin must satisfy 0 <= low < high");
-    const ProjectionGeometry truthGeometry = model(truth);
-    const std::array<double, 6> base = truth.toArray();
+    const ProjectionGeometry truthGeometry = scene.camera(truth);
+    const std::array<double, 6> base = truth;
     for (int attempt = 0; attempt < 20; ++attempt) {
         std::array<double, 6> dir;
         double norm = 0.0;
@@ -32,10 +38,10 @@ Pose startPoseInBin(const Pose& truth, const PoseModel& model,
         auto poseAt = [&](double t) {
             std::array<double, 6> p;
             for (int i = 0; i < 6; ++i) p[i] = base[i] + t * dir[i];
-            return Pose::fromArray(p);
+            return p;
         };
         auto mtre = [&](double t) {
-            return targetRegistrationError(truthGeometry, model(poseAt(t)), targets).meanMm;
+            return targetRegistrationError(truthGeometry, scene.camera(poseAt(t)), targets).meanMm;
         };
         // Bracket the goal, then bisect (mTRE grows with t along a line for these ranges).
         double lo = 0.0, hi = 1.0;
@@ -45,7 +51,7 @@ Pose startPoseInBin(const Pose& truth, const PoseModel& model,
             const double mid = 0.5 * (lo + hi);
             (mtre(mid) < goal ? lo : hi) = mid;
         }
-        const Pose p = poseAt(0.5 * (lo + hi));
+        const SceneParams p = poseAt(0.5 * (lo + hi));
         const double reached = mtre(0.5 * (lo + hi));
         if (reached >= bin.lowMm && reached <= bin.highMm) return p;
     }
@@ -61,7 +67,7 @@ double median(std::vector<double> v) {
 }
 
 std::vector<EvaluationTrial> runEvaluation(
-    const DrrVolumePtr& volume, const Image& reference, const PoseModel& model, const Pose& truth,
+    const EvaluationScene& scene, const Image& reference, const SceneParams& truth,
     const std::vector<glm::dvec3>& targets, const EvaluationSettings& settings,
     const std::function<void(const EvaluationTrial&, int, int)>& onTrial,
     const std::atomic<bool>* stop) {
@@ -69,22 +75,23 @@ std::vector<EvaluationTrial> runEvaluation(
     if (settings.methods.empty()) throw Error("evaluation: no methods");
     // The same starts for every method.
     Rng rng(settings.seed);
-    std::vector<std::vector<Pose>> starts(settings.bins.size());
+    std::vector<std::vector<SceneParams>> starts(settings.bins.size());
     for (std::size_t b = 0; b < settings.bins.size(); ++b)
         for (int s = 0; s < settings.startsPerBin; ++s)
-            starts[b].push_back(startPoseInBin(truth, model, targets, settings.bins[b], rng));
-    const ProjectionGeometry truthGeometry = model(truth);
+            starts[b].push_back(startInBin(truth, scene, targets, settings.bins[b], rng));
+    const ProjectionGeometry truthGeometry = scene.camera(truth);
     std::vector<EvaluationTrial> trials;
     const int total =
         static_cast<int>(settings.methods.size() * settings.bins.size()) * settings.startsPerBin;
     for (SearchMethod method : settings.methods) {
         RegistrationSettings rs = settings.registration;
         rs.method = method;
-        const Registration registration(volume, reference, model, rs);
+        const Registration registration(scene.scene, scene.parameterization, {{0, reference, {}}},
+                                        rs);
         for (std::size_t b = 0; b < settings.bins.size(); ++b)
             for (int s = 0; s < settings.startsPerBin; ++s) {
                 if (stop && stop->load()) return trials;
-                const Pose& start = starts[b][s];
+                const SceneParams& start = starts[b][s];
                 const std::clock_t cpu0 = std::clock();
                 const RegistrationResult r = registration.run(start, {}, stop);
                 const double cpu = double(std::clock() - cpu0) / CLOCKS_PER_SEC;
@@ -93,8 +100,8 @@ std::vector<EvaluationTrial> runEvaluation(
                 t.bin = static_cast<int>(b);
                 t.start = s;
                 t.startMtreMm =
-                    targetRegistrationError(truthGeometry, model(start), targets).meanMm;
-                t.final = targetRegistrationError(truthGeometry, model(r.pose), targets);
+                    targetRegistrationError(truthGeometry, scene.camera(start), targets).meanMm;
+                t.final = targetRegistrationError(truthGeometry, scene.camera(r.params), targets);
                 t.seconds = r.seconds;
                 t.cpuSeconds = cpu;
                 t.evaluations = r.evaluations;

@@ -15,6 +15,7 @@
 #include "match/PoseError.h"
 #include "search/Registration.h"
 #include "search/RegistrationTargets.h"
+#include "scene/SceneParameterization.h"
 
 namespace fm {
 
@@ -24,10 +25,20 @@ struct StartBin {
 };
 std::vector<StartBin> standardStartBins();  // 0-2, 2-5, 5-10, 10-20 mm
 
-// A start pose whose mTRE from `truth` lies within the bin. Throws fm::Error if no scale along
-// the drawn directions reaches the bin (targets degenerate).
-Pose startPoseInBin(const Pose& truth, const PoseModel& model,
-                    const std::vector<glm::dvec3>& targets, const StartBin& bin, Rng& rng);
+// What an evaluation registers: a scene, the numbers that move it, and the object whose
+// target points (in its own frame) measure the error, seen by camera 0.
+struct EvaluationScene {
+    Scene scene;
+    SceneParameterizationPtr parameterization;
+    std::size_t targetObject = 0;
+    // Camera 0 at `params`, in the target object's frame (what targetRegistrationError takes).
+    ProjectionGeometry camera(const SceneParams& params) const;
+};
+
+// Start numbers whose mTRE from `truth` lies within the bin. Throws fm::Error if no scale
+// along the drawn directions reaches the bin (targets degenerate).
+SceneParams startInBin(const SceneParams& truth, const EvaluationScene& scene,
+                       const std::vector<glm::dvec3>& targets, const StartBin& bin, Rng& rng);
 
 struct EvaluationSettings {
     std::vector<SearchMethod> methods = globalSearchMethods();
@@ -70,10 +81,11 @@ struct EvaluationMethodSummary {
     double medianSeconds = 0.0;
 };
 
-// Runs every method from every start against a reference DRR rendered at `truth`. `onTrial`
-// (optional) is called after each registration. Deterministic for a seed and thread count.
+// Runs every method from every start against `reference` (camera 0's image, e.g. a DRR
+// rendered at `truth`). `onTrial` (optional) is called after each registration.
+// Deterministic for a seed and thread count.
 std::vector<EvaluationTrial> runEvaluation(
-    const DrrVolumePtr& volume, const Image& reference, const PoseModel& model, const Pose& truth,
+    const EvaluationScene& scene, const Image& reference, const SceneParams& truth,
     const std::vector<glm::dvec3>& targets, const EvaluationSettings& settings,
     const std::function<void(const EvaluationTrial&, int done, int total)>& onTrial = {},
     const std::atomic<bool>* stop = nullptr);

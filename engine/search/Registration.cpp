@@ -7,6 +7,7 @@
 
 #include "core/Error.h"
 #include "core/Parallel.h"
+#include "geometry/DetectorCrop.h"
 #include "search/AxisLineSearch.h"
 #include "similarity/ImagePyramid.h"
 
@@ -26,37 +27,59 @@ Image cropImage(const Image& image, const PixelRect& r) {
     return out;
 }
 
-double wrapAzimuth(double a) {
-    a = std::fmod(a, 360.0);
-    if (a > 180.0) a -= 360.0;
-    if (a <= -180.0) a += 360.0;
-    return a;
+PreparedReference cropReference(const PreparedReference& r, const PixelRect& rect) {
+    PreparedReference out;
+    out.image = cropImage(r.image, rect);
+    if (!r.gradients.gx.empty()) {
+        out.gradients.gx = cropImage(r.gradients.gx, rect);
+        out.gradients.gy = cropImage(r.gradients.gy, rect);
+    }
+    return out;
+}
+
+// The level's region of `view`, shrunk to `box` (level pixels) when it is not empty.
+PixelRect intersectRect(const PixelRect& a, const PixelRect& b) {
+    const int c0 = std::max(a.col0, b.col0), r0 = std::max(a.row0, b.row0);
+    const int c1 = std::min(a.col0 + a.cols, b.col0 + b.cols);
+    const int r1 = std::min(a.row0 + a.rows, b.row0 + b.rows);
+    return {c0, r0, std::max(0, c1 - c0), std::max(0, r1 - r0)};
 }
 
 }  // namespace
 
-Pose poseFromSearchPoint(const Pose& start, const ProjectionGeometry& startGeometry,
-                         const std::array<double, 6>& p) {
-    const DetectorGeometry& d = startGeometry.detector;
-    Pose pose = start;
-    pose.offset += p[0] * d.u + p[1] * d.v + p[2] * d.normal();
-    pose.azimuthDeg = wrapAzimuth(start.azimuthDeg + p[3]);
-    pose.elevationDeg = start.elevationDeg + p[4];
-    pose.rotationDeg = start.rotationDeg + p[5];
-    return pose;
+PixelRect projectedBox(const ProjectionGeometry& camera, const SceneObject& object, int margin) {
+    if (!object.model) return {};
+    const Box3 box = object.model->bounds();
+    if (box.empty()) return {};
+    double c0 = 1e300, r0 = 1e300, c1 = -1e300, r1 = -1e300;
+    for (int k = 0; k < 8; ++k) {
+        const glm::dvec3 corner{(k & 1) ? box.upper.x : box.lower.x,
+                                (k & 2) ? box.upper.y : box.lower.y,
+                                (k & 4) ? box.upper.z : box.lower.z};
+        const auto pixel = camera.projectToPixel(object.worldFromObject.applyToPoint(corner));
+        if (!pixel) return {};
+        c0 = std::min(c0, pixel->x), c1 = std::max(c1, pixel->x);
+        r0 = std::min(r0, pixel->y), r1 = std::max(r1, pixel->y);
+    }
+    const glm::ivec2 size = camera.detector.size;
+    const double lo = -1e9, hi = 1e9;  // keep the casts defined for absurd projections
+    const int col0 = std::max(0, static_cast<int>(std::floor(std::clamp(c0, lo, hi))) - margin);
+    const int row0 = std::max(0, static_cast<int>(std::floor(std::clamp(r0, lo, hi))) - margin);
+    const int col1 =
+        std::min(size.x, static_cast<int>(std::ceil(std::clamp(c1, lo, hi))) + 1 + margin);
+    const int row1 =
+        std::min(size.y, static_cast<int>(std::ceil(std::clamp(r1, lo, hi))) + 1 + margin);
+    if (col1 <= col0 || row1 <= row0) return {};
+    return {col0, row0, col1 - col0, row1 - row0};
 }
 
-Registration::Registration(DrrVolumePtr volume, const Image& reference, PoseModel model,
-                           RegistrationSettings settings)
-    : volume_(std::move(volume)), model_(std::move(model)), settings_(std::move(settings)) {
-    if (!volume_) throw Error("registration: no volume");
-    if (!model_) throw Error("registration: no pose model");
-    if (reference.empty()) throw Error("registration: the reference image is empty");
-    const glm::ivec2 detector = model_(Pose{}).detector.size;
-    if (detector.x != reference.width || detector.y != reference.height)
-        throw Error("registration: the reference image is " + std::to_string(reference.width) +
-                    "x" + std::to_string(reference.height) + " but the detector is " +
-                    std::to_string(detector.x) + "x" + std::to_string(detector.y));
+Registration::Registration(Scene scene, SceneParameterizationPtr parameterization,
+                           std::vector<RegistrationView> views, RegistrationSettings settings)
+    : scene_(std::move(scene)),
+      parameterization_(std::move(parameterization)),
+      settings_(std::move(settings)) {
+    if (!parameterization_) throw Error("registration: no scene parameterization");
+    if (views.empty()) throw Error("registration: no view to register against");
     if (settings_.levelFactors.empty()) throw Error("registration: no pyramid levels");
     int previous = 1 << 30;
     for (int f : settings_.levelFactors) {
@@ -74,37 +97,62 @@ Registration::Registration(DrrVolumePtr volume, const Image& reference, PoseMode
     if (settings_.depthRounds < 0 || !(settings_.depthStepMm > 0.0))
         throw Error("registration: depth rounds must be >= 0 and the depth step positive");
 
+    // Parameterizations move cameras but never resize them: the zero numbers show the sizes.
+    const Scene probe = sceneAt(scene_, *parameterization_, SceneParams{});
     const int coarsest = settings_.levelFactors.front();
-    const int usableW = reference.width - reference.width % coarsest;
-    const int usableH = reference.height - reference.height % coarsest;
-    if (usableW / coarsest < 8 || usableH / coarsest < 8)
-        throw Error("registration: the reference (" + std::to_string(reference.width) + "x" +
-                    std::to_string(reference.height) + ") is too small for downsampling by " +
-                    std::to_string(coarsest) + " (needs 8x8 pixels at the coarsest level)");
-    const Image usable = cropImage(reference, {0, 0, usableW, usableH});
-    for (int f : settings_.levelFactors) {
-        Level level;
-        level.factor = f;
-        const Image full = downsampleBy(usable, f);
-        const Mask footprint = footprintMask(full, 0.0f);
-        PixelRect roi{0, 0, full.width, full.height};
-        const PixelRect box = boundingRect(footprint);
-        // A reference with zero background (a DRR) limits the work to its footprint's box; a
-        // real radiograph has none and is compared whole.
-        if (!box.empty()) {
-            const int m = settings_.roiMargin;
-            const int c0 = std::max(0, box.col0 - m), r0 = std::max(0, box.row0 - m);
-            const int c1 = std::min(full.width, box.col0 + box.cols + m);
-            const int r1 = std::min(full.height, box.row0 + box.rows + m);
-            roi = {c0, r0, c1 - c0, r1 - r0};
+    for (std::size_t v = 0; v < views.size(); ++v) {
+        const RegistrationView& in = views[v];
+        const std::string name = "registration: view " + std::to_string(v + 1);
+        if (in.camera >= probe.cameras.size())
+            throw Error(name + ": camera " + std::to_string(in.camera + 1) +
+                        " is not in the scene (it has " + std::to_string(probe.cameras.size()) +
+                        ")");
+        const Image& reference = in.reference;
+        if (reference.empty()) throw Error(name + ": the reference image is empty");
+        const glm::ivec2 detector = probe.cameras[in.camera].detector.size;
+        if (detector.x != reference.width || detector.y != reference.height)
+            throw Error(name + ": the reference image is " + std::to_string(reference.width) +
+                        "x" + std::to_string(reference.height) + " but the detector is " +
+                        std::to_string(detector.x) + "x" + std::to_string(detector.y));
+        if (in.valid && (in.valid->width != reference.width || in.valid->height != reference.height))
+            throw Error(name + ": the valid-pixel mask is " + std::to_string(in.valid->width) +
+                        "x" + std::to_string(in.valid->height) + " but the image is " +
+                        std::to_string(reference.width) + "x" + std::to_string(reference.height));
+        const int usableW = reference.width - reference.width % coarsest;
+        const int usableH = reference.height - reference.height % coarsest;
+        if (usableW / coarsest < 8 || usableH / coarsest < 8)
+            throw Error(name + ": the reference (" + std::to_string(reference.width) + "x" +
+                        std::to_string(reference.height) + ") is too small for downsampling by " +
+                        std::to_string(coarsest) + " (needs 8x8 pixels at the coarsest level)");
+        View view;
+        view.camera = in.camera;
+        view.usableSize = {usableW, usableH};
+        const PixelRect usableRect{0, 0, usableW, usableH};
+        const Image usable = cropImage(reference, usableRect);
+        for (int f : settings_.levelFactors) {
+            ViewLevel level;
+            const Image full = downsampleBy(usable, f);
+            const Mask footprint = footprintMask(full, 0.0f);
+            PixelRect roi{0, 0, full.width, full.height};
+            const PixelRect box = boundingRect(footprint);
+            // A reference with zero background (a DRR) limits the work to its footprint's box;
+            // a real radiograph has none and is compared whole (or where its model projects).
+            if (!box.empty()) {
+                const int m = settings_.roiMargin;
+                const int c0 = std::max(0, box.col0 - m), r0 = std::max(0, box.row0 - m);
+                const int c1 = std::min(full.width, box.col0 + box.cols + m);
+                const int r1 = std::min(full.height, box.row0 + box.rows + m);
+                roi = {c0, r0, c1 - c0, r1 - r0};
+            }
+            if (roi.cols < 8 || roi.rows < 8) roi = {0, 0, full.width, full.height};
+            level.roi = roi;
+            level.reference = prepareReference(cropImage(full, roi), settings_.similarity);
+            if (in.valid)
+                level.valid = cropMask(downsampleMaskBy(cropMask(*in.valid, usableRect), f), roi);
+            view.levels.push_back(std::move(level));
         }
-        if (roi.cols < 8 || roi.rows < 8) roi = {0, 0, full.width, full.height};
-        level.roi = roi;
-        level.reference = prepareReference(cropImage(full, roi), settings_.similarity);
-        levels_.push_back(std::move(level));
+        views_.push_back(std::move(view));
     }
-    // Kept for rendering: the detector crop to the usable size.
-    usableSize_ = {usableW, usableH};
 }
 
 int Registration::totalBudget() const {
@@ -113,36 +161,73 @@ int Registration::totalBudget() const {
     return settings_.globalEvaluations + polishLevels * settings_.polishEvaluations + depth;
 }
 
-Image Registration::renderLevel(const Pose& pose, const Level& level, int threads) const {
-    ProjectionGeometry g = cropDetector(model_(pose), 0, 0, usableSize_.x, usableSize_.y);
-    g = g.downsampled(level.factor);
-    g = cropDetector(g, level.roi.col0, level.roi.row0, level.roi.cols, level.roi.rows);
-    DrrRenderOptions options;
-    options.output = DrrOutput::LineIntegral;
-    options.trace = settings_.trace;
-    options.threads = threads;
-    return renderDrr(*volume_, g, options);
-}
-
-double Registration::levelCost(const Pose& pose, const Level& level, int threads) const {
-    const Image drr = renderLevel(pose, level, threads);
-    const Mask mask = footprintMask(drr, 0.0f, settings_.footprintDilation);
+double Registration::viewCost(const Scene& scene, const View& view, int levelIndex,
+                              int threads) const {
+    const ViewLevel& level = view.levels[levelIndex];
+    const ProjectionGeometry& camera = scene.cameras[view.camera];
+    ProjectionGeometry g = cropDetector(camera, 0, 0, view.usableSize.x, view.usableSize.y);
+    g = g.downsampled(settings_.levelFactors[levelIndex]);
+    PixelRect rect = level.roi;
+    if (settings_.cropToModel) {
+        // The union of the visible objects' projected boxes, within the level's region.
+        PixelRect models;
+        for (const SceneObject& object : scene.objects) {
+            if (!object.visible || !object.model) continue;
+            const PixelRect b = projectedBox(g, object, settings_.roiMargin);
+            if (b.empty()) {
+                models = {0, 0, g.detector.size.x, g.detector.size.y};
+                break;
+            }
+            if (models.empty()) {
+                models = b;
+                continue;
+            }
+            const int c1 = std::max(models.col0 + models.cols, b.col0 + b.cols);
+            const int r1 = std::max(models.row0 + models.rows, b.row0 + b.rows);
+            models.col0 = std::min(models.col0, b.col0);
+            models.row0 = std::min(models.row0, b.row0);
+            models.cols = c1 - models.col0;
+            models.rows = r1 - models.row0;
+        }
+        rect = intersectRect(rect, models);
+        if (rect.cols < 3 || rect.rows < 3) return 0.0;  // out of view: no evidence either way
+    }
+    g = cropDetector(g, rect.col0, rect.row0, rect.cols, rect.rows);
+    XrayRenderSettings render;
+    render.trace = settings_.trace;
+    render.threads = threads;
+    const Image drr = renderView(scene, g, render);
+    Mask mask = footprintMask(drr, 0.0f, settings_.footprintDilation);
+    const bool cropped = rect.col0 != level.roi.col0 || rect.row0 != level.roi.row0 ||
+                         rect.cols != level.roi.cols || rect.rows != level.roi.rows;
+    const PixelRect inRoi{rect.col0 - level.roi.col0, rect.row0 - level.roi.row0, rect.cols,
+                          rect.rows};
+    if (level.valid) mask = intersect(mask, cropped ? cropMask(*level.valid, inRoi) : *level.valid);
     if (mask.count() < kMinMaskPixels) return 0.0;  // nothing in view: no evidence either way
-    return -similarity(settings_.similarity, level.reference, drr, &mask);
+    if (!cropped) return -similarity(settings_.similarity, level.reference, drr, &mask);
+    return -similarity(settings_.similarity, cropReference(level.reference, inRoi), drr, &mask);
 }
 
-double Registration::cost(const Pose& pose, int level) const {
+double Registration::levelCost(const SceneParams& params, int level, int threads) const {
+    const Scene scene = sceneAt(scene_, *parameterization_, params);
+    double total = viewCost(scene, views_[0], level, threads);
+    for (std::size_t v = 1; v < views_.size(); ++v)
+        total += viewCost(scene, views_[v], level, threads);
+    return total;
+}
+
+double Registration::cost(const SceneParams& params, int level) const {
     if (level < 0 || level >= levelCount())
         throw Error("registration: level " + std::to_string(level) + " does not exist");
-    return levelCost(pose, levels_[level], settings_.threads);
+    return levelCost(params, level, settings_.threads);
 }
 
-RegistrationResult Registration::run(const Pose& start, const RegistrationCallback& progress,
+RegistrationResult Registration::run(const SceneParams& start,
+                                     const RegistrationCallback& progress,
                                      const std::atomic<bool>* stop) const {
     const auto t0 = std::chrono::steady_clock::now();
-    const ProjectionGeometry startGeometry = model_(start);
-    auto toPose = [&](const Point& p) {
-        return poseFromSearchPoint(start, startGeometry, {p[0], p[1], p[2], p[3], p[4], p[5]});
+    auto toParams = [&](const Point& p) {
+        return parameterization_->fromSearchPoint(start, {p[0], p[1], p[2], p[3], p[4], p[5]});
     };
     RegistrationResult result;
     Rng seeds(settings_.seed);
@@ -152,10 +237,10 @@ RegistrationResult Registration::run(const Pose& start, const RegistrationCallba
 
     auto runStage = [&](int levelIndex, SearchMethod method, double radiusScale, int maxEvals,
                         const char* stage) {
-        const Level& level = levels_[levelIndex];
+        const int factor = settings_.levelFactors[levelIndex];
         BatchCost cost = [&](const std::vector<Point>& points, std::vector<double>& costs) {
             if (points.size() == 1) {
-                costs[0] = levelCost(toPose(points[0]), level, settings_.threads);
+                costs[0] = levelCost(toParams(points[0]), levelIndex, settings_.threads);
                 return;
             }
             // One candidate per task; each render single-threaded: no nested parallelism.
@@ -163,7 +248,7 @@ RegistrationResult Registration::run(const Pose& start, const RegistrationCallba
                 static_cast<int>(points.size()), settings_.threads,
                 [&](int begin, int end) {
                     for (int i = begin; i < end; ++i)
-                        costs[i] = levelCost(toPose(points[i]), level, 1);
+                        costs[i] = levelCost(toParams(points[i]), levelIndex, 1);
                 },
                 4);
         };
@@ -189,13 +274,13 @@ RegistrationResult Registration::run(const Pose& start, const RegistrationCallba
             RegistrationProgress r;
             r.level = levelIndex;
             r.levelCount = levelCount();
-            r.factor = level.factor;
+            r.factor = factor;
             r.stage = stage;
             r.evaluations = evaluationsBefore + p.evaluations;
             r.evaluationBudget = budget;
             r.bestCost = p.bestCost;
-            r.bestPose = toPose(p.best);
-            r.candidate = toPose(p.candidate);
+            r.best = toParams(p.best);
+            r.candidate = toParams(p.candidate);
             r.seconds =
                 std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
             progress(r);
@@ -230,7 +315,7 @@ RegistrationResult Registration::run(const Pose& start, const RegistrationCallba
         polishScale *= 0.5;
         polish(k, polishScale);
     }
-    result.pose = toPose(current);
+    result.params = toParams(current);
     result.evaluations = evaluationsBefore;
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return result;

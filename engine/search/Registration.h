@@ -1,21 +1,28 @@
 #pragma once
-// Automatic 2D/3D registration: finds the pose whose DRR best matches a reference image.
+// Automatic 2D/3D registration on the scene model: finds the six numbers of a
+// SceneParameterization for which the scene's images best match reference images, one per
+// view (a view = a camera of the scene + its reference + optionally the reference's valid
+// pixels). The cost is the sum over the views of -similarity, so biplane is the same code.
 //
-//   Registration reg(drrVolume, referenceImage, scenePoseModel(setup, center), settings);
-//   RegistrationResult r = reg.run(startPose, onProgress, &stopFlag);
+//   Registration reg(volumeScene(drrVolume), std::make_shared<Pose2011Parameterization>(
+//                        setup, center), {{0, referenceImage}}, settings);
+//   RegistrationResult r = reg.run(startPose.toArray(), onProgress, &stopFlag);
 //
 // Coarse to fine: the global method (Monte Carlo, PSO, Bees or CMA-ES) searches at the coarsest
 // detector level, then Nelder-Mead polishes at each finer level with a shrinking radius. Each
 // level renders only the reference footprint's bounding box (plus a margin) at that level's
-// pixel size, as a sub-detector: exact, and nothing outside is traced. Candidates of one batch
+// pixel size, as a sub-detector: exact, and nothing outside is traced. A real radiograph has
+// no zero background: with cropToModel each candidate is then rendered and compared only in
+// the box its visible objects project to (plus the margin). Candidates of one batch
 // are rendered in parallel (fm::parallelFor), so results depend only on the seed and the
 // thread count. run() is const and may be called from a worker thread; progress is reported
 // on that thread after every batch; setting *stop ends it after the current batch with the
 // best pose found so far.
 //
-// Search coordinates: translations along the start camera's film axes u, v and its viewing
-// direction n (depth), in mm, and angle changes in degrees, all relative to the start. Depth
-// is searched apart because single-view matching is weak along it.
+// Search coordinates: SceneParameterization::fromSearchPoint (translations along the start
+// camera's film axes u, v and its viewing direction (depth), in mm, and angle changes in
+// degrees, all relative to the start). Depth is searched apart because single-view matching
+// is weak along it.
 #include <array>
 #include <atomic>
 #include <cstdint>
@@ -24,9 +31,12 @@
 
 #include "core/Image.h"
 #include "drr/Drr.h"
+#include <optional>
+
 #include "geometry/Pose.h"
+#include "scene/Scene.h"
+#include "scene/SceneParameterization.h"
 #include "search/Optimizer.h"
-#include "search/PoseModel.h"
 #include "similarity/Mask.h"
 #include "similarity/Similarity.h"
 
@@ -61,6 +71,18 @@ struct RegistrationSettings {
     int footprintDilation = 1;  // pixels added around the DRR footprint mask
     int roiMargin = 4;          // pixels added around the reference footprint box
     DrrTrace trace = DrrTrace::Exact;
+    // Render each candidate only inside the box its visible objects' bounds project to (plus
+    // roiMargin), within the level's region: what a real radiograph needs (it has no zero
+    // background to crop to). Off for DRR references (the reference footprint already bounds).
+    bool cropToModel = false;
+};
+
+// One image of the registration: which camera of the scene took it, the image, and which of
+// its pixels carry image (the rest is never compared; nullopt = all).
+struct RegistrationView {
+    std::size_t camera = 0;
+    Image reference;
+    std::optional<Mask> valid;
 };
 
 struct RegistrationProgress {
@@ -71,56 +93,72 @@ struct RegistrationProgress {
     int evaluations = 0;     // total so far
     int evaluationBudget = 0;
     double bestCost = 0.0;  // -similarity at this level (lower is better)
-    Pose bestPose;
-    Pose candidate;
+    SceneParams best{};
+    SceneParams candidate{};
     double seconds = 0.0;
+    // The numbers as a 2011 pose (for the 2011 parameterizations).
+    Pose bestPose() const { return Pose::fromArray(best); }
+    Pose candidatePose() const { return Pose::fromArray(candidate); }
 };
 using RegistrationCallback = std::function<void(const RegistrationProgress&)>;
 
 struct RegistrationResult {
-    Pose pose;
-    double similarity = 0.0;  // at the finest level
+    SceneParams params{};
+    double similarity = 0.0;  // at the finest level, summed over the views
     int evaluations = 0;
     double seconds = 0.0;
     bool stopped = false;
     std::vector<double> costHistory;  // best cost after every batch, all levels in order
+    Pose pose() const { return Pose::fromArray(params); }  // for the 2011 parameterizations
 };
 
 class Registration {
   public:
-    // Prepares the reference pyramid and footprint boxes. Throws fm::Error if the reference is
-    // empty, its size differs from the model's detector, or the levels are invalid.
-    Registration(DrrVolumePtr volume, const Image& reference, PoseModel model,
-                 RegistrationSettings settings);
+    // Prepares the reference pyramids and footprint boxes. Throws fm::Error if there is no
+    // view or no parameterization, a view's camera is not in `scene`, a reference is empty or
+    // its size differs from its camera's detector, a valid mask's size differs from its
+    // reference, or the levels are invalid. Parameterizations move cameras but never resize
+    // them, so sizes are read from `scene` as given.
+    Registration(Scene scene, SceneParameterizationPtr parameterization,
+                 std::vector<RegistrationView> views, RegistrationSettings settings);
 
-    RegistrationResult run(const Pose& start, const RegistrationCallback& progress = {},
+    RegistrationResult run(const SceneParams& start, const RegistrationCallback& progress = {},
                            const std::atomic<bool>* stop = nullptr) const;
 
-    // -similarity of `pose` at level `level` (what the optimizers minimise).
-    double cost(const Pose& pose, int level) const;
+    // Sum over the views of -similarity of `params` at level `level` (what the optimizers
+    // minimise).
+    double cost(const SceneParams& params, int level) const;
 
     const RegistrationSettings& settings() const { return settings_; }
-    int levelCount() const { return static_cast<int>(levels_.size()); }
+    const Scene& scene() const { return scene_; }
+    const SceneParameterization& parameterization() const { return *parameterization_; }
+    int levelCount() const { return static_cast<int>(settings_.levelFactors.size()); }
     int totalBudget() const;
 
   private:
-    struct Level {
-        int factor = 1;
+    struct ViewLevel {
         PixelRect roi;                // at this level's pixel size
         PreparedReference reference;  // the ROI of the reference pyramid level
+        std::optional<Mask> valid;    // the ROI of the valid mask at this level
     };
-    Image renderLevel(const Pose& pose, const Level& level, int threads) const;
-    double levelCost(const Pose& pose, const Level& level, int threads) const;
+    struct View {
+        std::size_t camera = 0;
+        glm::ivec2 usableSize{0};  // reference size cropped to a multiple of the coarsest factor
+        std::vector<ViewLevel> levels;
+    };
+    double viewCost(const Scene& scene, const View& view, int level, int threads) const;
+    double levelCost(const SceneParams& params, int level, int threads) const;
 
-    DrrVolumePtr volume_;
-    PoseModel model_;
+    Scene scene_;
+    SceneParameterizationPtr parameterization_;
     RegistrationSettings settings_;
-    std::vector<Level> levels_;
-    glm::ivec2 usableSize_{0};  // reference size cropped to a multiple of the coarsest factor
+    std::vector<View> views_;
 };
 
-// Search coordinates (see above) <-> pose, relative to `start` whose camera is `startGeometry`.
-Pose poseFromSearchPoint(const Pose& start, const ProjectionGeometry& startGeometry,
-                         const std::array<double, 6>& point);
+// The detector pixels of `camera` that `box` (in `object`'s frame, moved by its pose) can
+// project onto: the bounding rectangle of the projected corners, grown by `margin` and
+// clipped to the detector; empty if the box is empty or a corner lies behind the source
+// (then the caller should not crop).
+PixelRect projectedBox(const ProjectionGeometry& camera, const SceneObject& object, int margin);
 
 }  // namespace fm

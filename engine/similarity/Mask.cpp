@@ -66,4 +66,32 @@ PixelRect boundingRect(const Mask& mask) {
     return {c0, r0, c1 - c0 + 1, r1 - r0 + 1};
 }
 
+Mask cropMask(const Mask& mask, const PixelRect& r) {
+    if (r.col0 < 0 || r.row0 < 0 || r.cols < 0 || r.rows < 0 || r.col0 + r.cols > mask.width ||
+        r.row0 + r.rows > mask.height)
+        throw Error("mask crop leaves the " + std::to_string(mask.width) + "x" +
+                    std::to_string(mask.height) + " mask");
+    Mask out(r.cols, r.rows, false);
+    for (int row = 0; row < r.rows; ++row)
+        for (int col = 0; col < r.cols; ++col)
+            out.inside[static_cast<std::size_t>(row) * r.cols + col] =
+                mask.at(r.col0 + col, r.row0 + row);
+    return out;
+}
+
+Mask downsampleMaskBy(const Mask& mask, int factor) {
+    if (factor < 1) throw Error("mask downsampling factor must be >= 1");
+    const int w = mask.width / factor, h = mask.height / factor;
+    Mask out(w, h, false);
+    for (int row = 0; row < h; ++row)
+        for (int col = 0; col < w; ++col) {
+            bool all = true;
+            for (int r = 0; r < factor && all; ++r)
+                for (int c = 0; c < factor && all; ++c)
+                    all = mask.at(col * factor + c, row * factor + r);
+            out.inside[static_cast<std::size_t>(row) * w + col] = all;
+        }
+    return out;
+}
+
 }  // namespace fm

@@ -44,4 +44,12 @@ struct PixelRect {
 };
 PixelRect boundingRect(const Mask& mask);
 
+// The pixels of `rect` (inside the mask) as a mask of their own.
+Mask cropMask(const Mask& mask, const PixelRect& rect);
+
+// A mask for an image downsampled by `factor` (ImagePyramid's downsampleBy): a coarse pixel is
+// inside only if every fine pixel it averages is (one invalid pixel spoils the mean). An odd
+// last row or column is dropped, as downsampleBy drops it. Throws fm::Error for factor < 1.
+Mask downsampleMaskBy(const Mask& mask, int factor);
+
 }  // namespace fm

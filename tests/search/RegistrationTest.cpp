@@ -7,7 +7,9 @@
 #include "drr/Drr.h"
 #include "match/PoseError.h"
 #include "search/Evaluation.h"
-#include "search/PoseModel.h"
+#include "geometry/DetectorCrop.h"
+#include "scene/SceneParameterization.h"
+#include "scene/VolumeScene.h"
 #include "search/Registration.h"
 #include "search/RegistrationTargets.h"
 #include "volume/VolumeSource.h"
@@ -25,7 +27,12 @@ struct Knee {
     Volume volume = loadVolume("phantom:knee");
     DrrVolumePtr prepared = prepareDrrVolume(volume, {});
     SceneSetup setup = defaultSceneSetup();
-    PoseModel model = scenePoseModel(setup, volume.center());
+    std::shared_ptr<const Pose2011Parameterization> parameterization =
+        std::make_shared<Pose2011Parameterization>(setup, volume.center());
+    ProjectionGeometry model(const Pose& pose) const { return parameterization->geometry(pose); }
+    Registration registration(const Image& reference, const RegistrationSettings& s) const {
+        return {volumeScene(prepared), parameterization, {{0, reference, {}}}, s};
+    }
 };
 
 const Knee& knee() {
@@ -62,15 +69,15 @@ TEST(TargetRegistrationError, CameraTranslationsSplitIntoInPlaneAndDepth) {
     EXPECT_THROW(targetRegistrationError(truth, truth, {}), Error);
 }
 
-TEST(PoseModel, FixedGeometryZeroPoseIsTheGivenGeometryAndMovesLikeTheScene) {
+TEST(FixedCamera2011Parameterization, ZeroPoseIsTheGivenGeometryAndMovesLikeTheScene) {
     const SceneSetup setup = defaultSceneSetup();
     const glm::dvec3 center{5.0, -7.0, 12.0};
     // When the given geometry is the scene's zero-pose geometry, both models must agree at
     // every pose.
-    const PoseModel scene = scenePoseModel(setup, center);
-    const PoseModel fixed = fixedGeometryPoseModel(scene(Pose{}), setup, center);
+    const Pose2011Parameterization scene(setup, center);
+    const FixedCamera2011Parameterization fixed(scene.geometry(Pose{}), setup, center);
     for (const Pose& p : {Pose{}, parsePose("3,-2,5,20,-10,7"), parsePose("-8,1,0,-95,45,-30")}) {
-        const ProjectionGeometry a = scene(p), b = fixed(p);
+        const ProjectionGeometry a = scene.geometry(p), b = fixed.geometry(p);
         expectNear(a.source, b.source, kGeometryToleranceMm);
         expectNear(a.detector.origin, b.detector.origin, kGeometryToleranceMm);
         expectNear(a.detector.u, b.detector.u, kGeometryToleranceMm);
@@ -78,7 +85,7 @@ TEST(PoseModel, FixedGeometryZeroPoseIsTheGivenGeometryAndMovesLikeTheScene) {
     }
 }
 
-TEST(PoseModel, CroppedDetectorRendersExactlyThoseDrrPixels) {
+TEST(DetectorCrop, CroppedDetectorRendersExactlyThoseDrrPixels) {
     const ProjectionGeometry g = knee().model(Pose{}).downsampled(4);
     const Image full = render(g, 1);
     const ProjectionGeometry crop = cropDetector(g, 10, 7, 30, 41);
@@ -114,14 +121,14 @@ TEST(Registration, CostIsLowestAtTheTruthAlongEachParameter) {
     const Image reference = render(knee().model(truth));
     RegistrationSettings s;
     s.levelFactors = {4};
-    const Registration reg(knee().prepared, reference, knee().model, s);
-    const double atTruth = reg.cost(truth, 0);
+    const Registration reg = knee().registration(reference, s);
+    const double atTruth = reg.cost(truth.toArray(), 0);
     EXPECT_LT(atTruth, -0.95);  // a DRR against itself (up to pyramid averaging)
     for (int p = 0; p < 6; ++p)
         for (double step : {-3.0, 3.0}) {
             auto a = truth.toArray();
             a[p] += step;
-            EXPECT_GT(reg.cost(Pose::fromArray(a), 0), atTruth) << "parameter " << p;
+            EXPECT_GT(reg.cost(a, 0), atTruth) << "parameter " << p;
         }
 }
 
@@ -141,11 +148,11 @@ TEST(Registration, RecoversThePhantomPoseFromA5mm5DegStart) {
         s.levelFactors = {4, 2};
         s.globalEvaluations = 400;
         s.polishEvaluations = 120;
-        const Registration reg(knee().prepared, reference, knee().model, s);
-        const RegistrationResult r = reg.run(start);
+        const Registration reg = knee().registration(reference, s);
+        const RegistrationResult r = reg.run(start.toArray());
         const TargetRegistrationError e =
-            targetRegistrationError(knee().model(truth), knee().model(r.pose), targets);
-        EXPECT_LT(e.meanMm, kSuccessMtreMm) << toString(m) << " ended at " << formatPose(r.pose);
+            targetRegistrationError(knee().model(truth), knee().model(r.pose()), targets);
+        EXPECT_LT(e.meanMm, kSuccessMtreMm) << toString(m) << " ended at " << formatPose(r.pose());
         EXPECT_LE(r.evaluations, reg.totalBudget());
         EXPECT_FALSE(r.stopped);
     }
@@ -160,17 +167,17 @@ TEST(Registration, DeterministicForASeedAndStoppable) {
     s.globalEvaluations = 120;
     s.polishEvaluations = 30;
     s.seed = 5;
-    const Registration reg(knee().prepared, reference, knee().model, s);
+    const Registration reg = knee().registration(reference, s);
     const Pose start = parsePose("2,1,-2,2,-1,1");
-    const RegistrationResult a = reg.run(start), b = reg.run(start);
-    EXPECT_EQ(a.pose.toArray(), b.pose.toArray());
+    const RegistrationResult a = reg.run(start.toArray()), b = reg.run(start.toArray());
+    EXPECT_EQ(a.params, b.params);
     EXPECT_EQ(a.costHistory, b.costHistory);
 
     std::atomic<bool> stop{false};
     int calls = 0;
     int lastEvaluations = 0;
     const RegistrationResult c = reg.run(
-        start,
+        start.toArray(),
         [&](const RegistrationProgress& p) {
             EXPECT_GE(p.evaluations, lastEvaluations);
             EXPECT_LE(p.evaluations, p.evaluationBudget);
@@ -186,24 +193,25 @@ TEST(Registration, DeterministicForASeedAndStoppable) {
 TEST(Registration, RejectsBadInput) {
     const Image reference = render(knee().model(Pose{}));
     RegistrationSettings s;
-    EXPECT_THROW(Registration(knee().prepared, Image(), knee().model, s), Error);
-    EXPECT_THROW(Registration(knee().prepared, Image(100, 100, 1.0f), knee().model, s), Error);
+    EXPECT_THROW(knee().registration(Image(), s), Error);
+    EXPECT_THROW(knee().registration(Image(100, 100, 1.0f), s), Error);
     s.levelFactors = {2, 4};
-    EXPECT_THROW(Registration(knee().prepared, reference, knee().model, s), Error);
+    EXPECT_THROW(knee().registration(reference, s), Error);
     s.levelFactors = {3};
-    EXPECT_THROW(Registration(knee().prepared, reference, knee().model, s), Error);
+    EXPECT_THROW(knee().registration(reference, s), Error);
     s.levelFactors = {4, 2};
     s.searchRadius[2] = 0.0;
-    EXPECT_THROW(Registration(knee().prepared, reference, knee().model, s), Error);
+    EXPECT_THROW(knee().registration(reference, s), Error);
 }
 
 TEST(Evaluation, StartPosesLandInTheirBins) {
     const auto targets = registrationTargets(knee().volume);
     const Pose truth = parsePose("0,0,0,10,5,0");
+    const EvaluationScene scene{volumeScene(knee().prepared), knee().parameterization, 0};
     Rng rng(3);
     for (const StartBin& bin : standardStartBins())
         for (int i = 0; i < 5; ++i) {
-            const Pose p = startPoseInBin(truth, knee().model, targets, bin, rng);
+            const Pose p = Pose::fromArray(startInBin(truth.toArray(), scene, targets, bin, rng));
             const double e =
                 targetRegistrationError(knee().model(truth), knee().model(p), targets).meanMm;
             EXPECT_GE(e, bin.lowMm);
