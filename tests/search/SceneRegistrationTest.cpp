@@ -99,7 +99,8 @@ TEST(SceneRegistration, ValidPixelMasksLimitWhatIsCompared) {
     EXPECT_NE(leftValid.cost(off, 1), plain.cost(off, 1));
     views[0].valid = Mask(size.x + 1, size.y, true);
     EXPECT_THROW(Registration(k.scene, k.parameterization, views, s), Error);
-    EXPECT_THROW(Registration(k.scene, k.parameterization, k.views({2}), s), Error);
+    const std::vector<RegistrationView> noSuchCamera{{2, k.references[0], {}}};
+    EXPECT_THROW(Registration(k.scene, k.parameterization, noSuchCamera, s), Error);
     EXPECT_THROW(Registration(k.scene, k.parameterization, {}, s), Error);
 }
 
