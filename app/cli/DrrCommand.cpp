@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/BoneOptions.h"
 #include "cli/CommandRegistry.h"
 #include "cli/SceneOptions.h"
 #include "cli/VolumeOption.h"
@@ -24,6 +25,7 @@ namespace {
 
 struct DrrArgs {
     fm::cli::SceneOptions scene;
+    fm::cli::BoneOptions bones;
     std::string volume = fm::kDefaultVolumeSpec;
     std::string values = "mu";
     std::optional<double> thresholdHU;
@@ -87,9 +89,12 @@ void runDrr(const DrrArgs& a) {
                      "only a transmitted fraction when the values are attenuations in 1/mm\n");
 
     auto start = std::chrono::steady_clock::now();
-    const fm::Volume volume = fm::loadVolume(a.volume);
+    // With --bone / --without the image is that of a part of the CT, seen by the camera the
+    // pose gives for the whole CT (so bone + rest = whole, pixel for pixel).
+    const fm::cli::BoneChoice choice = fm::cli::chooseBone(a.bones, fm::loadVolume(a.volume));
+    const fm::Volume& volume = choice.volume;
     const double loadMs = msSince(start);
-    const fm::ProjectionGeometry geometry = fm::cli::geometryFrom(a.scene, volume.center());
+    const fm::ProjectionGeometry geometry = fm::cli::geometryFrom(a.scene, choice.ctCenter);
     geometry.validate(a.scene.usesGeometryFile() ? a.scene.geometry : "scene geometry");
 
     fm::DrrValueOptions valueOptions;
@@ -127,6 +132,7 @@ void runDrr(const DrrArgs& a) {
     const int threads = a.threads == 0 ? fm::defaultThreadCount() : a.threads;
     std::printf("volume    %s (%d x %d x %d voxels, loaded in %.1f ms)\n", a.volume.c_str(),
                 volume.dims.x, volume.dims.y, volume.dims.z, loadMs);
+    if (!choice.describe.empty()) std::printf("bone      %s\n", choice.describe.c_str());
     std::printf("geometry  %s\n", fm::cli::describeGeometrySource(a.scene).c_str());
     std::printf("values    %s", a.values == "raw" ? "raw (value * mm)" : "mu (HU -> 1/mm)");
     if (a.thresholdHU) std::printf(", threshold %g HU", *a.thresholdHU);
@@ -172,6 +178,7 @@ FM_REGISTER_COMMAND("drr", 20, [](CLI::App& app) {
     auto a = std::make_shared<DrrArgs>();
     fm::cli::addVolumeOption(cmd, a->volume);
     fm::cli::addSceneOptions(cmd, a->scene);
+    fm::cli::addBoneOptions(cmd, a->bones);
     cmd->add_option("--values", a->values,
                     "mu: HU converted to attenuation (1/mm); raw: the stored values as they are")
         ->check(CLI::IsMember({"raw", "mu"}))

@@ -3,6 +3,9 @@
 #include <cstdio>
 #include <iostream>
 
+#include "bones/BoneVolume.h"
+#include "bones/LabelMap.h"
+#include "cli/BoneOptions.h"
 #include "cli/CommandRegistry.h"
 #include "cli/VolumeOption.h"
 #include "volume/VolumeSource.h"
@@ -10,9 +13,29 @@
 
 namespace {
 
-void runInfo(const std::string& spec) {
+// One line per label of the map: name, voxels, world box of the voxel centres; then the
+// table's names the map does not hold.
+void printLabels(const fm::LabelledVolume& l) {
+    std::printf("labels       %s\n", l.source.c_str());
+    for (const auto& [label, voxels] : fm::labelVoxelCounts(l.labels)) {
+        if (label == 0) continue;
+        const fm::BoneSelection one{l.table.nameOf(label), {label}};
+        const fm::VoxelBox box = fm::boneVoxelBox(l.labels, one);
+        const glm::dvec3 a = l.labels.indexToWorld(glm::dvec3(box.lower));
+        const glm::dvec3 b = l.labels.indexToWorld(glm::dvec3(box.upper));
+        const glm::dvec3 lo = glm::min(a, b), hi = glm::max(a, b);
+        std::printf("  %5d %-20s %9zu voxels  box (%.1f, %.1f, %.1f) .. (%.1f, %.1f, %.1f) mm\n",
+                    label, one.name.c_str(), voxels, lo.x, lo.y, lo.z, hi.x, hi.y, hi.z);
+    }
+    for (const fm::LabelEntry& e : fm::missingLabels(l))
+        std::printf("  %5d %-20s missing: the table names it, the map has no such voxel\n",
+                    e.label, e.name.c_str());
+}
+
+void runInfo(const std::string& spec, const fm::cli::BoneOptions& bones) {
     const auto start = std::chrono::steady_clock::now();
-    const fm::Volume v = fm::loadVolume(spec);
+    const fm::cli::BoneChoice choice = fm::cli::chooseBone(bones, fm::loadVolume(spec));
+    const fm::Volume& v = choice.volume;
     const double loadMs =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     const fm::VolumeStats s = fm::computeStats(v, {1, 5, 50, 95, 99});
@@ -42,6 +65,8 @@ void runInfo(const std::string& spec) {
                 s.percentiles[0], s.percentiles[1], s.percentiles[2], s.percentiles[3],
                 s.percentiles[4]);
     std::printf("load time    %.1f ms\n", loadMs);
+    if (!choice.describe.empty()) std::printf("bone         %s\n", choice.describe.c_str());
+    if (choice.labels) printLabels(*choice.labels);
 }
 
 FM_REGISTER_COMMAND("info", 10, [](CLI::App& app) {
@@ -49,7 +74,9 @@ FM_REGISTER_COMMAND("info", 10, [](CLI::App& app) {
                                            "statistics of a volume");
     auto spec = std::make_shared<std::string>(fm::kDefaultVolumeSpec);
     fm::cli::addVolumeOption(cmd, *spec, true);
-    cmd->callback([spec] { runInfo(*spec); });
+    auto bones = std::make_shared<fm::cli::BoneOptions>();
+    fm::cli::addBoneOptions(cmd, *bones);
+    cmd->callback([spec, bones] { runInfo(*spec, *bones); });
     return cmd;
 });
 

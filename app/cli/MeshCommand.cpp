@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "bones/BoneVolume.h"
+#include "cli/BoneOptions.h"
 #include "cli/CommandRegistry.h"
 #include "cli/VolumeOption.h"
 #include "core/Error.h"
@@ -21,6 +23,8 @@ namespace {
 
 struct MeshArgs {
     std::string volume = fm::kDefaultVolumeSpec;
+    fm::cli::BoneOptions bones;
+    bool mask = false;
     std::string out;
     double iso = 300.0;
     int components = 0;
@@ -55,7 +59,14 @@ void runMesh(const MeshArgs& a) {
     }
     fm::checkMeshPath(a.out);
     const auto start = std::chrono::steady_clock::now();
-    const fm::Volume v = fm::loadVolume(a.volume);
+    if (a.mask && a.bones.bone.empty()) throw fm::Error("--mask needs --bone");
+    fm::cli::BoneChoice choice = fm::cli::chooseBone(a.bones, fm::loadVolume(a.volume));
+    // --mask: the surface of the segmentation itself (0/1 mask at 0.5), not of the CT's values.
+    if (a.mask) {
+        choice.volume = fm::boneMask(choice.labels->labels, *choice.bone);
+        o.isoValue = 0.5;
+    }
+    const fm::Volume& v = choice.volume;
     const double loadMs = msSince(start);
     const auto meshStart = std::chrono::steady_clock::now();
     const fm::Mesh mesh = fm::marchingCubes(v, o);
@@ -68,10 +79,11 @@ void runMesh(const MeshArgs& a) {
     }
     fm::writeMesh(mesh, a.out);
     const auto sizes = fm::componentSizes(mesh);
+    if (!choice.describe.empty()) std::printf("%s\n", choice.describe.c_str());
     std::printf(
         "wrote %s: %zu triangles, %zu vertices, %zu components (iso %.6g; load %.0f ms, "
         "marching cubes %.1f ms)\n",
-        a.out.c_str(), mesh.triangleCount(), mesh.vertexCount(), sizes.size(), a.iso, loadMs,
+        a.out.c_str(), mesh.triangleCount(), mesh.vertexCount(), sizes.size(), o.isoValue, loadMs,
         meshMs);
     if (a.check) {
         const auto checkStart = std::chrono::steady_clock::now();
@@ -90,6 +102,10 @@ FM_REGISTER_COMMAND("mesh", 60, [](CLI::App& app) {
         app.add_subcommand("mesh", "Bone surface by marching cubes, written as .ply, .stl or .obj");
     auto a = std::make_shared<MeshArgs>();
     fm::cli::addVolumeOption(cmd, a->volume);
+    fm::cli::addBoneOptions(cmd, a->bones);
+    cmd->add_flag("--mask", a->mask,
+                  "With --bone: the surface of the bone's label mask (iso 0.5) instead of the "
+                  "CT's values at --iso inside the bone");
     cmd->add_option("--iso", a->iso, "Isovalue (HU for CTs; surface where values cross it)")
         ->capture_default_str();
     cmd->add_option("--components", a->components,

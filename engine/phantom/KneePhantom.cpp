@@ -249,6 +249,45 @@ struct KneePose {
     }
 };
 
+
+// Which bone is nearest to a point (given in the model, tibia and patella frames) and how far.
+struct NearestBone {
+    double distance = kFar;  // signed distance to that bone's surface, mm (kFar: none near)
+    double cortexMm = 2.5;
+    KneeBoneLabel label = KneeBoneLabel::None;
+};
+
+struct BoneBoxes {
+    Aabb femur, tibia, fibula, patella;
+    // Bounding boxes grown by the anti-aliasing ramp and the smooth-union bulge.
+    explicit BoneBoxes(double voxelWidth)
+        : femur(grown(kFemurBox, voxelWidth + 5.0)),
+          tibia(grown(kTibiaBox, voxelWidth + 5.0)),
+          fibula(grown(kFibulaBox, voxelWidth + 5.0)),
+          patella(grown(kPatellaBox, voxelWidth + 5.0)) {}
+
+    NearestBone nearest(const glm::dvec3& m, const glm::dvec3& t, const glm::dvec3& pl) const {
+        NearestBone b;
+        if (femur.contains(m)) {
+            b = {femurDistance(m), corticalThicknessMm(m.z), KneeBoneLabel::Femur};
+        }
+        if (tibia.contains(t)) {
+            const double dt = tibiaDistance(t);
+            if (dt < b.distance) b = {dt, corticalThicknessMm(t.z), KneeBoneLabel::Tibia};
+        }
+        if (fibula.contains(t)) {
+            const double df = fibulaDistance(t);
+            if (df < b.distance)
+                b = {df, std::min(corticalThicknessMm(t.z), 3.5), KneeBoneLabel::Fibula};
+        }
+        if (patella.contains(pl)) {
+            const double dp = ellipsoid(pl, kPatellaSemiAxes);
+            if (dp < b.distance) b = {dp, 2.0, KneeBoneLabel::Patella};
+        }
+        return b;
+    }
+};
+
 }  // namespace
 
 glm::dvec3 kneeModelToWorld(const KneePhantomParams& params, KneeSegment segment,
@@ -282,10 +321,7 @@ Volume makeKneePhantom(const KneePhantomParams& params) {
     const KneePose pose(params.flexionDeg);
     const double voxelWidth = (v.spacing.x + v.spacing.y + v.spacing.z) / 3.0;
     const Coverage cover{1.0 / voxelWidth};
-    // Bounding boxes grown by the anti-aliasing ramp and the smooth-union bulge.
-    const double margin = voxelWidth + 5.0;
-    const Aabb femurBox = grown(kFemurBox, margin), tibiaBox = grown(kTibiaBox, margin);
-    const Aabb fibulaBox = grown(kFibulaBox, margin), patellaBox = grown(kPatellaBox, margin);
+    const BoneBoxes boxes(voxelWidth);
     const KneeTissueHU hu = params.hu;
     const double mirror = params.leftKnee ? -1.0 : 1.0;
 
@@ -319,33 +355,8 @@ Volume makeKneePhantom(const KneePhantomParams& params) {
                                    inMuscle * (1.0 - pad) * (hu.muscle - hu.fat);
 
                     // Bones: the nearest one decides (they do not overlap).
-                    double d = kFar, cortex = 2.5;
-                    if (femurBox.contains(m)) {
-                        d = femurDistance(m);
-                        cortex = corticalThicknessMm(m.z);
-                    }
-                    if (tibiaBox.contains(t)) {
-                        const double dt = tibiaDistance(t);
-                        if (dt < d) {
-                            d = dt;
-                            cortex = corticalThicknessMm(t.z);
-                        }
-                    }
-                    if (fibulaBox.contains(t)) {
-                        const double df = fibulaDistance(t);
-                        if (df < d) {
-                            d = df;
-                            cortex = std::min(corticalThicknessMm(t.z), 3.5);
-                        }
-                    }
-                    const glm::dvec3 pl = pose.modelToPatella(m);
-                    if (patellaBox.contains(pl)) {
-                        const double dp = ellipsoid(pl, kPatellaSemiAxes);
-                        if (dp < d) {
-                            d = dp;
-                            cortex = 2.0;
-                        }
-                    }
+                    const NearestBone bone = boxes.nearest(m, t, pose.modelToPatella(m));
+                    const double d = bone.distance, cortex = bone.cortexMm;
                     const double inBone = cover(d);
                     if (inBone > 0.0) {
                         const double inCancellous = cover(d + cortex);
@@ -353,6 +364,34 @@ Volume makeKneePhantom(const KneePhantomParams& params) {
                                  inCancellous * (hu.cancellous - hu.cortical);
                     }
                     v.at(i, j, k) = static_cast<float>(value);
+                }
+    });
+    return v;
+}
+
+Volume makeKneeBoneLabels(const KneePhantomParams& params) {
+    validateKneeParams(params);
+    Volume v = Volume::allocate(params.dims, 0.0f);
+    v.spacing = params.fieldMm / glm::dvec3(params.dims);
+    v.origin = -(glm::dvec3(params.dims) - 1.0) * 0.5 * v.spacing;
+    v.meta.source = "phantom:knee labels";
+    v.meta.description = "bone labels (1 femur, 2 tibia, 3 fibula, 4 patella) of the " +
+                         describeKnee(params);
+    const KneePose pose(params.flexionDeg);
+    const double voxelWidth = (v.spacing.x + v.spacing.y + v.spacing.z) / 3.0;
+    const Coverage cover{1.0 / voxelWidth};
+    const BoneBoxes boxes(voxelWidth);
+    const double mirror = params.leftKnee ? -1.0 : 1.0;
+    parallelFor(params.dims.z, params.threads, [&](int k0, int k1) {
+        for (int k = k0; k < k1; ++k)
+            for (int j = 0; j < params.dims.y; ++j)
+                for (int i = 0; i < params.dims.x; ++i) {
+                    glm::dvec3 m = v.origin + v.spacing * glm::dvec3(i, j, k);
+                    m.x *= mirror;
+                    const NearestBone bone =
+                        boxes.nearest(m, pose.modelToTibia(m), pose.modelToPatella(m));
+                    if (cover(bone.distance) > 0.0)
+                        v.at(i, j, k) = static_cast<float>(static_cast<int>(bone.label));
                 }
     });
     return v;

@@ -90,4 +90,10 @@ glm::dvec3 kneeModelToWorld(const KneePhantomParams& params, KneeSegment segment
 
 Volume makeKneePhantom(const KneePhantomParams& params = {});
 
+// The bones of the phantom as labels (the label map of makeKneePhantom(params), same grid):
+// a voxel carries the label of the nearest bone when any of that bone covers it (so the
+// partial-volume voxels at a bone's edge belong to the bone), 0 for soft tissue and air.
+enum class KneeBoneLabel { None = 0, Femur = 1, Tibia = 2, Fibula = 3, Patella = 4 };
+Volume makeKneeBoneLabels(const KneePhantomParams& params = {});
+
 }  // namespace fm

@@ -124,7 +124,7 @@ class Options {
     std::map<std::string, std::string> values_;
 };
 
-Volume makeKnee(const Options& o) {
+KneePhantomParams kneeParams(const Options& o) {
     KneePhantomParams p;
     p.flexionDeg = o.number("flexion", p.flexionDeg);
     p.dims = o.size(p.dims);
@@ -141,8 +141,10 @@ Volume makeKnee(const Options& o) {
     const std::string side = o.text("side", "right");
     if (side != "left" && side != "right") o.fail("side must be left or right, got '" + side + "'");
     p.leftKnee = side == "left";
-    return makeKneePhantom(p);
+    return p;
 }
+
+constexpr const char* kKneeKeys = "flexion, size, field, spacing, side";
 
 Volume makeAnalytic(const std::string& name, const Options& o) {
     const glm::ivec3 dims = o.size(glm::ivec3(64));
@@ -185,7 +187,7 @@ Volume makePhantom(const std::string& nameAndOptions) {
     const std::vector<std::string> options(tokens.begin() + 1, tokens.end());
     const std::string common = "size, spacing, inside, outside, supersample";
     if (name == "knee")
-        return makeKnee(Options(name, options, "flexion, size, field, spacing, side"));
+        return makeKneePhantom(kneeParams(Options(name, options, kKneeKeys)));
     if (name == "sphere") return makeAnalytic(name, Options(name, options, "radius, " + common));
     if (name == "box") return makeAnalytic(name, Options(name, options, "extent, " + common));
     if (name == "cylinder")
@@ -193,6 +195,13 @@ Volume makePhantom(const std::string& nameAndOptions) {
     if (name == "ellipsoid") return makeAnalytic(name, Options(name, options, "axes, " + common));
     throw Error("unknown phantom '" + name + "': valid names are " + kValidNames +
                 " (e.g. phantom:knee,flexion=30)");
+}
+
+KneePhantomParams kneePhantomParams(const std::string& nameAndOptions) {
+    const std::vector<std::string> tokens = split(nameAndOptions, ',');
+    const std::string name = trim(tokens.front());
+    if (name != "knee") throw Error("phantom '" + name + "' is not the knee phantom");
+    return kneeParams(Options(name, {tokens.begin() + 1, tokens.end()}, kKneeKeys));
 }
 
 }  // namespace fm
