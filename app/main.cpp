@@ -10,6 +10,7 @@
 
 #include "cli/CommandRegistry.h"
 #include "core/Error.h"
+#include "distributed/ProcessTransport.h"
 
 int main(int argc, char** argv) {
     CLI::App app{"fluoromatch: match X-ray images to CT with digitally reconstructed radiographs"};
@@ -34,11 +35,16 @@ int main(int argc, char** argv) {
         app.parse(static_cast<int>(argvOut.size()), argvOut.data());
     } catch (const CLI::ParseError& e) {
         return app.exit(e);
+    } catch (const fm::distributed::JobsFailed& e) {
+        std::cerr << "fluoromatch: error: " << e.what() << "\n";
+        return 1;  // every rank has finished: end normally
     } catch (const fm::Error& e) {
         std::cerr << "fluoromatch: error: " << e.what() << "\n";
+        fm::distributed::endRunAfterError(1);
         return 1;
     } catch (const std::exception& e) {
         std::cerr << "fluoromatch: internal error: " << e.what() << "\n";
+        fm::distributed::endRunAfterError(2);
         return 2;
     }
     return 0;

@@ -2,17 +2,23 @@
 // volume: starts at known initial mTRE bins, success rate, median final mTRE split into in-plane
 // and out-of-plane parts, capture range and time per registration. See docs/search.md.
 #include <unistd.h>
-#include <cstdio>
+#include <algorithm>
 #include <chrono>
+#include <cstdio>
+#include <cstring>
 #include <memory>
+#include <span>
 #include <sstream>
 #include <string>
+#include <type_traits>
+#include <vector>
 
 #include "cli/CommandRegistry.h"
 #include "cli/SearchCli.h"
 #include "cli/VolumeOption.h"
 #include "core/Error.h"
-#include "core/Parallel.h"
+#include "distributed/JobRunner.h"
+#include "distributed/ProcessTransport.h"
 #include "io/AtomicFile.h"
 #include "scene/VolumeScene.h"
 #include "search/Evaluation.h"
@@ -44,11 +50,17 @@ void runEvaluate(const EvaluateArgs& a) {
         settings.methods.push_back(method);
     }
     if (settings.methods.empty()) throw fm::Error("--methods: give at least one method");
-    // The CSV is rewritten whole and atomically: the header before any work (a path that
-    // cannot be written fails now, not after the run), then at most once a second while trials
-    // finish (an interrupted run keeps complete rows), and at the end. A pipe or device gets
-    // the whole file once, at the end.
-    const bool csv = !a.csv.empty();
+    // Every rank loads and prepares the volume once, and plans the same registrations. MPI
+    // starts after the load, so that a volume no rank can read ends the run without aborts.
+    const fm::Volume volume = fm::loadVolume(a.volume);
+    fm::distributed::Transport& transport = fm::distributed::processTransport();
+    const bool writer = transport.rank() == 0;
+    // The CSV (rank 0) is rewritten whole and atomically: the header before any work (a path
+    // that cannot be written fails now, not after the run), then at most once a second while
+    // trials arrive (an interrupted run keeps complete rows; in a distributed run rows arrive
+    // when every rank has finished its jobs), and at the end. A pipe or device gets the whole
+    // file once, at the end.
+    const bool csv = writer && !a.csv.empty();
     const bool saveOften = csv && !fm::io::writesThrough(a.csv);
     std::ostringstream rows;
     rows << "method,bin_low_mm,bin_high_mm,start,start_mtre_mm,final_mtre_mm,"
@@ -60,46 +72,85 @@ void runEvaluate(const EvaluateArgs& a) {
     };
     if (saveOften) saveCsv();
 
-    const fm::Volume volume = fm::loadVolume(a.volume);
+    settings.registration.threads =
+        fm::distributed::threadsPerRank(transport, settings.registration.threads);
     const fm::DrrVolumePtr prepared = fm::cli::prepareForSearch(volume, a.search.values);
     const fm::Pose truth = fm::parsePose(a.truth);
     const auto parameterization =
         std::make_shared<fm::Pose2011Parameterization>(fm::defaultSceneSetup(), volume.center());
     const fm::EvaluationScene scene{fm::volumeScene(prepared), parameterization, 0};
-    const fm::Image reference =
-        fm::cli::renderReference(*prepared, parameterization->geometry(truth));
+    const fm::Image reference = fm::cli::renderReference(
+        *prepared, parameterization->geometry(truth), settings.registration.threads);
     const auto targets = fm::registrationTargets(volume);
-    const int threads = a.search.threads == 0 ? fm::defaultThreadCount() : a.search.threads;
+    const std::vector<fm::EvaluationStart> plan =
+        fm::evaluationPlan(truth.toArray(), scene, targets, settings);
+    const int threads = settings.registration.threads;
 
-    std::printf("volume     %s (%d x %d x %d), truth %s, %zu mTRE targets\n", a.volume.c_str(),
-                volume.dims.x, volume.dims.y, volume.dims.z, a.truth.c_str(), targets.size());
-    std::printf(
-        "protocol   %d starts per bin, seed %llu, success = final mTRE < %.1f mm, %d "
-        "threads\n",
-        a.starts, static_cast<unsigned long long>(settings.seed), settings.successMm, threads);
-    std::printf("search     %s, %s\n", fm::toString(settings.registration.similarity),
-                fm::cli::describeLevels(settings.registration).c_str());
-    std::fflush(stdout);
+    if (writer) {
+        std::printf("volume     %s (%d x %d x %d), truth %s, %zu mTRE targets\n", a.volume.c_str(),
+                    volume.dims.x, volume.dims.y, volume.dims.z, a.truth.c_str(), targets.size());
+        std::printf(
+            "protocol   %d starts per bin, seed %llu, success = final mTRE < %.1f mm, %d "
+            "threads\n",
+            a.starts, static_cast<unsigned long long>(settings.seed), settings.successMm,
+            threads);
+        std::printf("search     %s, %s\n", fm::toString(settings.registration.similarity),
+                    fm::cli::describeLevels(settings.registration).c_str());
+        std::printf("processes  %d (%s), %d thread%s each\n", transport.size(), transport.name(),
+                    threads, threads == 1 ? "" : "s");
+        std::fflush(stdout);
+    }
 
-    const bool interactive = isatty(fileno(stderr)) != 0;
-    const auto trials = fm::runEvaluation(
-        scene, reference, truth.toArray(), targets, settings,
-        [&](const fm::EvaluationTrial& t, int done, int total) {
-            if (csv) {
-                const fm::StartBin& b = settings.bins[t.bin];
-                rows << fm::toString(t.method) << ',' << b.lowMm << ',' << b.highMm << ',' << t.start
-                    << ',' << t.startMtreMm << ',' << t.final.meanMm << ',' << t.final.meanInPlaneMm
-                    << ',' << t.final.meanDepthMm << ',' << t.seconds << ',' << t.cpuSeconds << ','
-                     << t.evaluations << ',' << (t.success ? 1 : 0) << '\n';
-                if (saveOften &&
-                    std::chrono::steady_clock::now() - lastSave > std::chrono::seconds(1))
-                    saveCsv();
-            }
-            if (interactive || done == total || done % 10 == 0)
-                std::fprintf(stderr, "%sregistration %d/%d (%s)%s", interactive ? "\r" : "", done,
-                             total, fm::toString(t.method), interactive ? "   " : "\n");
+    // One job per registration; a rank builds each method's Registration once, when first used.
+    std::vector<std::unique_ptr<fm::Registration>> registrations(settings.methods.size());
+    auto registrationFor = [&](fm::SearchMethod method) -> const fm::Registration& {
+        const std::size_t m = static_cast<std::size_t>(
+            std::find(settings.methods.begin(), settings.methods.end(), method) -
+            settings.methods.begin());
+        if (!registrations[m]) {
+            fm::RegistrationSettings rs = settings.registration;
+            rs.method = method;
+            registrations[m] = std::make_unique<fm::Registration>(
+                scene.scene, scene.parameterization,
+                std::vector<fm::RegistrationView>{{0, reference, {}}}, rs);
+        }
+        return *registrations[m];
+    };
+    static_assert(std::is_trivially_copyable_v<fm::EvaluationTrial>);
+    std::vector<fm::EvaluationTrial> trials;
+    const bool interactive = writer && isatty(fileno(stderr)) != 0;
+    const int total = static_cast<int>(plan.size());
+    const auto failures = fm::distributed::runIndexedJobs(
+        transport, total, sizeof(fm::EvaluationTrial),
+        [&](int job, std::span<std::byte> record) {
+            const fm::EvaluationStart& start = plan[job];
+            const fm::EvaluationTrial t = fm::runEvaluationTrial(
+                registrationFor(start.method), start, scene, truth.toArray(), targets, settings);
+            std::memcpy(record.data(), &t, sizeof t);
+        },
+        [&](int, std::span<const std::byte> record) {
+            fm::EvaluationTrial t;
+            std::memcpy(&t, record.data(), sizeof t);
+            trials.push_back(t);
+            if (!csv) return;
+            const fm::StartBin& b = settings.bins[t.bin];
+            rows << fm::toString(t.method) << ',' << b.lowMm << ',' << b.highMm << ',' << t.start
+                 << ',' << t.startMtreMm << ',' << t.final.meanMm << ',' << t.final.meanInPlaneMm
+                 << ',' << t.final.meanDepthMm << ',' << t.seconds << ',' << t.cpuSeconds << ','
+                 << t.evaluations << ',' << (t.success ? 1 : 0) << '\n';
+            if (saveOften && std::chrono::steady_clock::now() - lastSave > std::chrono::seconds(1))
+                saveCsv();
+        },
+        [&](int job, int done, int mine) {
+            // Rank 0 shows its own share; the others run theirs silently.
+            if (writer && (interactive || done == mine || done % 10 == 0))
+                std::fprintf(stderr, "%sregistration %d/%d (%s)%s%s", interactive ? "\r" : "",
+                             done, mine, fm::toString(plan[job].method),
+                             transport.size() > 1 ? " on rank 0" : "", interactive ? "   " : "\n");
         });
     if (interactive) std::fprintf(stderr, "\n");
+    if (!writer) return;
+
     if (csv) {
         saveCsv();
         std::printf("wrote %s\n", a.csv.c_str());
@@ -123,6 +174,11 @@ void runEvaluate(const EvaluateArgs& a) {
         "(capture range: largest initial mTRE up to which every bin reaches %.0f%% "
         "success)\n",
         100.0 * settings.captureSuccessRate);
+    if (!failures.empty())
+        throw fm::distributed::JobsFailed(
+            std::to_string(failures.size()) + " of " + std::to_string(total) +
+            " registrations failed (the tables and CSV hold the others): " +
+            fm::distributed::describeFailures(failures));
 }
 
 FM_REGISTER_COMMAND("evaluate", 41, [](CLI::App& app) {

@@ -66,11 +66,10 @@ double median(std::vector<double> v) {
     return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
-std::vector<EvaluationTrial> runEvaluation(
-    const EvaluationScene& scene, const Image& reference, const SceneParams& truth,
-    const std::vector<glm::dvec3>& targets, const EvaluationSettings& settings,
-    const std::function<void(const EvaluationTrial&, int, int)>& onTrial,
-    const std::atomic<bool>* stop) {
+std::vector<EvaluationStart> evaluationPlan(const SceneParams& truth,
+                                            const EvaluationScene& scene,
+                                            const std::vector<glm::dvec3>& targets,
+                                            const EvaluationSettings& settings) {
     if (settings.startsPerBin < 1) throw Error("evaluation: starts per bin must be at least 1");
     if (settings.methods.empty()) throw Error("evaluation: no methods");
     // The same starts for every method.
@@ -79,36 +78,56 @@ std::vector<EvaluationTrial> runEvaluation(
     for (std::size_t b = 0; b < settings.bins.size(); ++b)
         for (int s = 0; s < settings.startsPerBin; ++s)
             starts[b].push_back(startInBin(truth, scene, targets, settings.bins[b], rng));
+    std::vector<EvaluationStart> plan;
+    for (SearchMethod method : settings.methods)
+        for (std::size_t b = 0; b < settings.bins.size(); ++b)
+            for (int s = 0; s < settings.startsPerBin; ++s)
+                plan.push_back({method, static_cast<int>(b), s, starts[b][s]});
+    return plan;
+}
+
+EvaluationTrial runEvaluationTrial(const Registration& registration, const EvaluationStart& start,
+                                   const EvaluationScene& scene, const SceneParams& truth,
+                                   const std::vector<glm::dvec3>& targets,
+                                   const EvaluationSettings& settings,
+                                   const std::atomic<bool>* stop) {
     const ProjectionGeometry truthGeometry = scene.camera(truth);
+    const std::clock_t cpu0 = std::clock();
+    const RegistrationResult r = registration.run(start.params, {}, stop);
+    const double cpu = double(std::clock() - cpu0) / CLOCKS_PER_SEC;
+    EvaluationTrial t;
+    t.method = start.method;
+    t.bin = start.bin;
+    t.start = start.start;
+    t.startMtreMm =
+        targetRegistrationError(truthGeometry, scene.camera(start.params), targets).meanMm;
+    t.final = targetRegistrationError(truthGeometry, scene.camera(r.params), targets);
+    t.seconds = r.seconds;
+    t.cpuSeconds = cpu;
+    t.evaluations = r.evaluations;
+    t.success = t.final.meanMm < settings.successMm;
+    return t;
+}
+
+std::vector<EvaluationTrial> runEvaluation(
+    const EvaluationScene& scene, const Image& reference, const SceneParams& truth,
+    const std::vector<glm::dvec3>& targets, const EvaluationSettings& settings,
+    const std::function<void(const EvaluationTrial&, int, int)>& onTrial,
+    const std::atomic<bool>* stop) {
+    const std::vector<EvaluationStart> plan = evaluationPlan(truth, scene, targets, settings);
     std::vector<EvaluationTrial> trials;
-    const int total =
-        static_cast<int>(settings.methods.size() * settings.bins.size()) * settings.startsPerBin;
-    for (SearchMethod method : settings.methods) {
+    const int total = static_cast<int>(plan.size());
+    for (std::size_t i = 0; i < plan.size();) {
         RegistrationSettings rs = settings.registration;
-        rs.method = method;
+        rs.method = plan[i].method;
         const Registration registration(scene.scene, scene.parameterization, {{0, reference, {}}},
                                         rs);
-        for (std::size_t b = 0; b < settings.bins.size(); ++b)
-            for (int s = 0; s < settings.startsPerBin; ++s) {
-                if (stop && stop->load()) return trials;
-                const SceneParams& start = starts[b][s];
-                const std::clock_t cpu0 = std::clock();
-                const RegistrationResult r = registration.run(start, {}, stop);
-                const double cpu = double(std::clock() - cpu0) / CLOCKS_PER_SEC;
-                EvaluationTrial t;
-                t.method = method;
-                t.bin = static_cast<int>(b);
-                t.start = s;
-                t.startMtreMm =
-                    targetRegistrationError(truthGeometry, scene.camera(start), targets).meanMm;
-                t.final = targetRegistrationError(truthGeometry, scene.camera(r.params), targets);
-                t.seconds = r.seconds;
-                t.cpuSeconds = cpu;
-                t.evaluations = r.evaluations;
-                t.success = t.final.meanMm < settings.successMm;
-                trials.push_back(t);
-                if (onTrial) onTrial(t, static_cast<int>(trials.size()), total);
-            }
+        for (; i < plan.size() && plan[i].method == rs.method; ++i) {
+            if (stop && stop->load()) return trials;
+            trials.push_back(
+                runEvaluationTrial(registration, plan[i], scene, truth, targets, settings, stop));
+            if (onTrial) onTrial(trials.back(), static_cast<int>(trials.size()), total);
+        }
     }
     return trials;
 }

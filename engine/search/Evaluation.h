@@ -81,6 +81,33 @@ struct EvaluationMethodSummary {
     double medianSeconds = 0.0;
 };
 
+// One registration of the protocol: a method from one start. The plan lists them method by
+// method, then bin by bin, then start by start; that index is the job index of a distributed
+// run (see distributed/JobRunner.h).
+struct EvaluationStart {
+    SearchMethod method = SearchMethod::CmaEs;
+    int bin = 0;
+    int start = 0;  // index within the bin
+    SceneParams params;
+};
+
+// Every registration of the protocol, in order. The starts are drawn from one stream of
+// settings.seed, bin by bin, start by start, and are the same for every method; the plan is a
+// function of its arguments only (every rank of a distributed run computes the same plan).
+std::vector<EvaluationStart> evaluationPlan(const SceneParams& truth,
+                                            const EvaluationScene& scene,
+                                            const std::vector<glm::dvec3>& targets,
+                                            const EvaluationSettings& settings);
+
+// Runs one registration of the plan. `registration` must have been built for `scene` with
+// settings.registration and `start.method`. Every registration uses the seed
+// settings.registration.seed: the result depends only on the start (and the thread count).
+EvaluationTrial runEvaluationTrial(const Registration& registration, const EvaluationStart& start,
+                                   const EvaluationScene& scene, const SceneParams& truth,
+                                   const std::vector<glm::dvec3>& targets,
+                                   const EvaluationSettings& settings,
+                                   const std::atomic<bool>* stop = nullptr);
+
 // Runs every method from every start against `reference` (camera 0's image, e.g. a DRR
 // rendered at `truth`). `onTrial` (optional) is called after each registration.
 // Deterministic for a seed and thread count.

@@ -1,0 +1,11 @@
+# tests/distributed: the job runner (linked with fm_distributed), and the runs over MPI with
+# 1, 2 and 3 ranks (mpi_runs_test.sh: the runner's tests under mpirun, and evaluate's CSV
+# byte-identical for every rank count). The script skips (77) only when MPI was not built.
+target_link_libraries(fm_test_${name} PRIVATE fm_distributed)
+if(TARGET fluoromatch)
+    add_test(NAME distributed_mpi_runs
+        COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/mpi_runs_test.sh "${FM_MPI_FOUND}" "${FM_MPIEXEC}"
+                $<TARGET_FILE:fm_test_${name}> $<TARGET_FILE:fluoromatch>
+                ${PROJECT_SOURCE_DIR}/distributed/lsan-openmpi.supp)
+    set_tests_properties(distributed_mpi_runs PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 600)
+endif()

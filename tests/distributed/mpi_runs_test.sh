@@ -1,0 +1,66 @@
+#!/usr/bin/env bash
+# Distributed runs on this machine over loopback (shared memory, no NIC), 1, 2 and 3 ranks:
+#  1. the job runner's GoogleTests pass under mpirun -np 2 and -np 3 (records reach rank 0 in
+#     job order, job j on rank j % size, failures named with their rank, others finish);
+#  2. `fluoromatch evaluate --csv` gives byte-identical CSVs without mpirun and with 1, 2 and 3
+#     ranks, except the columns of measured times (header contains "second" or "time", or ends
+#     in "_ms"), which are dropped before comparing.
+# Usage: mpi_runs_test.sh MPI_FOUND MPIEXEC TEST_BINARY FLUOROMATCH LSAN_SUPPRESSIONS
+# Skips (77) only when the build has no MPI, and never under CI=true (CI installs MPI).
+set -uo pipefail
+MPI_FOUND=$1 MPIEXEC=$2 TESTS=$3 FM=$4 SUPP=$5
+fail() { echo "FAIL: $*"; exit 1; }
+if [ "$MPI_FOUND" != "ON" ]; then
+    [ "${CI:-}" = "true" ] && fail "built without MPI under CI=true (scripts/setup installs libopenmpi-dev)"
+    echo "SKIP: fluoromatch was built without MPI (install libopenmpi-dev and re-run cmake)"
+    exit 77
+fi
+OUT=$(mktemp -d)
+trap 'rm -rf "$OUT"' EXIT
+
+# Launcher flags. Open MPI: allow root (CI), more ranks than cores, no pinning (each rank runs
+# its own threads), shared memory without the CMA single-copy path (refused in containers),
+# and only the self and shared-memory transports (loopback: no traffic leaves the machine).
+FLAGS=()
+if "$MPIEXEC" --version 2>&1 | grep -q "Open MPI\|OpenRTE"; then
+    FLAGS=(--oversubscribe --bind-to none --mca btl self,vader)
+    export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+    export OMPI_MCA_btl_vader_single_copy_mechanism=none
+fi
+# Under AddressSanitizer: Open MPI's own allocations at exit are not ours (suppressions scoped to
+# its libraries; the full unwinder is needed to see through its plugins). See docs/distributed.md.
+export LSAN_OPTIONS="${LSAN_OPTIONS:+$LSAN_OPTIONS:}suppressions=$SUPP:fast_unwind_on_malloc=0"
+run() { local n=$1; shift; "$MPIEXEC" -n "$n" "${FLAGS[@]}" "$@"; }
+
+# 1. The runner's tests on 2 and 3 ranks (each rank runs the whole suite; all must pass).
+for n in 2 3; do
+    run "$n" "$TESTS" --gtest_brief=1 >"$OUT/gtest$n.log" 2>&1 || {
+        cat "$OUT/gtest$n.log"; fail "the job runner's tests failed on $n ranks"; }
+    passed=$(grep -c "PASSED" "$OUT/gtest$n.log")
+    [ "$passed" -eq "$n" ] || { cat "$OUT/gtest$n.log"; fail "$passed of $n ranks passed"; }
+    echo "job runner tests: pass on every one of $n ranks"
+done
+
+# 2. evaluate: 2 methods x 4 bins x 1 start = 8 registrations, small budgets, 1 thread a rank.
+EVAL=(evaluate --methods mc,cmaes --starts 1 --budget 60 --polish-budget 20 --levels 4,2 --threads 1)
+"$FM" "${EVAL[@]}" --csv "$OUT/plain.csv" >"$OUT/plain.txt" 2>&1 || {
+    cat "$OUT/plain.txt"; fail "evaluate without mpirun exited $?"; }
+grep -q "processes  1 (single process)" "$OUT/plain.txt" || fail "a plain run did not say it ran on one process"
+# Columns to compare: every one whose header does not name a measured time.
+keep=$(head -1 "$OUT/plain.csv" | tr ',' '\n' | grep -n -v -E 'second|time|_ms$' | cut -d: -f1 | paste -sd,)
+dropped=$(head -1 "$OUT/plain.csv" | tr ',' '\n' | grep -E 'second|time|_ms$' | paste -sd' ')
+[ -n "$dropped" ] || fail "no time column found to drop: the header changed?"
+[ "$(wc -l <"$OUT/plain.csv")" -eq 9 ] || fail "expected 8 rows and a header in the CSV"
+cut -d, -f"$keep" "$OUT/plain.csv" >"$OUT/plain.cut"
+for n in 1 2 3; do
+    run "$n" "$FM" "${EVAL[@]}" --csv "$OUT/np$n.csv" >"$OUT/np$n.txt" 2>&1 || {
+        cat "$OUT/np$n.txt"; fail "evaluate on $n ranks exited $?"; }
+    grep -q "processes  $n (MPI)" "$OUT/np$n.txt" || { cat "$OUT/np$n.txt"; fail "evaluate did not run on $n MPI ranks"; }
+    cut -d, -f"$keep" "$OUT/np$n.csv" >"$OUT/np$n.cut"
+    cmp "$OUT/plain.cut" "$OUT/np$n.cut" || {
+        diff "$OUT/plain.cut" "$OUT/np$n.cut"; fail "evaluate's CSV on $n ranks differs from one process"; }
+    # Rank 0 alone prints the tables: one summary, not n.
+    [ "$(grep -c '^method  capture range' "$OUT/np$n.txt")" -eq 1 ] || fail "the summary was printed more than once on $n ranks"
+    echo "evaluate on $n ranks: CSV identical to one process (apart from: $dropped)"
+done
+echo "PASS"
