@@ -37,6 +37,8 @@ std::string errorText(std::exception_ptr e) {
 
 }  // namespace
 
+std::size_t bytesPerJob(std::size_t recordBytes) { return sizeof(SlotHeader) + recordBytes; }
+
 int jobsOfRank(int jobCount, int rank, int size) {
     return jobCount > rank ? (jobCount - rank + size - 1) / size : 0;
 }
@@ -50,7 +52,7 @@ std::vector<JobFailure> runIndexedJobs(Transport& transport, int jobCount, std::
                     std::to_string(kMaxRecordBytes));
     const int rank = transport.rank();
     const int size = transport.size();
-    const std::size_t slotBytes = sizeof(SlotHeader) + recordBytes;
+    const std::size_t slotBytes = bytesPerJob(recordBytes);
     // Jobs per rank per round: rank 0's buffer (size * perRank slots) stays within the limit.
     // One process waits for nobody: its rounds are single jobs, so the sink sees each at once.
     const std::size_t fit =

@@ -55,6 +55,9 @@ std::vector<JobFailure> runIndexedJobs(Transport& transport, int jobCount, std::
                                        const JobDone& done = {},
                                        std::size_t maxRoundBytes = kDefaultRoundBytes);
 
+// Bytes one job moves to rank 0: its record plus the slot header (state, job, message).
+std::size_t bytesPerJob(std::size_t recordBytes);
+
 // The jobs rank `rank` of `size` runs: ceil((jobCount - rank) / size).
 int jobsOfRank(int jobCount, int rank, int size);
 

@@ -96,8 +96,10 @@ void runEvaluate(const EvaluateArgs& a) {
             threads);
         std::printf("search     %s, %s\n", fm::toString(settings.registration.similarity),
                     fm::cli::describeLevels(settings.registration).c_str());
-        std::printf("processes  %d (%s), %d thread%s each\n", transport.size(), transport.name(),
-                    threads, threads == 1 ? "" : "s");
+        std::printf("processes  %d (%s), %d thread%s each; %zu registrations, %zu bytes each "
+                    "to rank 0\n",
+                    transport.size(), transport.name(), threads, threads == 1 ? "" : "s",
+                    plan.size(), fm::distributed::bytesPerJob(sizeof(fm::EvaluationTrial)));
         std::fflush(stdout);
     }
 
