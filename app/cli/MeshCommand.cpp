@@ -11,6 +11,7 @@
 #include "bones/BoneVolume.h"
 #include "cli/BoneOptions.h"
 #include "cli/CommandRegistry.h"
+#include "cli/NumberChecks.h"
 #include "cli/VolumeOption.h"
 #include "core/Error.h"
 #include "mesh/MarchingCubes.h"
@@ -117,7 +118,8 @@ FM_REGISTER_COMMAND("mesh", 60, [](CLI::App& app) {
         ->check(CLI::NonNegativeNumber);
     cmd->add_option("--component-near", a->near,
                     "Keep only the component nearest to this world point: X Y Z (mm, LPS)")
-        ->expected(3);
+        ->expected(3)
+        ->check(fm::cli::kFiniteNumber);
     cmd->add_option("--roi", a->roi, "Region of interest in voxels: I0 J0 K0 I1 J1 K1 (inclusive)")
         ->expected(6);
     cmd->add_option("--threads", a->threads, "Threads (0 = all cores)")

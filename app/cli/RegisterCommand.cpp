@@ -68,7 +68,12 @@ void runRegister(const RegisterArgs& a) {
         reference = fm::cli::readReferenceImage(a.reference);
         if (!a.truth.empty()) truth = fm::parsePose(a.truth);
     }
-    const fm::Pose start = a.start.empty() ? fm::Pose{} : fm::parsePose(a.start);
+    fm::Pose start;
+    try {
+        if (!a.start.empty()) start = fm::parsePose(a.start);
+    } catch (const fm::Error& e) {
+        throw fm::Error(std::string("--start: ") + e.what());
+    }
 
     std::printf("volume      %s (%d x %d x %d)\n", a.volume.c_str(), volume.dims.x, volume.dims.y,
                 volume.dims.z);

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "cli/CommandRegistry.h"
+#include "cli/NumberChecks.h"
 #include "core/Error.h"
 #include "geometry/Pose.h"
 #include "ui/DragMeasurement.h"
@@ -104,7 +105,9 @@ FM_REGISTER_COMMAND("screenshot", 2, [](CLI::App& cli) {
     cmd->add_option("--reference-pose", a->referencePose,
                     "the hidden reference pose x,y,z,az,el,rot; default: picked by --seed");
     cmd->add_option("--view", a->view, "3D view camera az,el,zoom (deg, deg, factor)");
-    cmd->add_option("--seed", a->seed, "seed of the reference choice")->capture_default_str();
+    cmd->add_option("--seed", a->seed, "seed of the reference choice")
+        ->capture_default_str()
+        ->check(fm::cli::kSeedNumber);
     cmd->add_option("--compare", a->compare, "difference, overlay or checkerboard")
         ->capture_default_str();
     cmd->add_flag("--match", a->match, "press Match before the shot (verdict and hints)");

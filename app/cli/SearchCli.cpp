@@ -6,6 +6,7 @@
 
 #include <stb/stb_image.h>
 
+#include "cli/NumberChecks.h"
 #include "core/Error.h"
 #include "io/ReadVolume.h"
 
@@ -40,10 +41,14 @@ void addSearchOptions(CLI::App* cmd, SearchArgs& a, bool withMethod) {
                     "Similarity: ncc, gncc (gradient NCC) or gd (gradient difference)")
         ->capture_default_str();
     cmd->add_option("--seed", a.seed, "Random seed (same seed, same result)")
-        ->capture_default_str();
-    cmd->add_option("--budget", a.budget, "Evaluations of the global search (default 600)");
+        ->capture_default_str()
+        ->check(kSeedNumber);
+    // Given values are checked (0 or -1 would otherwise silently mean "the default").
+    cmd->add_option("--budget", a.budget, "Evaluations of the global search (default 600)")
+        ->check(CLI::Range(1, kMaxEvaluations));
     cmd->add_option("--polish-budget", a.polishBudget,
-                    "Evaluations of the local polish per level (default 100)");
+                    "Evaluations of the local polish per level (default 100; 0 = no polish)")
+        ->check(CLI::Range(0, kMaxEvaluations));
     cmd->add_option("--levels", a.levels,
                     "Detector downsampling factors, coarse to fine (default 4,2,1)");
     cmd->add_option("--radius", a.radius,

@@ -16,8 +16,8 @@ struct SearchArgs {
     std::string method = "cmaes";
     std::string similarity = "gncc";
     std::uint64_t seed = 1;
-    int budget = 0;         // global search evaluations (0 = the default)
-    int polishBudget = -1;  // per polish level (-1 = the default)
+    int budget = 0;         // global search evaluations (0: not given, the default)
+    int polishBudget = -1;  // per polish level (-1: not given, the default)
     std::string levels;     // e.g. "4,2" (empty = the default)
     std::string radius;     // "t" or "u,v,depth,az,el,rot" (empty = the default)
     int threads = 0;

@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <sstream>
 
 #include "core/Error.h"
 #include "core/Parallel.h"
@@ -327,6 +328,31 @@ double drrLineIntegral(const DrrVolume& v, const glm::dvec3& source, const glm::
     return traceExact(v, ray, skipEmptySpace) * glm::length(target - source);
 }
 
+namespace {
+
+// Bounds of the work a step implies for Approx: no ray crosses more than the box diagonal, so
+// samples per ray <= diagonal / step (this also keeps the count within int) and samples in all
+// <= pixels * that. At roughly 5-10 ns a sample, the total limit is some tens of CPU seconds.
+constexpr double kMaxApproxSamplesPerRay = 1e6;
+constexpr double kMaxApproxSamples = 4e9;
+
+void checkApproxWork(double diagonalMm, const PixelRange& range, double stepMm) {
+    const double pixels =
+        double(range.col1 - range.col0) * double(range.row1 - range.row0);
+    const double perRay = diagonalMm / stepMm;
+    if (perRay <= kMaxApproxSamplesPerRay && perRay * pixels <= kMaxApproxSamples) return;
+    const double minStep =
+        diagonalMm * std::max(1.0 / kMaxApproxSamplesPerRay, pixels / kMaxApproxSamples);
+    std::ostringstream msg;
+    msg << "DRR approximate step " << stepMm << " mm implies up to " << perRay
+        << " samples per ray over " << pixels << " pixels (volume diagonal " << diagonalMm
+        << " mm), beyond the limit of " << kMaxApproxSamplesPerRay << " per ray and "
+        << kMaxApproxSamples << " in all: use a step of at least " << minStep << " mm";
+    throw Error(msg.str());
+}
+
+}  // namespace
+
 Image renderDrr(const DrrVolume& v, const ProjectionGeometry& g, const DrrRenderOptions& options) {
     g.validate("DRR geometry");
     const bool approx = options.trace == DrrTrace::Approx;
@@ -345,6 +371,7 @@ Image renderDrr(const DrrVolume& v, const ProjectionGeometry& g, const DrrRender
     const PixelRange range = options.skipEmptySpace ? projectedBox(v, g, boxLo, boxHi)
                                                     : PixelRange{0, det.size.x, 0, det.size.y};
     if (range.col0 >= range.col1 || range.row0 >= range.row1) return image;
+    if (approx) checkApproxWork(glm::length(boxHi - boxLo), range, options.approxStepMm);
 
     const glm::dvec3 q0 = v.worldToLocalPoint(g.source);
     auto body = [&](int rowBegin, int rowEnd) {
@@ -360,6 +387,7 @@ Image renderDrr(const DrrVolume& v, const ProjectionGeometry& g, const DrrRender
                     double aMin, aMax;
                     if (!clipRay(ray, boxLo, boxHi, aMin, aMax)) continue;
                     const double span = (aMax - aMin) * length;
+                    // span <= the diagonal: checkApproxWork bounded this below int range.
                     const int samples =
                         std::max(1, static_cast<int>(std::ceil(span / options.approxStepMm)));
                     const double dAlpha = (aMax - aMin) / samples;
@@ -373,6 +401,13 @@ Image renderDrr(const DrrVolume& v, const ProjectionGeometry& g, const DrrRender
         }
     };
     parallelFor(range.row1 - range.row0, options.threads, body, kChunksPerThread);
+    // The last guard: bounded geometry (core/WorldLimits.h) and finite voxels make this
+    // unreachable, and it stays so: no NaN or inf ever leaves the renderer as a pixel.
+    const std::size_t bad = static_cast<std::size_t>(std::count_if(
+        image.pixels.begin(), image.pixels.end(), [](float p) { return !std::isfinite(p); }));
+    if (bad > 0)
+        throw Error("DRR: " + std::to_string(bad) + " of " + std::to_string(image.pixels.size()) +
+                    " pixels came out non-finite (the geometry's arithmetic overflowed)");
     return image;
 }
 

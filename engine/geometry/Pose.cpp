@@ -8,6 +8,7 @@
 #include <glm/gtc/constants.hpp>
 
 #include "core/Error.h"
+#include "core/WorldLimits.h"
 
 namespace fm {
 
@@ -55,9 +56,13 @@ void checkRange(double value, double limit, const char* name) {
 }  // namespace
 
 void validatePose(const Pose& pose) {
-    for (int i = 0; i < 3; ++i)
+    for (int i = 0; i < 3; ++i) {
         if (!std::isfinite(pose.offset[i]))
             throw Error(std::string("pose ") + kPoseNames[i] + " must be finite");
+        if (std::abs(pose.offset[i]) > kMaxWorldMm)
+            throw Error(std::string("pose ") + kPoseNames[i] + " " + formatNumber(pose.offset[i]) +
+                        " mm is beyond " + formatNumber(kMaxWorldMm) + " mm");
+    }
     checkRange(pose.azimuthDeg, kAzimuthLimitDeg, "azimuth");
     checkRange(pose.elevationDeg, kElevationLimitDeg, "elevation");
     checkRange(pose.rotationDeg, kRotationLimitDeg, "rotation");
@@ -107,12 +112,16 @@ SceneSetup defaultSceneSetup() {
 }
 
 void validateSceneSetup(const SceneSetup& setup) {
-    auto positive = [](double v) { return std::isfinite(v) && v > 0.0; };
+    // Positive, finite and at most a kilometre (core/WorldLimits.h): 1e308 is finite but its
+    // arithmetic is not.
+    auto positive = [](double v) { return std::isfinite(v) && v > 0.0 && v <= kMaxWorldMm; };
+    const std::string range = " must be positive and at most " + formatNumber(kMaxWorldMm) +
+                              " mm, got ";
     if (!positive(setup.sourceToIsocenterMm))
-        throw Error("scene source-to-isocenter distance must be positive, got " +
+        throw Error("scene source-to-isocenter distance" + range +
                     formatNumber(setup.sourceToIsocenterMm) + " mm");
     if (!positive(setup.isocenterToFilmMm))
-        throw Error("scene isocenter-to-film distance must be positive, got " +
+        throw Error("scene isocenter-to-film distance" + range +
                     formatNumber(setup.isocenterToFilmMm) + " mm");
     for (int i = 0; i < 2; ++i) {
         const char* axis = i == 0 ? "width" : "height";
@@ -121,7 +130,7 @@ void validateSceneSetup(const SceneSetup& setup) {
                         std::to_string(kMaxFilmPixels) + " pixels, got " +
                         std::to_string(setup.filmPixels[i]));
         if (!positive(setup.filmSizeMm[i]))
-            throw Error(std::string("scene film ") + axis + " must be positive, got " +
+            throw Error(std::string("scene film ") + axis + range +
                         formatNumber(setup.filmSizeMm[i]) + " mm");
     }
 }
@@ -157,14 +166,16 @@ SceneFrame sceneFrame(double azimuthDeg, double elevationDeg, double rotationDeg
 ProjectionGeometry sceneGeometry(const Pose& pose, const SceneSetup& setup,
                                  const glm::dvec3& volumeCenter) {
     for (int i = 0; i < 3; ++i)
-        if (!std::isfinite(pose.offset[i]))
-            throw Error(std::string("pose ") + kPoseNames[i] + " must be finite");
+        if (!std::isfinite(pose.offset[i]) || std::abs(pose.offset[i]) > kMaxWorldMm)
+            throw Error(std::string("pose ") + kPoseNames[i] + " must be finite, within " +
+                        formatNumber(kMaxWorldMm) + " mm");
     if (!std::isfinite(pose.azimuthDeg) || !std::isfinite(pose.elevationDeg) ||
         !std::isfinite(pose.rotationDeg))
         throw Error("pose angles must be finite");
-    if (!std::isfinite(volumeCenter.x) || !std::isfinite(volumeCenter.y) ||
-        !std::isfinite(volumeCenter.z))
-        throw Error("volume centre must be finite");
+    for (int i = 0; i < 3; ++i)
+        if (!std::isfinite(volumeCenter[i]) || std::abs(volumeCenter[i]) > kMaxWorldMm)
+            throw Error("volume centre must be finite, within " + formatNumber(kMaxWorldMm) +
+                        " mm");
     validateSceneSetup(setup);
 
     const SceneFrame f = sceneFrame(pose.azimuthDeg, pose.elevationDeg, pose.rotationDeg);

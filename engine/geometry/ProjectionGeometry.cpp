@@ -8,6 +8,8 @@
 #include <nlohmann/json.hpp>
 
 #include "core/Error.h"
+#include "core/WorldLimits.h"
+#include "io/StrictJson.h"
 
 namespace fm {
 
@@ -129,6 +131,15 @@ void ProjectionGeometry::validate(const std::string& what) const {
     };
     if (!finite(source)) fail("source", "must be finite");
     if (!finite(detector.origin)) fail("detector.origin", "must be finite");
+    // Finite is not enough: 1e308 overflows the first squared length (docs/robustness.md).
+    auto withinWorld = [](const glm::dvec3& v) {
+        return std::abs(v.x) <= kMaxWorldMm && std::abs(v.y) <= kMaxWorldMm &&
+               std::abs(v.z) <= kMaxWorldMm;
+    };
+    const std::string limit = "must lie within " + formatNumber(kMaxWorldMm) + " mm of the origin";
+    if (!withinWorld(source)) fail("source", limit + ", got " + formatVec(source));
+    if (!withinWorld(detector.origin))
+        fail("detector.origin", limit + ", got " + formatVec(detector.origin));
     if (!finite(detector.u)) fail("detector.u", "must be finite");
     if (!finite(detector.v)) fail("detector.v", "must be finite");
     for (int i = 0; i < 2; ++i) {
@@ -140,6 +151,10 @@ void ProjectionGeometry::validate(const std::string& what) const {
         if (!std::isfinite(detector.spacing[i]) || detector.spacing[i] <= 0.0)
             fail("detector.spacing" + index,
                  "must be positive and finite, got " + formatNumber(detector.spacing[i]));
+        if (detector.spacing[i] * detector.size[i] > kMaxWorldMm)
+            fail("detector.spacing" + index,
+                 "makes the film " + formatNumber(detector.spacing[i] * detector.size[i]) +
+                     " mm wide, more than " + formatNumber(kMaxWorldMm) + " mm");
     }
     if (std::abs(glm::length(detector.u) - 1.0) > kUnitTolerance)
         fail("detector.u",
@@ -192,12 +207,8 @@ std::optional<glm::dvec2> ProjectionGeometry::projectToPixel(const glm::dvec3& w
 }
 
 ProjectionGeometry geometryFromJson(const std::string& jsonText, const std::string& what) {
-    Json root;
-    try {
-        root = Json::parse(jsonText);
-    } catch (const Json::exception& e) {  // syntax errors, numbers out of double range
-        throw Error(what + ": not valid JSON (" + e.what() + ")");
-    }
+    // Strict: syntax errors, numbers out of double range and duplicate keys are refused.
+    const Json root = io::parseStrictJson(jsonText, what);
     const JsonReader reader(what);
     reader.requireObject(root, "", {"source", "detector"});
     ProjectionGeometry g;

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/Error.h"
+#include "core/WorldLimits.h"
 #include "core/LargeAllocation.h"
 #include "core/Parallel.h"
 #include "mesh/MarchingCubesTable.h"
@@ -203,6 +204,13 @@ void checkOptions(const Volume& volume, const MarchingCubesOptions& o, glm::ivec
         throw Error("marching cubes: number of components to keep must not be negative");
     if (o.onlyComponentRank && *o.onlyComponentRank < 0)
         throw Error("marching cubes: component rank must not be negative");
+    if (o.onlyComponentNear)
+        for (int a = 0; a < 3; ++a)
+            if (!std::isfinite((*o.onlyComponentNear)[a]) ||
+                std::abs((*o.onlyComponentNear)[a]) > kMaxWorldMm)
+                throw Error("marching cubes: the point to keep the component nearest to must be "
+                            "finite, within 1e6 mm (got " +
+                            std::to_string((*o.onlyComponentNear)[a]) + ")");
     if (o.threads < 0) throw Error("marching cubes: thread count must not be negative");
     lo = o.roiMin.value_or(glm::ivec3(0));
     hi = o.roiMax.value_or(volume.dims - 1);

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "core/Error.h"
+#include "core/WorldLimits.h"
 
 namespace fm {
 
@@ -63,6 +64,13 @@ void Volume::validate(const std::string& what) const {
             fail(msg.str());
         }
         if (!std::isfinite(origin[a])) fail("origin is not finite");
+        // Finite but absurd (spacing 1e300) overflows the first world coordinate computed.
+        if (std::abs(origin[a]) > kMaxWorldMm || spacing[a] * dims[a] > kMaxWorldMm) {
+            std::ostringstream msg;
+            msg << "origin " << origin[a] << " mm or extent " << spacing[a] * dims[a]
+                << " mm along axis " << a << " is beyond " << kMaxWorldMm << " mm";
+            fail(msg.str());
+        }
     }
     // Orthonormal to a tolerance that accepts the 6-8 digits files store cosines with.
     constexpr double kDirectionTolerance = 1e-4;

@@ -173,6 +173,12 @@ TEST(ProjectionGeometry, RejectsNonFiniteAndMalformedText) {
     EXPECT_NE(messageOf("[1, 2").find("not valid JSON"), std::string::npos);
     EXPECT_NE(messageOf("{\"source\": [0, 0,").find("not valid JSON"), std::string::npos);
     EXPECT_NE(messageOf("").find("not valid JSON"), std::string::npos);
+    // Strict, as documented: a repeated key is ambiguous (nlohmann keeps the last silently).
+    std::string twice = kHandGeometry;
+    twice.replace(twice.find("\"source\""), 8, "\"source\": [1, 2, 3], \"source\"");
+    const std::string duplicate = messageOf(twice);
+    EXPECT_NE(duplicate.find("duplicate key"), std::string::npos) << duplicate;
+    EXPECT_NE(duplicate.find("test.json"), std::string::npos) << duplicate;
     // Validation of geometries built in code catches NaN too.
     fm::ProjectionGeometry g = fm::geometryFromJson(kHandGeometry);
     g.detector.origin.y = std::nan("");

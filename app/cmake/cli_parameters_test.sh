@@ -1,0 +1,38 @@
+#!/usr/bin/env bash
+# Parameters that used to be taken silently are refused, naming the option and the limit:
+# --budget 0, --polish-budget -1, --seed -1 (would wrap), --start / --pose / --distance / --film
+# 1e308, --component-near nan, --step 1e-9 and 1e-5 (work bounded), a geometry JSON with a
+# duplicate key or a source at 1e308. No output file is written for any of them.
+set -uo pipefail
+FM=$1
+OUT=$(mktemp -d)
+trap 'rm -rf "$OUT"' EXIT
+fail() { echo "FAIL: $*"; exit 1; }
+refused() {  # expected-fragment, command...
+    local fragment=$1; shift
+    local msg rc
+    msg=$("$@" 2>&1)
+    rc=$?
+    [ $rc -ne 0 ] || fail "accepted (exit 0): $*"
+    grep -qF -- "$fragment" <<<"$msg" || fail "refusal of '$*' does not say '$fragment': $msg"
+    [ -z "$(ls -A "$OUT" | grep -v '^g.*\.json$')" ] || fail "'$*' wrote $(ls -A "$OUT")"
+}
+refused "--budget: Value 0 not in range 1" "$FM" register --reference-pose 1,0,0,0,0,0 --budget 0
+refused "--polish-budget: Value -1 not in range 0" "$FM" register --reference-pose 1,0,0,0,0,0 --polish-budget -1
+refused "--seed: must be a whole number" "$FM" register --reference-pose 1,0,0,0,0,0 --seed -1
+refused "--seed: must be a whole number" "$FM" screenshot --seed -1 --out "$OUT/s.png"
+refused "--start: pose x offset 1e+308 mm is beyond" "$FM" register --reference-pose 1,0,0,0,0,0 --start 1e308,0,0,0,0,0
+refused "--component-near: must be a finite number" "$FM" mesh --component-near nan 0 0 --out "$OUT/m.obj"
+refused "pose x offset 1e+308 mm is beyond" "$FM" drr --pose 1e308,0,0,0,0,0 --out "$OUT/d.png"
+refused "source-to-isocenter distance must be positive and at most" "$FM" drr --distance 1e308 --out "$OUT/d.png"
+refused "film width must be positive and at most" "$FM" drr --film 1e308x1e308 --out "$OUT/d.png"
+refused "use a step of at least" "$FM" drr --mode approx --step 1e-9 --out "$OUT/d.png"
+refused "use a step of at least" "$FM" drr --mode approx --step 1e-5 --out "$OUT/d.png"
+"$FM" geometry --pose 0,0,0,0,0,0 --center 0,0,0 --out "$OUT/g.json" > /dev/null || fail "geometry exited $?"
+sed 's/"source": \[/"source": [1e308, 0, 0], "source": [/' "$OUT/g.json" > "$OUT/g-dup.json"
+refused "duplicate key" "$FM" drr --geometry "$OUT/g-dup.json" --out "$OUT/d.png"
+sed 's/"source": \[[^]]*\]/"source": [1e308, 0, 0]/' "$OUT/g.json" > "$OUT/g-far.json"
+refused '"source" must lie within' "$FM" drr --geometry "$OUT/g-far.json" --out "$OUT/d.png"
+sed 's/"spacing": \[[^]]*\]/"spacing": [1e300, 1e300]/' "$OUT/g.json" > "$OUT/g-wide.json"
+refused '"detector.spacing[0]" makes the film' "$FM" drr --geometry "$OUT/g-wide.json" --out "$OUT/d.png"
+echo PASS
