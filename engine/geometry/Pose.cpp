@@ -112,7 +112,7 @@ SceneSetup defaultSceneSetup() {
 }
 
 void validateSceneSetup(const SceneSetup& setup) {
-    // Positive, finite and at most a kilometre (core/WorldLimits.h): 1e308 is finite but its
+    // Positive, finite and at most kMaxWorldMm (core/WorldLimits.h): 1e308 is finite but its
     // arithmetic is not.
     auto positive = [](double v) { return std::isfinite(v) && v > 0.0 && v <= kMaxWorldMm; };
     const std::string range = " must be positive and at most " + formatNumber(kMaxWorldMm) +

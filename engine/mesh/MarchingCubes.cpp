@@ -209,7 +209,7 @@ void checkOptions(const Volume& volume, const MarchingCubesOptions& o, glm::ivec
             if (!std::isfinite((*o.onlyComponentNear)[a]) ||
                 std::abs((*o.onlyComponentNear)[a]) > kMaxWorldMm)
                 throw Error("marching cubes: the point to keep the component nearest to must be "
-                            "finite, within 1e6 mm (got " +
+                            "finite, within " + std::to_string(kMaxWorldMm) + " mm (got " +
                             std::to_string((*o.onlyComponentNear)[a]) + ")");
     if (o.threads < 0) throw Error("marching cubes: thread count must not be negative");
     lo = o.roiMin.value_or(glm::ivec3(0));

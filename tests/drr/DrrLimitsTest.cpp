@@ -1,5 +1,5 @@
 // Finite but absurd parameters: geometry whose arithmetic would overflow is refused before a
-// ray is traced, the largest accepted geometry still gives finite pixels (no NaN reaches an
+// ray is traced (core/WorldLimits.h), the largest accepted geometry still gives finite pixels (no NaN reaches an
 // output), and the work an approximate step implies is bounded with the limit named.
 #include <cmath>
 #include <functional>
@@ -58,7 +58,7 @@ TEST(DrrLimits, OverflowingGeometryIsRefusedByName) {
     wide.detector.origin = {0, 0, 10};
     EXPECT_NE(messageOf([&] { wide.validate("g"); }).find("detector.spacing[0]"),
               std::string::npos);
-    // The scene builder: distances, film and offsets beyond a kilometre.
+    // The scene builder: distances, film and offsets of 1e308.
     fm::SceneSetup s = fm::defaultSceneSetup();
     s.sourceToIsocenterMm = 1e308;
     EXPECT_NE(messageOf([&] { fm::validateSceneSetup(s); }).find("source-to-isocenter"),
@@ -70,22 +70,25 @@ TEST(DrrLimits, OverflowingGeometryIsRefusedByName) {
     p.offset.x = 1e308;
     EXPECT_NE(messageOf([&] { fm::validatePose(p); }).find("x offset"), std::string::npos);
     EXPECT_THROW(fm::sceneGeometry(p, fm::defaultSceneSetup(), glm::dvec3(0.0)), fm::Error);
-    // A volume whose spacing would put its far corner beyond a kilometre.
+    // A volume whose spacing would put its far corner at 1e300 mm.
     fm::Volume v = cube();
     v.spacing.y = 1e300;
     EXPECT_NE(messageOf([&] { v.validate("ct"); }).find("axis 1"), std::string::npos);
 }
 
 TEST(DrrLimits, LargestAcceptedGeometryGivesFinitePixels) {
-    // Source a kilometre away, a kilometre-wide film of 16383 pixels: every figure at its
-    // limit, and every pixel a finite number.
+    // Source at the limit, a film as wide as the limit in 16383 pixels: every figure at its
+    // limit, and every pixel a finite number (double still resolves ~0.1 mm out there).
     const auto prepared = fm::prepareDrrVolume(cube(), raw());
-    fm::ProjectionGeometry g = headOn(fm::kMaxWorldMm, {16383, 1}, fm::kMaxWorldMm / 16384);
-    g.validate("limit");
-    const fm::Image image = fm::renderDrr(*prepared, g, {});
-    for (float px : image.pixels) ASSERT_TRUE(std::isfinite(px));
-    // The central ray (pixel 8191 is at x = 0) crosses 8 mm of ones along z.
-    EXPECT_NEAR(image.at(8191, 0), 8.0, 1e-3);
+    for (double distance : {1e6, fm::kMaxWorldMm}) {
+        fm::ProjectionGeometry g = headOn(distance, {16383, 1}, distance / 16384);
+        g.validate("limit");
+        const fm::Image image = fm::renderDrr(*prepared, g, {});
+        for (float px : image.pixels) ASSERT_TRUE(std::isfinite(px)) << distance;
+        // The central ray (pixel 8191 is at x = 0) crosses 8 mm of ones along z; at 1e15 mm
+        // the ray parameter's rounding (1e15 * 2^-52 = 0.2 mm) bounds the accuracy.
+        EXPECT_NEAR(image.at(8191, 0), 8.0, distance * 1e-15) << distance;
+    }
 
     fm::SceneSetup s = fm::defaultSceneSetup();
     s.sourceToIsocenterMm = s.isocenterToFilmMm = fm::kMaxWorldMm / 2;

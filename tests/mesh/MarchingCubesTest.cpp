@@ -314,7 +314,7 @@ TEST(MarchingCubes, ComponentsAreLabelledKeptAndPicked) {
     EXPECT_EQ(smallest.components, 1u);
     EXPECT_NEAR(smallest.volume, sphereVolume(3), sphereVolume(3) * curvedSurfaceTolerance(1, 3));
 
-    // A point that is not one (NaN, or beyond a kilometre) is refused, not "nearest" to anything.
+    // A point that is not one (NaN, or beyond kMaxWorldMm) is refused, not "nearest" to anything.
     o.onlyComponentNear = glm::dvec3(std::nan(""), 0.0, 0.0);
     EXPECT_THROW(fm::marchingCubes(v, o), fm::Error);
     o.onlyComponentNear = glm::dvec3(0.0, 1e308, 0.0);
