@@ -9,6 +9,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/CommandRegistry.h"
+#include "cli/UsageHints.h"
 #include "core/Error.h"
 #include "distributed/ProcessTransport.h"
 
@@ -31,21 +32,36 @@ int main(int argc, char** argv) {
     std::vector<char*> argvOut;
     for (auto& a : args) argvOut.push_back(a.data());
 
+    // Exit codes (README): 0 done, 1 bad input or a failed step, 2 the command line did not
+    // parse, 3 internal error.
     try {
         app.parse(static_cast<int>(argvOut.size()), argvOut.data());
-    } catch (const CLI::ParseError& e) {
+    } catch (const CLI::CallForHelp& e) {
         return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForVersion& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        const std::vector<std::string> hints = fm::cli::usageHints(app, args);
+        if (hints.empty()) {
+            app.exit(e);  // CLI11's message and "Run with --help"
+        } else {
+            for (const std::string& h : hints) std::cerr << "fluoromatch: " << h << "\n";
+            std::cerr << "Run with --help for more information.\n";
+        }
+        return fm::cli::kExitUsage;
     } catch (const fm::distributed::JobsFailed& e) {
         std::cerr << "fluoromatch: error: " << e.what() << "\n";
-        return 1;  // every rank has finished: end normally
+        return fm::cli::kExitError;  // every rank has finished: end normally
     } catch (const fm::Error& e) {
         std::cerr << "fluoromatch: error: " << e.what() << "\n";
-        fm::distributed::endRunAfterError(1);
-        return 1;
+        fm::distributed::endRunAfterError(fm::cli::kExitError);
+        return fm::cli::kExitError;
     } catch (const std::exception& e) {
         std::cerr << "fluoromatch: internal error: " << e.what() << "\n";
-        fm::distributed::endRunAfterError(2);
-        return 2;
+        fm::distributed::endRunAfterError(fm::cli::kExitInternal);
+        return fm::cli::kExitInternal;
     }
-    return 0;
+    return fm::cli::kExitOk;
 }

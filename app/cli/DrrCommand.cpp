@@ -1,6 +1,7 @@
-// `fluoromatch drr`: render one DRR of a volume for a pose (the 2011 six-parameter scene) or a
-// general projection geometry (JSON), write it as a windowed PNG for viewing and optionally as
-// a float32 .mha with the exact values, and print how long each step took.
+// `fluoromatch drr`: render DRRs of a volume for a pose (the 2011 six-parameter scene), a
+// general projection geometry (JSON), a list of views (--poses) or an azimuth sweep (--angles),
+// write each as a windowed image for viewing (format by extension) and optionally the exact
+// values, and print how long each step took. The volume is loaded and prepared once.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -17,8 +18,10 @@
 #include "core/Error.h"
 #include "core/Parallel.h"
 #include "drr/Drr.h"
-#include "io/PngWriter.h"
-#include "io/VolumeWriter.h"
+#include "cli/ValuesChoice.h"
+#include "drr/DrrBatch.h"
+#include "io/ImageFileWriter.h"
+#include "io/OutputPath.h"
 #include "volume/VolumeSource.h"
 
 namespace {
@@ -27,7 +30,10 @@ struct DrrArgs {
     fm::cli::SceneOptions scene;
     fm::cli::BoneOptions bones;
     std::string volume = fm::kDefaultVolumeSpec;
-    std::string values = "mu";
+    std::string values = "auto";
+    std::string posesFile;
+    int angles = 0;
+    std::optional<double> angleStep;
     std::optional<double> thresholdHU;
     bool intensity = false;
     std::string mode = "exact";
@@ -72,7 +78,44 @@ Window footprintWindow(const std::vector<float>& values) {
     return w;
 }
 
-void runDrr(const DrrArgs& a) {
+// Rays that all miss the volume give an all-zero image: say so, it is not a picture.
+void warnIfEmpty(const fm::Image& image, const std::string& what) {
+    for (float v : image.pixels)
+        if (v != 0.0f) return;
+    std::fprintf(stderr,
+                 "fluoromatch: warning: %s is all zero: no ray meets the volume (is the volume "
+                 "off the film? check the pose or geometry)\n",
+                 what.c_str());
+}
+
+// The viewing image (windowed) and the exact values, each if asked for. Returns the window
+// used for the viewing image.
+Window writeOutputs(const fm::Image& image, const std::filesystem::path& out,
+                    const std::filesystem::path& raw, bool intensity) {
+    Window w;
+    if (!out.empty()) {
+        // Viewing: bone bright, as on a radiograph. Line integrals already are (more
+        // attenuation = larger); intensities exp(-integral) are shown as 1 - intensity, the
+        // fraction absorbed, which blackens the empty background and whitens bone.
+        fm::Image display = image;
+        if (intensity)
+            for (float& v : display.pixels) v = 1.0f - v;
+        w = footprintWindow(display.pixels);
+        // Rays that carry nothing (exactly 0: they miss the volume) stay black, also for raw
+        // values whose window lies below 0.
+        for (float& v : display.pixels)
+            if (v == 0.0f) v = static_cast<float>(w.low);
+        // A volume format (.mha, .nii) gets the exact values instead of the windowed ones.
+        fm::writeViewImage(fm::imageFileFormat(out, "--out") == fm::ImageFileFormat::Volume
+                               ? image
+                               : display,
+                           out, static_cast<float>(w.low), static_cast<float>(w.high));
+    }
+    if (!raw.empty()) fm::writeExactImage(image, raw);
+    return w;
+}
+
+void checkArgs(const DrrArgs& a, bool batch) {
     if (a.out.empty() && a.raw.empty())
         throw fm::Error("nothing to write: give --out drr.png and/or --raw drr.mha");
     if (a.repeat < 1 || a.repeat > 10000)
@@ -82,11 +125,35 @@ void runDrr(const DrrArgs& a) {
         throw fm::Error("--step must be a positive number of mm");
     if (a.thresholdHU && !std::isfinite(*a.thresholdHU))
         throw fm::Error("--threshold must be a finite number");
+    if (!a.posesFile.empty() && (a.angles > 0 || !a.scene.pose.empty() ||
+                                 a.scene.usesGeometryFile()))
+        throw fm::Error("--poses lists the views: it excludes --pose, --geometry and --angles");
+    if (a.angles > 0 && a.scene.usesGeometryFile())
+        throw fm::Error("--angles sweeps the azimuth of --pose, not a --geometry file");
+    if (a.angles < 0) throw fm::Error("--angles must be a number of views (1 or more)");
+    if (a.angleStep && a.angles == 0)
+        throw fm::Error("--angle-step needs --angles N (the number of views)");
+    if (batch && a.repeat != 1) throw fm::Error("--repeat times one view; not with a batch");
+    // Formats and folders before any work: a long run must not end in "cannot write".
+    if (!a.out.empty()) fm::imageFileFormat(a.out, "--out");
+    if (!a.raw.empty()) fm::checkExactImagePath(a.raw, "--raw");
+    fm::io::checkOutputPath(a.out, "--out");
+    fm::io::checkOutputPath(a.raw, "--raw");
+}
 
+void runDrr(const DrrArgs& a) {
+    const bool batch = !a.posesFile.empty() || a.angles > 0;
+    checkArgs(a, batch);
     if (a.intensity && a.values == "raw")
         std::fprintf(stderr,
                      "fluoromatch: note: --intensity with --values raw is exp(-value * mm), "
                      "only a transmitted fraction when the values are attenuations in 1/mm\n");
+    // The views, read before the volume: a bad list fails at once.
+    std::vector<fm::DrrView> views;
+    if (!a.posesFile.empty()) views = fm::readDrrViews(a.posesFile);
+    if (a.angles > 0)
+        views = fm::azimuthSweep(fm::cli::poseFrom(a.scene), a.angles,
+                                 a.angleStep.value_or(360.0 / a.angles));
 
     auto start = std::chrono::steady_clock::now();
     // With --bone / --without the image is that of a part of the CT, seen by the camera the
@@ -94,11 +161,12 @@ void runDrr(const DrrArgs& a) {
     const fm::cli::BoneChoice choice = fm::cli::chooseBone(a.bones, fm::loadVolume(a.volume));
     const fm::Volume& volume = choice.volume;
     const double loadMs = msSince(start);
-    const fm::ProjectionGeometry geometry = fm::cli::geometryFrom(a.scene, choice.ctCenter);
-    geometry.validate(a.scene.usesGeometryFile() ? a.scene.geometry : "scene geometry");
+    std::printf("volume    %s (%d x %d x %d voxels, loaded in %.1f ms)\n", a.volume.c_str(),
+                volume.dims.x, volume.dims.y, volume.dims.z, loadMs);
+    if (!choice.describe.empty()) std::printf("bone      %s\n", choice.describe.c_str());
 
     fm::DrrValueOptions valueOptions;
-    valueOptions.values = a.values == "raw" ? fm::DrrValues::Raw : fm::DrrValues::Mu;
+    valueOptions.values = fm::cli::reportValues(volume, a.values);
     valueOptions.thresholdHU = a.thresholdHU;
     valueOptions.threads = a.threads;
     start = std::chrono::steady_clock::now();
@@ -112,6 +180,38 @@ void runDrr(const DrrArgs& a) {
     renderOptions.threads = a.threads;
     renderOptions.skipEmptySpace = !a.noSkip;
 
+    const int threads = a.threads == 0 ? fm::defaultThreadCount() : a.threads;
+    std::printf("render    %s, %s", a.intensity ? "intensity exp(-integral)" : "line integral",
+                a.mode.c_str());
+    if (a.thresholdHU) std::printf(", threshold %g", *a.thresholdHU);
+    if (a.mode == "approx") std::printf(" (step %g mm)", a.stepMm);
+    if (a.noSkip) std::printf(", no empty-space skipping");
+    std::printf(", %d thread%s\n", threads, threads == 1 ? "" : "s");
+    std::printf("prepare   %.2f ms\n", prepareMs);
+
+    if (batch) {
+        // One prepared volume, an indexed list of jobs (engine/drr/DrrBatch).
+        const std::vector<fm::DrrJob> jobs =
+            fm::makeDrrJobs(views, fm::cli::sceneSetupFrom(a.scene), choice.ctCenter,
+                            a.scene.downsample, a.out, a.raw);
+        std::printf("views     %zu (%s)\n", jobs.size(),
+                    a.posesFile.empty() ? "azimuth sweep" : a.posesFile.c_str());
+        for (const fm::DrrJob& job : jobs) {
+            start = std::chrono::steady_clock::now();
+            const fm::Image image = fm::renderDrr(*prepared, job.geometry, renderOptions);
+            const double ms = msSince(start);
+            warnIfEmpty(image, "view " + std::to_string(job.index) + " (" + job.origin + ")");
+            writeOutputs(image, job.output, job.rawOutput, a.intensity);
+            std::printf("wrote     %s%s%s (%s, %.2f ms)\n", job.output.c_str(),
+                        job.output.empty() || job.rawOutput.empty() ? "" : " ",
+                        job.rawOutput.c_str(), job.origin.c_str(), ms);
+        }
+        return;
+    }
+
+    const fm::ProjectionGeometry geometry = fm::cli::geometryFrom(a.scene, choice.ctCenter);
+    geometry.validate(a.scene.usesGeometryFile() ? a.scene.geometry : "scene geometry");
+    std::printf("geometry  %s\n", fm::cli::describeGeometrySource(a.scene).c_str());
     fm::Image image;
     std::vector<double> times;
     for (int i = 0; i < a.repeat; ++i) {
@@ -123,25 +223,11 @@ void runDrr(const DrrArgs& a) {
     std::sort(sorted.begin(), sorted.end());
     double mean = 0.0;
     for (double t : times) mean += t / times.size();
-
     float minValue = INFINITY, maxValue = -INFINITY;
     for (float v : image.pixels) {
         minValue = std::min(minValue, v);
         maxValue = std::max(maxValue, v);
     }
-    const int threads = a.threads == 0 ? fm::defaultThreadCount() : a.threads;
-    std::printf("volume    %s (%d x %d x %d voxels, loaded in %.1f ms)\n", a.volume.c_str(),
-                volume.dims.x, volume.dims.y, volume.dims.z, loadMs);
-    if (!choice.describe.empty()) std::printf("bone      %s\n", choice.describe.c_str());
-    std::printf("geometry  %s\n", fm::cli::describeGeometrySource(a.scene).c_str());
-    std::printf("values    %s", a.values == "raw" ? "raw (value * mm)" : "mu (HU -> 1/mm)");
-    if (a.thresholdHU) std::printf(", threshold %g HU", *a.thresholdHU);
-    std::printf(", %s, %s", a.intensity ? "intensity exp(-integral)" : "line integral",
-                a.mode.c_str());
-    if (a.mode == "approx") std::printf(" (step %g mm)", a.stepMm);
-    if (a.noSkip) std::printf(", no empty-space skipping");
-    std::printf(", %d thread%s\n", threads, threads == 1 ? "" : "s");
-    std::printf("prepare   %.2f ms\n", prepareMs);
     if (a.repeat == 1)
         std::printf("render    %.2f ms\n", times[0]);
     else
@@ -149,27 +235,12 @@ void runDrr(const DrrArgs& a) {
                     a.repeat, sorted[sorted.size() / 2], mean);
     std::printf("image     %d x %d pixels, %.4g x %.4g mm, values %.6g .. %.6g\n", image.width,
                 image.height, image.spacing.x, image.spacing.y, minValue, maxValue);
-
-    if (!a.out.empty()) {
-        // Viewing: bone bright, as on a radiograph. Line integrals already are (more
-        // attenuation = larger); intensities exp(-integral) are shown as 1 - intensity, the
-        // fraction absorbed, which blackens the empty background and whitens bone.
-        fm::Image display = image;
-        if (a.intensity)
-            for (float& v : display.pixels) v = 1.0f - v;
-        const Window w = footprintWindow(display.pixels);
-        // Rays that carry nothing (exactly 0: they miss the volume) stay black, also for raw
-        // values whose window lies below 0.
-        for (float& v : display.pixels)
-            if (v == 0.0f) v = static_cast<float>(w.low);
-        fm::writePng(display, a.out, static_cast<float>(w.low), static_cast<float>(w.high));
+    warnIfEmpty(image, "the DRR");
+    const Window w = writeOutputs(image, a.out, a.raw, a.intensity);
+    if (!a.out.empty())
         std::printf("wrote     %s (window %.6g .. %.6g%s)\n", a.out.c_str(), w.low, w.high,
                     a.intensity ? " of 1 - intensity" : "");
-    }
-    if (!a.raw.empty()) {
-        fm::writeImage(image, a.raw);
-        std::printf("wrote     %s (exact values, row 0 first)\n", a.raw.c_str());
-    }
+    if (!a.raw.empty()) std::printf("wrote     %s (exact values, row 0 first)\n", a.raw.c_str());
 }
 
 FM_REGISTER_COMMAND("drr", 20, [](CLI::App& app) {
@@ -179,10 +250,15 @@ FM_REGISTER_COMMAND("drr", 20, [](CLI::App& app) {
     fm::cli::addVolumeOption(cmd, a->volume);
     fm::cli::addSceneOptions(cmd, a->scene);
     fm::cli::addBoneOptions(cmd, a->bones);
-    cmd->add_option("--values", a->values,
-                    "mu: HU converted to attenuation (1/mm); raw: the stored values as they are")
-        ->check(CLI::IsMember({"raw", "mu"}))
-        ->capture_default_str();
+    fm::cli::addValuesOption(cmd, a->values);
+    cmd->add_option("--poses", a->posesFile,
+                    "Many views in one run: a file with one pose \"x y z az el rot\" or one "
+                    "geometry JSON per line; outputs numbered (drr_000.png, ...)");
+    cmd->add_option("--angles", a->angles,
+                    "Azimuth sweep from --pose: this many views (plastimatch drr -a); outputs "
+                    "numbered");
+    cmd->add_option("--angle-step", a->angleStep,
+                    "Degrees between the views of --angles (plastimatch drr -N; default 360 / N)");
     cmd->add_option("--threshold", a->thresholdHU,
                     "Ignore voxels whose stored value is below this (HU): bone-only images");
     cmd->add_flag("--intensity", a->intensity,
@@ -201,9 +277,11 @@ FM_REGISTER_COMMAND("drr", 20, [](CLI::App& app) {
     cmd->add_flag("--no-skip", a->noSkip,
                   "Plain traversal of every voxel and pixel, without empty-space skipping (to "
                   "check that skipping changes nothing)");
-    cmd->add_option("--out", a->out, "PNG to write, windowed for viewing");
+    cmd->add_option("--out", a->out,
+                    "Image for viewing, windowed, in the format its name ends in: .png, .jpg, "
+                    ".tif (8-bit), or .mha/.nii (the exact values)");
     cmd->add_option("--raw", a->raw,
-                    "Float32 image with the exact values and the detector spacing (.mha)");
+                    "The exact values as float32: .mha/.nii (with the detector spacing) or .tif");
     cmd->callback([a] { runDrr(*a); });
     return cmd;
 });

@@ -1,5 +1,7 @@
 #include "cli/SearchCli.h"
 
+#include "cli/ValuesChoice.h"
+
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -57,9 +59,7 @@ void addSearchOptions(CLI::App* cmd, SearchArgs& a, bool withMethod) {
     cmd->add_option("--threads", a.threads, "Threads (0 = all cores)")->capture_default_str();
     cmd->add_option("--polish", a.polish, "Local refinement per level: nm (Nelder-Mead) or cmaes")
         ->capture_default_str();
-    cmd->add_option("--values", a.values,
-                    "DRR values: mu (HU converted to attenuation) or raw (as stored)")
-        ->capture_default_str();
+    addValuesOption(cmd, a.values);
 }
 
 RegistrationSettings registrationSettings(const SearchArgs& a) {
@@ -107,10 +107,8 @@ std::string describeLevels(const RegistrationSettings& s) {
 }
 
 DrrVolumePtr prepareForSearch(const Volume& volume, const std::string& values) {
-    if (values != "mu" && values != "raw")
-        throw Error("--values must be mu or raw, got \"" + values + "\"");
     DrrValueOptions options;
-    options.values = values == "raw" ? DrrValues::Raw : DrrValues::Mu;
+    options.values = reportValues(volume, values);
     return prepareDrrVolume(volume, options);
 }
 

@@ -21,9 +21,8 @@ struct SearchArgs {
     std::string levels;     // e.g. "4,2" (empty = the default)
     std::string radius;     // "t" or "u,v,depth,az,el,rot" (empty = the default)
     int threads = 0;
-    std::string values = "mu";
-    std::string polish = "nm";  // local refinement method  // how voxel values become attenuation:
-                                // mu (HU -> 1/mm) or raw
+    std::string values = "auto";  // auto (as the app: HU -> mu, else raw), mu or raw
+    std::string polish = "nm";    // local refinement method
 };
 
 // --method, --similarity, --seed, --budget, --polish-budget, --levels, --radius, --threads,
@@ -33,8 +32,9 @@ void addSearchOptions(CLI::App* cmd, SearchArgs& args, bool withMethod = true);
 RegistrationSettings registrationSettings(const SearchArgs& args);
 std::string describeLevels(const RegistrationSettings& settings);
 
-// "mu": HU converted to attenuation (what a CT needs; air becomes 0); "raw": values as stored.
-DrrVolumePtr prepareForSearch(const Volume& volume, const std::string& values = "mu");
+// "auto": decided by the unit detection (cli/ValuesChoice, printed); "mu": HU converted to
+// attenuation (what a CT needs; air becomes 0); "raw": values as stored.
+DrrVolumePtr prepareForSearch(const Volume& volume, const std::string& values = "auto");
 // A full-resolution line-integral DRR (the synthetic reference).
 Image renderReference(const DrrVolume& volume, const ProjectionGeometry& geometry, int threads = 0);
 // .png (8 or 16 bit, grey or colour: converted to grey) or a 2-D MetaImage/NIfTI/NRRD file.

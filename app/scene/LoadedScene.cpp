@@ -9,6 +9,7 @@
 #include "core/Error.h"
 #include "match/PoseError.h"
 #include "mesh/MarchingCubes.h"
+#include "volume/ValueUnitGuess.h"
 #include "volume/VolumeSource.h"
 #include "volume/VolumeStats.h"
 
@@ -32,11 +33,7 @@ double boneIsoValue(const Volume& volume) {
 }  // namespace
 
 bool looksLikeHounsfield(const Volume& volume) {
-    if (volume.meta.units == ValueUnit::HounsfieldUnits) return true;
-    if (volume.meta.units != ValueUnit::Unknown) return false;
-    // Many files do not say (NIfTI without scl_slope): air at about -1000 in at least 1% of
-    // the voxels is the mark of HU; no other common CT scale goes that far below zero.
-    return computeStats(volume, {1}).percentiles[0] <= -900.0;
+    return guessHounsfield(volume).hounsfield;  // the CLI's rule too (engine/volume)
 }
 
 DrrValueOptions appDrrValueOptions(const Volume& volume) {

@@ -10,6 +10,7 @@
 #include "core/Error.h"
 #include "io/AtomicFile.h"
 #include "io/ByteSource.h"
+#include "io/ImageFileWriter.h"
 
 namespace fm {
 
@@ -36,18 +37,7 @@ void writePng(const Image& image, const std::filesystem::path& path, float low, 
         throw Error(what + ": the image is empty or its pixel count does not match its size");
     if (!std::isfinite(low) || !std::isfinite(high) || !(high > low))
         throw Error(what + ": the grey window must be finite with high > low");
-    std::vector<std::uint8_t> grey(image.pixels.size());
-    const double range = static_cast<double>(high) - low;
-    for (std::size_t n = 0; n < grey.size(); ++n) {
-        const float v = image.pixels[n];
-        if (std::isnan(v)) {
-            grey[n] = 0;
-            continue;
-        }
-        // Fraction first, then 255: the window's midpoint maps to 127.5 exactly, rounding to 128.
-        const double g = std::round((static_cast<double>(v) - low) / range * 255.0);
-        grey[n] = static_cast<std::uint8_t>(g < 0.0 ? 0.0 : g > 255.0 ? 255.0 : g);
-    }
+    const std::vector<std::uint8_t> grey = windowToGrey8(image, low, high);
     io::writeFileAtomically(path, encodePng(grey.data(), image.width, image.height, 1, image.width));
 }
 

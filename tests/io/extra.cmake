@@ -7,3 +7,6 @@ find_library(FM_ZNZ_LIBRARY znz REQUIRED)
 find_path(FM_NIFTI_INCLUDE_DIR nifti1_io.h PATH_SUFFIXES nifti REQUIRED)
 target_include_directories(fm_test_io SYSTEM PRIVATE ${FM_NIFTI_INCLUDE_DIR})
 target_link_libraries(fm_test_io PRIVATE ZLIB::ZLIB stb ${FM_NIFTIIO_LIBRARY} ${FM_ZNZ_LIBRARY} m)
+# TIFF files written by io/ImageFileWriter are decoded with libtiff (libtiff-dev), independently.
+find_package(TIFF REQUIRED)
+target_link_libraries(fm_test_io PRIVATE TIFF::TIFF)
