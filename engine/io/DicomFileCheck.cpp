@@ -82,6 +82,10 @@ class Walker {
 
     std::string problem;
     std::string transferSyntax;
+    // Filled by the top-level walk (see DicomFileCheck).
+    bool hasPixelData = false, encapsulated = false;
+    std::size_t pixelDataLength = 0, firstFragmentOffset = 0, firstFragmentLength = 0;
+    std::size_t pixelDataEnd = 0;  // byte after the top-level pixel data element
 
     std::uint16_t u16(std::size_t at, bool bigEndian) const {
         return bigEndian ? std::uint16_t((data_[at] << 8) | data_[at + 1])
@@ -170,6 +174,8 @@ class Walker {
             if (length == kUndefinedLength) {
                 if (isPixelData && depth == 0) {
                     if (!fragments(pos, end, enc)) return false;
+                    hasPixelData = encapsulated = true;
+                    pixelDataEnd = pos;
                     continue;
                 }
                 if (enc.explicitVr && !isSq && !isUn)
@@ -193,6 +199,11 @@ class Walker {
                 if (!sequence(inner, pos + length, enc, false, depth + 1)) return false;
             }
             pos += length;
+            if (isPixelData && depth == 0) {
+                hasPixelData = true;
+                pixelDataLength = length;
+                pixelDataEnd = pos;
+            }
         }
         if (toDelimiter) return fail(pos, "item delimiter missing");
         return true;
@@ -239,6 +250,10 @@ class Walker {
             if (group != 0xfffe || element != 0xe000 || length == kUndefinedLength)
                 return fail(pos - 8, "expected a pixel data fragment");
             if (length > end - pos) return fail(pos - 8, "pixel data fragment runs past the end");
+            if (items == 1) {  // item 0 is the basic offset table
+                firstFragmentOffset = pos;
+                firstFragmentLength = length;
+            }
             pos += length;
             ++items;
         }
@@ -283,15 +298,31 @@ DicomFileCheck checkDicomBytes(const unsigned char* data, std::size_t size) {
         check.problem = "no data set after the file meta group";
         return check;
     }
-    if (!walker.dataSet(pos, size, enc, false, 0)) {
+    bool ok = walker.dataSet(pos, size, enc, false, 0);
+    if (!ok && walker.hasPixelData) {
+        // Bytes after the pixel data that are not elements (zero padding, scanner leftovers):
+        // legal in practice. The content ends with the pixel data; the rest is ignored.
+        check.contentBytes = walker.pixelDataEnd;
+        check.trailingBytes = size - walker.pixelDataEnd;
+        ok = true;
+    } else {
+        check.contentBytes = size;
+    }
+    if (!ok) {
         check.problem = walker.problem;
         return check;
     }
+    check.hasPixelData = walker.hasPixelData;
+    check.encapsulated = walker.encapsulated;
+    check.pixelDataLength = walker.pixelDataLength;
+    check.firstFragmentOffset = walker.firstFragmentOffset;
+    check.firstFragmentLength = walker.firstFragmentLength;
     check.wellFormed = true;
     return check;
 }
 
-DicomFileCheck checkDicomFile(const std::filesystem::path& file) {
+DicomFileCheck checkDicomFile(const std::filesystem::path& file,
+                              std::vector<unsigned char>* content) {
     std::ifstream in(file, std::ios::binary);
     DicomFileCheck check;
     if (!in) {
@@ -311,9 +342,11 @@ DicomFileCheck checkDicomFile(const std::filesystem::path& file) {
     }
     in.clear();
     in.seekg(0);
-    const std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)),
-                                           std::istreambuf_iterator<char>());
-    return checkDicomBytes(bytes.data(), bytes.size());
+    std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)),
+                                     std::istreambuf_iterator<char>());
+    DicomFileCheck result = checkDicomBytes(bytes.data(), bytes.size());
+    if (content) *content = std::move(bytes);
+    return result;
 }
 
 }  // namespace fm

@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace fm {
 
@@ -15,10 +16,28 @@ struct DicomFileCheck {
     bool wellFormed = false;  // every element fits in its container, in the declared encoding
     std::string transferSyntax;
     std::string problem;  // why it is not well formed (with a byte offset)
+
+    // Where the top-level pixel data (7FE0,0010) is, as the walk found it (lengths checked
+    // against the file): native data has `pixelDataLength` bytes; encapsulated data has its
+    // first image fragment (after the offset table) at `firstFragmentOffset`, of
+    // `firstFragmentLength` bytes. The readers check image sizes against these before GDCM
+    // allocates anything.
+    bool hasPixelData = false;
+    bool encapsulated = false;
+    std::size_t pixelDataLength = 0;
+    std::size_t firstFragmentOffset = 0, firstFragmentLength = 0;
+
+    // Bytes after the last element that do not form elements (zero padding after the pixel
+    // data, as some scanners write): legal in practice, ignored. `contentBytes` is where the
+    // well-formed content ends; only that prefix is handed to GDCM.
+    std::size_t contentBytes = 0;
+    std::size_t trailingBytes = 0;
 };
 
-// Reads `file` and checks its structure. Never throws for bad content (only reports).
-DicomFileCheck checkDicomFile(const std::filesystem::path& file);
+// Reads `file` and checks its structure. Never throws for bad content (only reports). When
+// `bytes` is given it receives the file's content (so the caller need not read it again).
+DicomFileCheck checkDicomFile(const std::filesystem::path& file,
+                              std::vector<unsigned char>* bytes = nullptr);
 
 // The same on bytes in memory (for tests).
 DicomFileCheck checkDicomBytes(const unsigned char* data, std::size_t size);

@@ -20,7 +20,44 @@ namespace {
 // the conventional "air" floor of CT numbers.
 constexpr float kHounsfieldAir = -1024.0f;
 
-std::vector<DicomSeries> scanFolder(const std::filesystem::path& folder, int threads) {
+// Files skipped as "not a DICOM image" that look like lost slices: empty, or named like the
+// slices (the slices' common name prefix and the same name length). A README or licence is not.
+std::vector<std::string> suspectSkippedFiles(const std::vector<std::filesystem::path>& files,
+                                             const std::vector<bool>& isSlice) {
+    std::string prefix;
+    std::vector<std::size_t> lengths;
+    bool first = true;
+    for (std::size_t f = 0; f < files.size(); ++f) {
+        if (!isSlice[f]) continue;
+        const std::string name = files[f].filename().string();
+        lengths.push_back(name.size());
+        if (first) {
+            prefix = name;
+            first = false;
+        } else {
+            std::size_t common = 0;
+            while (common < prefix.size() && common < name.size() && prefix[common] == name[common])
+                ++common;
+            prefix.resize(common);
+        }
+    }
+    std::vector<std::string> suspects;
+    for (std::size_t f = 0; f < files.size(); ++f) {
+        if (isSlice[f]) continue;
+        const std::string name = files[f].filename().string();
+        std::error_code ec;
+        const bool empty = std::filesystem::file_size(files[f], ec) == 0 && !ec;
+        const bool namedLikeASlice =
+            !prefix.empty() && name.rfind(prefix, 0) == 0 &&
+            std::find(lengths.begin(), lengths.end(), name.size()) != lengths.end();
+        if (empty || namedLikeASlice)
+            suspects.push_back("'" + name + "' (" + (empty ? "empty" : "not readable DICOM") + ")");
+    }
+    return suspects;
+}
+
+std::vector<DicomSeries> scanFolder(const std::filesystem::path& folder, int threads,
+                                    std::vector<std::string>* suspects = nullptr) {
     const std::string what = folder.string();
     std::error_code ec;
     if (!std::filesystem::exists(folder, ec)) throw Error(what + ": folder does not exist");
@@ -57,6 +94,9 @@ std::vector<DicomSeries> scanFolder(const std::filesystem::path& folder, int thr
     });
     for (const auto& message : errors)
         if (!message.empty()) throw Error(message);
+    std::vector<bool> isSlice(files.size());
+    for (std::size_t f = 0; f < files.size(); ++f) isSlice[f] = slots[f].has_value();
+    if (suspects) *suspects = suspectSkippedFiles(files, isSlice);
     std::vector<DicomSliceHeader> headers;
     for (auto& slot : slots)
         if (slot) headers.push_back(std::move(*slot));
@@ -88,7 +128,8 @@ Volume readDicomSeries(const std::filesystem::path& folder) {
 
 Volume readDicomSeries(const std::filesystem::path& folder, const DicomReadOptions& options) {
     const std::string what = folder.string();
-    std::vector<DicomSeries> all = scanFolder(folder, options.threads);
+    std::vector<std::string> suspects;
+    std::vector<DicomSeries> all = scanFolder(folder, options.threads, &suspects);
 
     std::size_t chosen = 0;
     if (!options.seriesInstanceUid.empty()) {
@@ -109,6 +150,28 @@ Volume readDicomSeries(const std::filesystem::path& folder, const DicomReadOptio
 
     const DicomStackPlan plan = planDicomStack(series, what);
     const std::size_t n = plan.order.size();
+    // A slice file that could not be read, and a stack with a gap: the gap is that slice.
+    // Resampling would fill it by interpolation, inventing data; refused, naming both.
+    if (!suspects.empty() && plan.resampled && n >= 2) {
+        std::size_t widest = 1;
+        for (std::size_t k = 2; k < n; ++k)
+            if (plan.positionAlongNormal[k] - plan.positionAlongNormal[k - 1] >
+                plan.positionAlongNormal[widest] - plan.positionAlongNormal[widest - 1])
+                widest = k;
+        std::ostringstream msg;
+        msg << what << ": ";
+        for (std::size_t s = 0; s < suspects.size(); ++s) msg << (s ? ", " : "") << suspects[s];
+        msg << (suspects.size() == 1 ? " looks like a slice of the series but was skipped"
+                                     : " look like slices of the series but were skipped")
+            << ", and the stack has a gap of "
+            << plan.positionAlongNormal[widest] - plan.positionAlongNormal[widest - 1]
+            << " mm between "
+            << series.slices[plan.order[widest - 1]].file.filename().string() << " and "
+            << series.slices[plan.order[widest]].file.filename().string()
+            << ": refusing to fill it by interpolation (restore the slice, or remove the file to "
+               "load the rest resampled)";
+        throw Error(msg.str());
+    }
 
     const DicomSliceHeader& first = series.slices.front();
     const bool hounsfield = isHounsfield(first);

@@ -6,6 +6,7 @@
 #include <gdcmSequenceOfFragments.h>
 #include <gdcmTrace.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -145,10 +146,74 @@ void silenceGdcmTrace() {
     });
 }
 
+namespace {
+
+std::uint32_t bigEndian32(const unsigned char* p) {
+    return (std::uint32_t(p[0]) << 24) | (std::uint32_t(p[1]) << 16) | (std::uint32_t(p[2]) << 8) |
+           std::uint32_t(p[3]);
+}
+
+// The SIZ marker of a JPEG 2000 code stream (ISO 15444-1 A.5.1) against the DICOM header.
+void checkJpeg2000Size(const DicomSliceHeader& h, const unsigned char* data, std::size_t size) {
+    // The code stream starts with SOC (FF4F) then SIZ (FF51); a JP2 file wrapper puts boxes
+    // first, so the pair is searched near the start of the fragment.
+    const std::size_t searchEnd = std::min<std::size_t>(size, 4096);
+    std::size_t at = 0;
+    while (at + 4 <= searchEnd &&
+           !(data[at] == 0xff && data[at + 1] == 0x4f && data[at + 2] == 0xff && data[at + 3] == 0x51))
+        ++at;
+    if (at + 4 > searchEnd) fail(h.file, "JPEG 2000 pixel data without a SIZ header");
+    const unsigned char* siz = data + at + 4;  // Lsiz follows the marker
+    if (at + 4 + 41 > size) fail(h.file, "JPEG 2000 SIZ header cut off");
+    const std::uint32_t xsiz = bigEndian32(siz + 4), ysiz = bigEndian32(siz + 8);
+    const std::uint32_t x0 = bigEndian32(siz + 12), y0 = bigEndian32(siz + 16);
+    const std::uint32_t tileW = bigEndian32(siz + 20), tileH = bigEndian32(siz + 24);
+    const unsigned components = (unsigned(siz[36]) << 8) | siz[37];
+    const int depth = (siz[38] & 0x7f) + 1;
+    const bool sizeAgrees = xsiz > x0 && ysiz > y0 && xsiz - x0 == std::uint32_t(h.columns) &&
+                            ysiz - y0 == std::uint32_t(h.rows);
+    if (!sizeAgrees || components != 1 || tileW == 0 || tileH == 0 ||
+        (h.bitsAllocated > 0 && depth > h.bitsAllocated))
+        fail(h.file, "JPEG 2000 code stream claims " + std::to_string(xsiz) + " x " +
+                         std::to_string(ysiz) + " (offset " + std::to_string(x0) + ", " +
+                         std::to_string(y0) + "), " + std::to_string(components) +
+                         " component(s) of " + std::to_string(depth) + " bits, tiles " +
+                         std::to_string(tileW) + " x " + std::to_string(tileH) +
+                         "; the header says " + std::to_string(h.columns) + " x " +
+                         std::to_string(h.rows) + ", 1 component of up to " +
+                         std::to_string(h.bitsAllocated) + " bits");
+}
+
+void checkClaimedImageSize(const DicomSliceHeader& h, const DicomFileCheck& check,
+                           const std::vector<unsigned char>& content) {
+    if (h.rows <= 0 || h.columns <= 0 || !check.hasPixelData) return;  // refused when decoded
+    if (!check.encapsulated) {
+        const std::size_t bytesPerPixel = std::max(1, h.bitsAllocated / 8);
+        // One frame's worth (multi-frame files are refused, with their own message, later).
+        const std::size_t need = std::size_t(h.rows) * std::size_t(h.columns) * bytesPerPixel;
+        if (need > check.pixelDataLength)
+            fail(h.file, "pixel data is " + std::to_string(check.pixelDataLength) +
+                             " bytes, but Rows x Columns x BitsAllocated (" +
+                             std::to_string(h.rows) + " x " + std::to_string(h.columns) + " x " +
+                             std::to_string(h.bitsAllocated) + ") promise " +
+                             std::to_string(need) + " (corrupt header or truncated file)");
+        return;
+    }
+    const bool jpeg2000 = h.transferSyntax == "1.2.840.10008.1.2.4.90" ||
+                          h.transferSyntax == "1.2.840.10008.1.2.4.91";
+    if (jpeg2000 && check.firstFragmentLength > 0 &&
+        check.firstFragmentOffset + check.firstFragmentLength <= content.size())
+        checkJpeg2000Size(h, content.data() + check.firstFragmentOffset,
+                          check.firstFragmentLength);
+}
+
+}  // namespace
+
 std::optional<DicomSliceHeader> readDicomSliceHeader(const std::filesystem::path& file) {
     silenceGdcmTrace();
     // GDCM only sees files whose byte structure is sound (see DicomFileCheck.h).
-    const DicomFileCheck check = checkDicomFile(file);
+    std::vector<unsigned char> content;
+    const DicomFileCheck check = checkDicomFile(file, &content);
     if (!check.wellFormed) {
         if (check.hasMagic) fail(file, "corrupt DICOM file: " + check.problem);
         return std::nullopt;  // not DICOM: README, licence text, ...
@@ -233,6 +298,11 @@ std::optional<DicomSliceHeader> readDicomSliceHeader(const std::filesystem::path
         h.pixelPaddingValue = asStored(*pad);
     if (const auto limit = uint16Value(ds, gdcm::Tag(0x0028, 0x0121), bigEndian))
         h.pixelPaddingRangeLimit = asStored(*limit);
+    h.encapsulated = check.encapsulated;
+    h.pixelDataLength = check.pixelDataLength;
+    h.contentBytes = check.contentBytes;
+    h.trailingBytes = check.trailingBytes;
+    checkClaimedImageSize(h, check, content);
     return h;
 }
 
@@ -350,7 +420,19 @@ std::vector<float> readDicomSlicePixels(const DicomSliceHeader& h, float padding
         fail(h.file, "unknown transfer syntax " + h.transferSyntax);
 
     gdcm::ImageReader reader;
-    reader.SetFileName(h.file.string().c_str());
+    // Trailing padding after the pixel data (DicomFileCheck): GDCM reads only the well-formed
+    // content, from memory.
+    std::istringstream prefix;
+    if (h.trailingBytes > 0) {
+        std::ifstream in(h.file, std::ios::binary);
+        std::string bytes(h.contentBytes, '\0');
+        if (!in.read(bytes.data(), static_cast<std::streamsize>(bytes.size())))
+            fail(h.file, "cannot read the file");
+        prefix.str(std::move(bytes));
+        reader.SetStream(prefix);
+    } else {
+        reader.SetFileName(h.file.string().c_str());
+    }
     bool ok = false;
     try {
         ok = reader.Read();

@@ -1,6 +1,7 @@
 #pragma once
 // One DICOM image file: the header fields a CT series needs (identity, geometry, pixel format,
 // modality rescale), and the decoding of its pixels to floats. GDCM stays behind this header.
+#include <cstddef>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -48,6 +49,12 @@ struct DicomSliceHeader {
     // Stored values marking "no data" (0028,0120) and optional range limit (0028,0121).
     std::optional<long> pixelPaddingValue;
     std::optional<long> pixelPaddingRangeLimit;
+
+    // From the structural check (DicomFileCheck.h), before GDCM saw the file.
+    bool encapsulated = false;
+    std::size_t pixelDataLength = 0;  // native pixel data bytes on disk
+    std::size_t contentBytes = 0;     // the well-formed part of the file
+    std::size_t trailingBytes = 0;    // ignored bytes after the pixel data (padding)
 };
 
 // Checked geometry of one slice (all in LPS mm, as DICOM stores it).
@@ -58,7 +65,11 @@ struct DicomSliceGeometry {
     glm::dvec2 spacing{1.0};  // mm between pixel centres along rowDirection, columnDirection
 };
 
-// Reads the header of `file` (without the pixel data).
+// Reads the header of `file` (without the pixel data). The image size the header claims is
+// checked against what the file holds before anything is allocated: native pixel data must
+// hold Rows x Columns x BitsAllocated; a JPEG 2000 code stream's SIZ marker must agree with
+// Rows, Columns, one component and BitsStored (a corrupt size there made OpenJPEG attempt a
+// 28.7 GB allocation).
 // Returns nullopt when the file is not a DICOM image: not DICOM at all, or a DICOM object with
 // no Rows/Columns (DICOMDIR, reports). Throws fm::Error for a file that carries the DICOM magic
 // "DICM" but cannot be parsed.
