@@ -1,10 +1,8 @@
 #include "model/MeshFile.h"
 
-#include <algorithm>
-#include <cctype>
-
 #include "core/Error.h"
 #include "io/ByteSource.h"
+#include "io/HeaderText.h"
 
 namespace fm {
 
@@ -14,18 +12,11 @@ namespace {
 // below it in every format).
 constexpr std::uintmax_t kMaxMeshFileBytes = std::uintmax_t(4) << 30;
 
-std::string lowerExtension(const std::filesystem::path& path) {
-    std::string ext = path.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return ext;
-}
-
 }  // namespace
 
 Mesh readMeshFile(const std::filesystem::path& path) {
     const std::string what = io::quoted(path);
-    const std::string ext = lowerExtension(path);
+    const std::string ext = io::toLower(path.extension().string());
     if (ext != ".stl" && ext != ".ply" && ext != ".obj")
         throw Error("reading model " + what + ": unknown extension (use .stl, .ply or .obj)");
     const std::uintmax_t size = io::fileSize(path);

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/Error.h"
+#include "io/HeaderText.h"
 
 namespace fm::model {
 
@@ -24,16 +25,18 @@ std::string_view TextCursor::nextOnLine() {
     return text_.substr(begin, pos_ - begin);
 }
 
-std::string_view TextCursor::next() {
+void TextCursor::skipBlankLines() {
     for (;;) {
         skipSpaceOnLine();
-        if (pos_ < text_.size() && text_[pos_] == '\n') {
-            ++pos_;
-            ++line_;
-            continue;
-        }
-        return nextOnLine();
+        if (pos_ >= text_.size() || text_[pos_] != '\n') return;
+        ++pos_;
+        ++line_;
     }
+}
+
+std::string_view TextCursor::next() {
+    skipBlankLines();
+    return nextOnLine();
 }
 
 void TextCursor::skipLine() {
@@ -45,15 +48,8 @@ void TextCursor::skipLine() {
 }
 
 bool TextCursor::atEnd() {
-    for (;;) {
-        skipSpaceOnLine();
-        if (pos_ < text_.size() && text_[pos_] == '\n') {
-            ++pos_;
-            ++line_;
-            continue;
-        }
-        return pos_ >= text_.size();
-    }
+    skipBlankLines();
+    return pos_ >= text_.size();
 }
 
 void TextCursor::fail(const std::string& why) const {
@@ -62,7 +58,7 @@ void TextCursor::fail(const std::string& why) const {
 
 void TextCursor::expect(std::string_view word) {
     const std::string_view token = next();
-    if (equalsIgnoreCase(token, word)) return;
+    if (io::equalsIgnoreCase(token, word)) return;
     // Appended piecewise: GCC 12 warns falsely (-Wrestrict) on "'" + string + "'".
     std::string why = "expected '";
     why += word;
@@ -93,15 +89,6 @@ std::int64_t TextCursor::integer(const std::string& field) {
     if (!parseInteger(token, value))
         fail(field + " must be an integer, found '" + std::string(token.substr(0, 40)) + "'");
     return value;
-}
-
-bool equalsIgnoreCase(std::string_view a, std::string_view b) {
-    if (a.size() != b.size()) return false;
-    for (std::size_t i = 0; i < a.size(); ++i)
-        if (std::tolower(static_cast<unsigned char>(a[i])) !=
-            std::tolower(static_cast<unsigned char>(b[i])))
-            return false;
-    return true;
 }
 
 bool parseDouble(std::string_view token, double& out) {

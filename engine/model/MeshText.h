@@ -35,13 +35,13 @@ class TextCursor {
 
   private:
     void skipSpaceOnLine();
+    void skipBlankLines();  // spaces and line breaks
     std::string_view text_;
     std::string what_;
     std::size_t pos_;
     int line_;
 };
 
-bool equalsIgnoreCase(std::string_view a, std::string_view b);
 // A finite double from the whole token, or false.
 bool parseDouble(std::string_view token, double& out);
 bool parseInteger(std::string_view token, std::int64_t& out);

@@ -6,6 +6,7 @@
 #include <string_view>
 
 #include "core/Error.h"
+#include "io/HeaderText.h"
 #include "model/MeshFile.h"
 #include "model/MeshText.h"
 
@@ -59,19 +60,19 @@ Mesh readAscii(const std::vector<std::uint8_t>& bytes, const std::string& what) 
     bool inSolid = false;
     while (!in.atEnd()) {
         const std::string_view token = in.next();
-        if (model::equalsIgnoreCase(token, "solid")) {
+        if (io::equalsIgnoreCase(token, "solid")) {
             if (inSolid) in.fail("'solid' inside a solid (missing 'endsolid')");
             inSolid = true;
             in.skipLine();  // the solid's name
             continue;
         }
-        if (model::equalsIgnoreCase(token, "endsolid")) {
+        if (io::equalsIgnoreCase(token, "endsolid")) {
             if (!inSolid) in.fail("'endsolid' without 'solid'");
             inSolid = false;
             in.skipLine();
             continue;
         }
-        if (!model::equalsIgnoreCase(token, "facet"))
+        if (!io::equalsIgnoreCase(token, "facet"))
             in.fail("expected 'facet' or 'endsolid', found '" +
                     std::string(token.substr(0, 40)) + "'");
         if (!inSolid) in.fail("'facet' outside a solid");
