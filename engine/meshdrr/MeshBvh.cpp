@@ -6,6 +6,7 @@
 #include <numeric>
 
 #include "core/Error.h"
+#include "core/WorldLimits.h"
 
 namespace fm {
 namespace {
@@ -133,7 +134,11 @@ MeshBvh buildMeshBvh(const Mesh& mesh) {
         for (int k = 0; k < 3; ++k) {
             const std::uint32_t v = mesh.triangles[t][k];
             if (v >= mesh.positions.size()) throw Error("mesh DRR: triangle index out of range");
-            boxes[t].grow(glm::dvec3(mesh.positions[v]));
+            const glm::dvec3 p(mesh.positions[v]);
+            if (!(glm::all(glm::lessThanEqual(glm::abs(p), glm::dvec3(kMaxWorldMm)))))
+                throw Error("mesh DRR: vertex " + std::to_string(v) +
+                            " is not finite or beyond the world limit (1e15 mm)");
+            boxes[t].grow(p);
         }
         centroids[t] = 0.5 * (boxes[t].lo + boxes[t].hi);
     }

@@ -1,8 +1,10 @@
 #include "model/MeshModel.h"
 
+#include <cmath>
 #include <utility>
 
 #include "core/Error.h"
+#include "core/WorldLimits.h"
 #include "io/ByteSource.h"
 #include "model/MeshFile.h"
 
@@ -10,6 +12,12 @@ namespace fm {
 
 MeshModel makeMeshModel(const Mesh& mesh, const std::string& source,
                         const ModelLoadOptions& options) {
+    for (std::size_t v = 0; v < mesh.positions.size(); ++v)
+        for (int a = 0; a < 3; ++a)
+            if (!(std::abs(double(mesh.positions[v][a])) <= kMaxWorldMm))
+                throw Error(source + ": vertex " + std::to_string(v) + " coordinate " +
+                            std::to_string(a) + " is not finite or beyond " +
+                            std::to_string(kMaxWorldMm) + " mm");
     MeshModel m;
     m.source = source;
     m.fileTriangles = mesh.triangles.size();

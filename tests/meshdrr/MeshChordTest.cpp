@@ -253,6 +253,11 @@ TEST(MeshChord, RefusesOpenModelsAndEmptySegments) {
     const auto closed = closedModel(fm::test::boxMesh({0, 0, 0}, {1, 1, 1}));
     EXPECT_THROW(fm::meshChordMm(*closed, {1, 2, 3}, {1, 2, 3}), fm::Error);
     EXPECT_THROW(fm::prepareMeshDrr(fm::Mesh{}, true), fm::Error);
+    fm::Mesh far = fm::test::boxMesh({0, 0, 0}, {1, 1, 1});
+    far.positions[3].x = 1e30f;  // beyond the world limit: products could overflow
+    EXPECT_THROW(fm::prepareMeshDrr(far, true), fm::Error);
+    far.positions[3].x = std::nanf("");
+    EXPECT_THROW(fm::prepareMeshDrr(far, true), fm::Error);
 }
 
 }  // namespace

@@ -100,6 +100,17 @@ TEST(MeshModel, NonManifoldAndMisorientedEdgesAreCounted) {
     EXPECT_THROW(fm::makeMeshModel(bad, "bad"), fm::Error);
 }
 
+TEST(MeshModel, CoordinatesBeyondTheWorldLimitAreRefused) {
+    fm::Mesh box = fm::test::boxMesh({0, 0, 0}, {1, 1, 1});
+    box.positions[5].y = -3e20f;
+    try {
+        fm::makeMeshModel(box, "'far.stl'");
+        ADD_FAILURE() << "accepted";
+    } catch (const fm::Error& e) {
+        EXPECT_NE(std::string(e.what()).find("vertex 5 coordinate 1"), std::string::npos) << e.what();
+    }
+}
+
 TEST(MeshModel, CollapsedTrianglesAreDropped) {
     fm::Mesh box = fm::test::boxMesh({0, 0, 0}, {1, 1, 1});
     box.triangles.push_back(glm::uvec3(0, 0, 1));  // degenerate: two corners the same vertex
