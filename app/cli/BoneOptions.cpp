@@ -1,6 +1,8 @@
 #include "cli/BoneOptions.h"
 
+#include "bones/BoneScene.h"
 #include "bones/BoneVolume.h"
+#include "phantom/ArticulatedKnee.h"
 #include "core/Error.h"
 
 namespace fm::cli {
@@ -46,6 +48,22 @@ BoneChoice chooseBone(const BoneOptions& o, Volume ct) {
         choice.describe = "without bone " + choice.bone->name + " (label " + labels + ")";
     }
     return choice;
+}
+
+Scene boneSceneFor(const Volume& ct, const LabelledVolume& labels, const BoneSelection& bone,
+                   bool noRest, const DrrValueOptions& values) {
+    BoneSceneOptions options;
+    options.includeRest = !noRest;
+    options.values = values;
+    if (labels.source.rfind("phantom:knee", 0) != 0)
+        return makeBoneScene(ct, labels.labels, {bone}, options);
+    std::string names;
+    for (const BoneSelection& b : kneeBones()) {
+        names += (names.empty() ? "" : ", ") + b.name;
+        if (b.name == bone.name) return makeBoneScene(ct, labels.labels, kneeBones(), options);
+    }
+    throw Error("--bone " + bone.name + ": the articulated knee's bones are " + names +
+                " (the tibia with the fibula)");
 }
 
 }  // namespace fm::cli

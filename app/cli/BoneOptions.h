@@ -10,6 +10,8 @@
 #include <glm/glm.hpp>
 
 #include "bones/LabelSource.h"
+#include "drr/Drr.h"
+#include "scene/Scene.h"
 #include "bones/LabelTable.h"
 #include "volume/Volume.h"
 
@@ -35,5 +37,12 @@ struct BoneChoice {
 // Throws fm::Error for --bone/--without without --labels, both at once, an unknown name or an
 // empty bone.
 BoneChoice chooseBone(const BoneOptions& options, Volume ct);
+
+// The scene `register --bone` and `evaluate --bone` move one bone in: for the knee phantom's
+// labels the articulated knee (femur, tibia + fibula, patella; `bone` must be one of them),
+// otherwise `bone` alone; plus, unless `noRest`, the rest of the CT as a static object.
+// No camera yet.
+Scene boneSceneFor(const Volume& ct, const LabelledVolume& labels, const BoneSelection& bone,
+                   bool noRest, const DrrValueOptions& values);
 
 }  // namespace fm::cli

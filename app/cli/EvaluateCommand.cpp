@@ -13,6 +13,9 @@
 #include <type_traits>
 #include <vector>
 
+#include "bones/BoneRegistration.h"
+#include "bones/BoneVolume.h"
+#include "cli/BoneOptions.h"
 #include "cli/CommandRegistry.h"
 #include "cli/SearchCli.h"
 #include "cli/VolumeOption.h"
@@ -33,7 +36,54 @@ struct EvaluateArgs {
     int starts = 10;
     std::string csv;
     fm::cli::SearchArgs search;
+    fm::cli::BoneOptions bones;
+    bool noRest = false;
+    double marginMm = 20.0;
 };
+
+// What is evaluated: the 2011 scene of the whole CT, or (--bone) one bone's pose in the camera
+// --truth places (its frame), the other objects static, its truth where the CT has it,
+// compared in its footprint.
+struct Evaluated {
+    fm::EvaluationScene scene;
+    fm::Image reference;
+    fm::SceneParams truth{};
+    std::vector<glm::dvec3> targets;
+    std::string describe;
+};
+
+Evaluated wholeCt(const EvaluateArgs& a, const fm::Volume& volume, int threads) {
+    const fm::DrrVolumePtr prepared = fm::cli::prepareForSearch(volume, a.search.values);
+    const fm::Pose truth = fm::parsePose(a.truth);
+    const auto parameterization =
+        std::make_shared<fm::Pose2011Parameterization>(fm::defaultSceneSetup(), volume.center());
+    return {{fm::volumeScene(prepared), parameterization, 0, std::nullopt},
+            fm::cli::renderReference(*prepared, parameterization->geometry(truth), threads),
+            truth.toArray(), fm::registrationTargets(volume), "truth " + a.truth};
+}
+
+Evaluated oneBone(const EvaluateArgs& a, const fm::Volume& ct) {
+    if (!a.bones.without.empty()) throw fm::Error("evaluate takes --bone NAME (not --without)");
+    if (a.bones.labels.empty())
+        throw fm::Error("evaluate --bone needs --labels (a label map, phantom:knee or components)");
+    if (!(a.marginMm >= 0.0) || a.marginMm > 500.0)
+        throw fm::Error("--footprint-margin must be 0..500 mm");
+    const fm::LabelledVolume labels = fm::loadLabels(a.bones.labels, a.bones.table, ct);
+    const fm::BoneSelection bone = fm::resolveBone(a.bones.bone, labels.table);
+    fm::DrrValueOptions values;
+    values.values = a.search.values == "raw" ? fm::DrrValues::Raw : fm::DrrValues::Mu;
+    fm::Scene scene = fm::cli::boneSceneFor(ct, labels, bone, a.noRest, values);
+    scene.cameras.push_back(
+        fm::sceneGeometry(fm::parsePose(a.truth), fm::defaultSceneSetup(), ct.center()));
+    const auto parameterization = fm::boneParameterization(scene, bone.name);
+    return {{scene, parameterization, *scene.find(bone.name),
+             fm::boneFootprint(scene, bone.name, 0, a.marginMm)},
+            fm::renderView(scene, 0, {}),
+            parameterization->referenceParams(),
+            fm::boneTargetPoints(fm::boneVolume(ct, labels.labels, bone), 200.0, 1000),
+            "bone " + bone.name + " in the camera of " + a.truth + ", " +
+                std::to_string(scene.objects.size() - 1) + " other objects static"};
+}
 
 void runEvaluate(const EvaluateArgs& a) {
     if (a.starts < 1 || a.starts > 10000) throw fm::Error("--starts must be 1..10000");
@@ -74,21 +124,20 @@ void runEvaluate(const EvaluateArgs& a) {
 
     settings.registration.threads =
         fm::distributed::threadsPerRank(transport, settings.registration.threads);
-    const fm::DrrVolumePtr prepared = fm::cli::prepareForSearch(volume, a.search.values);
-    const fm::Pose truth = fm::parsePose(a.truth);
-    const auto parameterization =
-        std::make_shared<fm::Pose2011Parameterization>(fm::defaultSceneSetup(), volume.center());
-    const fm::EvaluationScene scene{fm::volumeScene(prepared), parameterization, 0};
-    const fm::Image reference = fm::cli::renderReference(
-        *prepared, parameterization->geometry(truth), settings.registration.threads);
-    const auto targets = fm::registrationTargets(volume);
+    const Evaluated e = a.bones.bone.empty()
+                            ? wholeCt(a, volume, settings.registration.threads)
+                            : oneBone(a, volume);
+    const fm::EvaluationScene& scene = e.scene;
+    const fm::Image& reference = e.reference;
+    const auto& targets = e.targets;
     const std::vector<fm::EvaluationStart> plan =
-        fm::evaluationPlan(truth.toArray(), scene, targets, settings);
+        fm::evaluationPlan(e.truth, scene, targets, settings);
     const int threads = settings.registration.threads;
 
     if (writer) {
-        std::printf("volume     %s (%d x %d x %d), truth %s, %zu mTRE targets\n", a.volume.c_str(),
-                    volume.dims.x, volume.dims.y, volume.dims.z, a.truth.c_str(), targets.size());
+        std::printf("volume     %s (%d x %d x %d), %s, %zu mTRE targets\n", a.volume.c_str(),
+                    volume.dims.x, volume.dims.y, volume.dims.z, e.describe.c_str(),
+                    targets.size());
         std::printf(
             "protocol   %d starts per bin, seed %llu, success = final mTRE < %.1f mm, %d "
             "threads\n",
@@ -114,7 +163,7 @@ void runEvaluate(const EvaluateArgs& a) {
             rs.method = method;
             registrations[m] = std::make_unique<fm::Registration>(
                 scene.scene, scene.parameterization,
-                std::vector<fm::RegistrationView>{{0, reference, {}}}, rs);
+                std::vector<fm::RegistrationView>{{0, reference, scene.valid}}, rs);
         }
         return *registrations[m];
     };
@@ -127,7 +176,7 @@ void runEvaluate(const EvaluateArgs& a) {
         [&](int job, std::span<std::byte> record) {
             const fm::EvaluationStart& start = plan[job];
             const fm::EvaluationTrial t = fm::runEvaluationTrial(
-                registrationFor(start.method), start, scene, truth.toArray(), targets, settings);
+                registrationFor(start.method), start, scene, e.truth, targets, settings);
             std::memcpy(record.data(), &t, sizeof t);
         },
         [&](int, std::span<const std::byte> record) {
@@ -197,6 +246,11 @@ FM_REGISTER_COMMAND("evaluate", 41, [](CLI::App& app) {
         ->capture_default_str();
     cmd->add_option("--csv", a->csv, "Write one row per registration to this CSV file");
     fm::cli::addSearchOptions(cmd, a->search, false);
+    fm::cli::addBoneOptions(cmd, a->bones);
+    cmd->add_flag("--no-rest", a->noRest, "With --bone: leave the rest of the CT out of the images");
+    cmd->add_option("--footprint-margin", a->marginMm,
+                    "With --bone: mm added around the bone's footprint (the compared pixels)")
+        ->capture_default_str();
     cmd->callback([a] { runEvaluate(*a); });
     return cmd;
 });

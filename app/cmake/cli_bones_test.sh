@@ -63,11 +63,21 @@ if [ -f "$SEG" ]; then
     [ $? -eq 1 ] || fail "the label map of another scan was accepted"
     grep -q "cannot be resampled" <<<"$msg" || fail "disjoint grid: unclear message: $msg"
     [ ! -e "$OUT/x.png" ] || fail "a PNG was written for bad input"
+
+    # register --bone: femur_right moved 6 mm / 6 deg, registered alone, biplane, bones only.
+    msg=$("$FM" register --volume "$CT" --labels "$SEG" --label-table "$OUT/table.json" --bone femur_right \
+        --bone-motion 6,-5,5,6,-5,5 --biplane --no-rest 2>/dev/null) || fail "register --bone exited $?"
+    final=$(sed -n 's/.*-> final \([0-9.]*\) mm.*/\1/p' <<<"$msg")
+    python3 -c "import sys; sys.exit(0 if float('${final:-99}') < 1.0 else 1)" \
+        || fail "register --bone: final mTRE ${final:-?} mm, not under 1 mm: $msg"
+    echo "register --bone femur_right: final mTRE $final mm"
 else
     [ "${CI:-}" = "true" ] && fail "shared data missing under CI: $SEG"
     echo "skipping the real-CT checks: $SEG not found"
 fi
 
+msg=$("$FM" register --bone femur 2>&1)
+[ $? -eq 1 ] || fail "register --bone without --labels was accepted"
 msg=$("$FM" drr --bone femur --out "$OUT/x.png" 2>&1)
 [ $? -eq 1 ] || fail "--bone without --labels was accepted"
 grep -q "needs --labels" <<<"$msg" || fail "--bone without --labels: unclear message: $msg"

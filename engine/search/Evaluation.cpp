@@ -120,7 +120,8 @@ std::vector<EvaluationTrial> runEvaluation(
     for (std::size_t i = 0; i < plan.size();) {
         RegistrationSettings rs = settings.registration;
         rs.method = plan[i].method;
-        const Registration registration(scene.scene, scene.parameterization, {{0, reference, {}}},
+        const Registration registration(scene.scene, scene.parameterization,
+                                        {{0, reference, scene.valid}},
                                         rs);
         for (; i < plan.size() && plan[i].method == rs.method; ++i) {
             if (stop && stop->load()) return trials;

@@ -10,6 +10,7 @@
 // by bisection until the start's mTRE equals a target drawn uniformly within the bin. Every
 // method gets the same starts.
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include "match/PoseError.h"
@@ -31,6 +32,8 @@ struct EvaluationScene {
     Scene scene;
     SceneParameterizationPtr parameterization;
     std::size_t targetObject = 0;
+    // Camera 0's pixels to compare (e.g. one bone's footprint); nullopt = all.
+    std::optional<Mask> valid;
     // Camera 0 at `params`, in the target object's frame (what targetRegistrationError takes).
     ProjectionGeometry camera(const SceneParams& params) const;
 };

@@ -2,11 +2,13 @@
 // anatomical frames from landmarks, and the articulated knee phantom flexed as its generator
 // flexes it.
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 
 #include <gtest/gtest.h>
 
 #include "bones/AnatomicalFrame.h"
+#include "bones/BoneRegistration.h"
 #include "bones/BoneScene.h"
 #include "bones/GroodSuntay.h"
 #include "common/TestData.h"
@@ -214,6 +216,46 @@ TEST(ArticulatedKnee, SceneIsTheWholeKneeAtRestAndFlexesByGroodSuntay) {
     for (std::size_t n = 0; n < whole.pixels.size(); ++n)
         change = std::max(change, double(std::abs(bent.pixels[n] - whole.pixels[n])));
     EXPECT_GT(change, 0.1 * peak);
+}
+
+}  // namespace
+
+namespace {
+
+TEST(ArticulatedKnee, RegisteringTheTibiaAloneFindsTheFlexion) {
+    // The hidden reference flexes the knee by 12 deg (tibia and patella move); the tibia alone
+    // is registered from the straight pose with the femur, patella and soft tissue static; its
+    // pose in the femur's frame gives the flexion by Grood-Suntay.
+    fm::KneePhantomParams p;
+    p.dims = {80, 80, 88};
+    fm::Scene knee = fm::makeArticulatedKnee(p);
+    fm::SceneSetup setup = fm::defaultSceneSetup();
+    setup.filmPixels = {128, 128};
+    // Biplane, lateral and AP: one view alone hardly sees the out-of-plane rotations (varus in
+    // a lateral view).
+    for (double azimuth : {90.0, 0.0})
+        knee.cameras.push_back(fm::sceneGeometry(fm::Pose{{0, 0, 0}, azimuth, 0.0, 0.0}, setup, {}));
+    fm::Scene truth = knee;
+    fm::flexKnee(truth, p, 12.0);
+    truth.object(fm::kKneePatella).worldFromObject = fm::RigidTransform::identity();  // tibia only
+    fm::RegistrationSettings settings;
+    settings.globalEvaluations = 200;
+    settings.polishEvaluations = 60;
+    const fm::BoneRegistrationResult r =
+        fm::registerBone(knee, fm::kKneeTibia,
+                         {fm::renderView(truth, 0, {}), fm::renderView(truth, 1, {})}, settings);
+    knee.object(fm::kKneeTibia).worldFromObject = r.worldFromBone;
+    const fm::KneeAngles k = fm::groodSuntayAngles(
+        fm::kneeAnatomicalFrame(p, fm::KneeSegment::Femur).inverse() *
+            fm::relativePose(knee, fm::kKneeFemur, fm::kKneeTibia) *
+            fm::kneeAnatomicalFrame(p, fm::KneeSegment::Tibia),
+        fm::BodySide::Right);
+    std::printf("tibia registered alone: flexion %.3f deg (truth 12), varus %.3f, internal %.3f, "
+                "%d evaluations\n",
+                k.flexionDeg, k.varusDeg, k.internalRotationDeg, r.search.evaluations);
+    EXPECT_NEAR(k.flexionDeg, 12.0, 0.5);
+    EXPECT_NEAR(k.varusDeg, 0.0, 1.0);
+    EXPECT_NEAR(k.internalRotationDeg, 0.0, 1.0);
 }
 
 }  // namespace
