@@ -61,10 +61,14 @@ OrbitCamera orbitCamera(const app::View3d& view, double sceneRadiusMm, float asp
     const glm::vec3 direction(std::sin(az) * std::cos(el), -std::cos(az) * std::cos(el),
                               std::sin(el));
     OrbitCamera camera;
-    camera.position = direction * distance;
     const glm::vec3 up =
         std::abs(el) > glm::radians(89.0f) ? glm::vec3(0, 1, 0) : glm::vec3(0, 0, 1);
-    camera.view = glm::lookAt(camera.position, glm::vec3(0.0f), up);
+    // Panning moves the point looked at across the screen (right and up of the camera).
+    const glm::vec3 right = glm::normalize(glm::cross(-direction, up));
+    const glm::vec3 screenUp = glm::cross(right, -direction);
+    const glm::vec3 target = (right * view.panX + screenUp * view.panY) * radius;
+    camera.position = target + direction * distance;
+    camera.view = glm::lookAt(camera.position, target, up);
     camera.projection = glm::perspective(glm::radians(kFovDeg), std::max(aspect, 0.01f),
                                          distance * 0.05f, distance + radius * 3.0f);
     return camera;

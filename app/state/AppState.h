@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "geometry/PatientDirection.h"
 #include "geometry/Pose.h"
 #include "match/MatchVerdict.h"
 #include "match/ReferenceDraw.h"
@@ -40,6 +41,21 @@ void checkPoseWithinSliders(const Pose& pose, double translationRangeMm, const s
 
 enum class CompareMode { Difference, Overlay, Checkerboard };
 
+// Zoom and pan of the 2D images, shared by the reference, user and compare images so that
+// they stay side by side at the same place (texture coordinates of the view's centre).
+struct ImageView {
+    float zoom = 1.0f;  // 1: the whole image
+    float centerU = 0.5f, centerV = 0.5f;
+};
+
+// The pixel under the mouse in a 2D pane (position and value, in the image's units).
+struct PixelReadout {
+    bool valid = false;
+    std::string pane;  // "image:reference", "image:user"
+    int col = 0, row = 0;
+    float value = 0.0f;
+};
+
 struct DisplaySettings {
     bool autoWindow = true;  // window/level follow the reference DRR's range
     float window = 1.0f;     // width of the displayed value range
@@ -52,10 +68,17 @@ struct View3d {
     float azimuthDeg = 35.0f;
     float elevationDeg = 25.0f;
     float zoom = 1.6f;
+    float panX = 0.0f, panY = 0.0f;  // view centre moved along the screen, in scene radii
     bool showBone = true;
     bool showBox = true;
     bool showApparatus = true;  // source, film and ray cone
     static View3d defaults() { return {}; }
+    // What Reset view shows: the whole set-up (source, CT box and film) framed, not panned.
+    static View3d framed() {
+        View3d v;
+        v.zoom = 1.0f;
+        return v;
+    }
 };
 
 // What Match reported, kept for display (all numbers come from engine/match).
@@ -161,6 +184,11 @@ struct AppState {
     // The judge's tolerances (engine/match), shown with the verdict and in Help.
     double toleranceOffsetMm = 0.0, toleranceAngleDeg = 0.0;
     DisplaySettings display;
+    ImageView imageView;
+    PixelReadout readout;
+    bool compareEnlarged = false;
+    // Orientation letters at the image edges (engine/geometry PatientDirection), per pose.
+    ImageEdgeLetters referenceEdges, userEdges;
     View3d view;
     BoneSurface bone;
     bool showHelp = false;

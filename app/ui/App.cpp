@@ -7,6 +7,7 @@
 #include <chrono>
 
 #include "core/Error.h"
+#include "geometry/PatientDirection.h"
 #include "match/MatchVerdict.h"
 #include "match/PoseError.h"
 #include "mesh/MarchingCubes.h"
@@ -218,7 +219,14 @@ const Pose& App::shownUserPose() const {
 void App::processRequests() {
     Requests requests = std::move(state_.requests);
     state_.requests = {};
-    if (requests.resetView) state_.view = options_.view.value_or(View3d::defaults());
+    if (requests.resetView) {
+        // The whole set-up framed; what is shown (bone, box, apparatus) stays as chosen.
+        View3d framed = View3d::framed();
+        framed.showBone = state_.view.showBone;
+        framed.showBox = state_.view.showBox;
+        framed.showApparatus = state_.view.showApparatus;
+        state_.view = framed;
+    }
     if (requests.reveal) state_.referenceRevealed = true;
     if (requests.loadVolume) {
         solver_.stop();  // a new scene ends the search of the old one
@@ -282,6 +290,7 @@ void App::updateImages() {
         state_.timings.referenceDrrMs = r.milliseconds;
         referenceKey_ = referenceKey;
         ++referenceVersion_;
+        state_.referenceEdges = imageEdgeLetters(appGeometry(*scene_, state_.referencePose));
     }
 
     // While a slider is dragged: a coarser film and sampled rays; exact again on release.
@@ -299,6 +308,7 @@ void App::updateImages() {
         if (!r.fromCache) ++(coarse ? coarseUserRenders_ : exactUserRenders_);
         userKey_ = userKey;
         ++userVersion_;
+        state_.userEdges = imageEdgeLetters(appGeometry(*scene_, userPose));
     }
 
     if (state_.display.autoWindow) {
@@ -362,6 +372,8 @@ void App::frame() {
     textures.user = userTexture_->empty() ? 0 : userTexture_->id();
     textures.compare = compareTexture_->empty() ? 0 : compareTexture_->id();
     textures.scene3d = sceneRenderer_->texture();
+    textures.referenceImage = referenceDrr_.width > 0 ? &referenceDrr_ : nullptr;
+    textures.userImage = userDrr_.width > 0 ? &userDrr_ : nullptr;
     refreshMatchTexts();  // the hint mode or Reveal may have changed since
     ui_.draw(state_, textures);
 
@@ -377,6 +389,8 @@ void App::frame() {
                             state_.view.azimuthDeg,
                             state_.view.elevationDeg,
                             state_.view.zoom,
+                            state_.view.panX,
+                            state_.view.panY,
                             state_.view.showBone,
                             state_.view.showBox,
                             state_.view.showApparatus,

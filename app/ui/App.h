@@ -107,7 +107,7 @@ class App {
     struct SceneKey {
         std::uint64_t generation = 0, boneSurface = 0;
         std::array<double, 6> pose{};
-        float azimuth = 0, elevation = 0, zoom = 0;
+        float azimuth = 0, elevation = 0, zoom = 0, panX = 0, panY = 0;
         bool bone = false, box = false, apparatus = false;
         glm::ivec2 size{0};
         std::uint64_t film = 0;

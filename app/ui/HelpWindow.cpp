@@ -65,7 +65,9 @@ void Ui::helpWindow(AppState& state) {
         bulletWrapped(
             "Compare: difference, overlay or checkerboard of the two images, with window and "
             "level.");
-        bulletWrapped("3D view: drag to orbit, mouse wheel to zoom, Reset view.");
+        bulletWrapped(
+            "3D view: drag to orbit, middle-drag (or Shift+drag) to pan, right-drag or wheel to "
+            "zoom; Reset view frames the whole set-up.");
         bulletWrapped(
             "Open another CT: type a path (file, DICOM folder or phantom:NAME) or drop it onto "
             "the window.");

@@ -21,8 +21,11 @@ bool pressed(ImGuiKey key) {
 
 void Ui::keyboard(AppState& state) {
     const ImGuiIO& io = ImGui::GetIO();
-    if (pressed(ImGuiKey_Escape) && state.showHelp) {
-        state.showHelp = false;
+    if (pressed(ImGuiKey_Escape) && (state.showHelp || state.compareEnlarged)) {
+        if (state.showHelp)
+            state.showHelp = false;
+        else
+            state.compareEnlarged = false;
         return;
     }
     if (io.WantTextInput) return;  // typing a number or a path: the keys are the field's

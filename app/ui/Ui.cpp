@@ -16,16 +16,21 @@ namespace {
 
 using namespace widgets;
 
-// The largest square that fits the remaining content region, centred horizontally.
-float squareImage(unsigned texture, float reserveBelow) {
+// The largest square that fits the remaining content region, centred horizontally (the
+// cursor is left at its top-left corner).
+float squareSide(float reserveBelow) {
     const ImVec2 avail = ImGui::GetContentRegionAvail();
     const float side = std::max(16.0f, std::min(avail.x, avail.y - reserveBelow));
     ImGui::SetCursorPosX(ImGui::GetCursorPosX() + std::max(0.0f, (avail.x - side) * 0.5f));
-    if (texture)
-        ImGui::Image(toImTexture(texture), ImVec2(side, side));
-    else
-        ImGui::Dummy(ImVec2(side, side));
     return side;
+}
+
+// The caption under a 2D image: the pixel under the mouse while there is one.
+bool readoutLine(const AppState& state, const std::string& pane) {
+    if (!state.readout.valid || state.readout.pane != pane) return false;
+    ImGui::TextColored(kSelected, "pixel (%d, %d)  value %.4g  zoom %.1fx", state.readout.col,
+                       state.readout.row, state.readout.value, state.imageView.zoom);
+    return true;
 }
 
 }  // namespace
@@ -44,6 +49,8 @@ std::optional<WidgetRect> Ui::rect(const std::string& id) const {
 void Ui::draw(AppState& state, const UiTextures& textures) {
     rects_.clear();
     sceneDrawList_ = nullptr;
+    textures_ = textures;
+    state.readout.valid = false;
     const ImVec2 display = ImGui::GetIO().DisplaySize;
     const Layout layout = computeLayout({display.x, display.y});
     referencePane(state, layout.reference, textures.reference);
@@ -52,15 +59,18 @@ void Ui::draw(AppState& state, const UiTextures& textures) {
     parameterPane(state, layout.parameters);
     comparePane(state, layout.compare, textures.compare);
     matchPane(state, layout.match);
+    if (state.compareEnlarged) enlargedCompare(state, textures.compare);
     if (state.showHelp) helpWindow(state);
     keyboard(state);
 }
 
 void Ui::referencePane(AppState& state, const Pane& pane, unsigned texture) {
     beginPane("Reference image", pane);
-    squareImage(texture, ImGui::GetTextLineHeightWithSpacing());
-    record("image:reference");
-    if (state.referenceRevealed) {
+    const float side = squareSide(ImGui::GetTextLineHeightWithSpacing());
+    imageWidget(state, "image:reference", texture, textures_.referenceImage, state.referenceEdges,
+                side);
+    if (readoutLine(state, "image:reference")) {
+    } else if (state.referenceRevealed) {
         poseLine(state.referencePose);
     } else {
         ImGui::TextColored(kDim, "Parameters hidden: match this image.");
@@ -70,9 +80,10 @@ void Ui::referencePane(AppState& state, const Pane& pane, unsigned texture) {
 
 void Ui::userPane(AppState& state, const Pane& pane, unsigned texture) {
     beginPane("Your DRR", pane);
-    squareImage(texture, ImGui::GetTextLineHeightWithSpacing());
-    record("image:user");
-    if (state.solve.running) {  // the image follows the computer's best pose meanwhile
+    const float side = squareSide(ImGui::GetTextLineHeightWithSpacing());
+    imageWidget(state, "image:user", texture, textures_.userImage, state.userEdges, side);
+    if (readoutLine(state, "image:user")) {
+    } else if (state.solve.running) {  // the image follows the computer's best pose meanwhile
         ImGui::TextColored(kWarn, "solving:");
         ImGui::SameLine();
         poseLine(state.solve.bestPose);
@@ -101,14 +112,27 @@ void Ui::scenePane(AppState& state, const Pane& pane, unsigned texture) {
     const ImVec2 avail = ImGui::GetContentRegionAvail();
     const ImVec2 size(std::max(16.0f, avail.x), std::max(16.0f, avail.y - reserve));
     const ImVec2 origin = ImGui::GetCursorScreenPos();
-    ImGui::InvisibleButton("##scene3d", size);
+    ImGui::InvisibleButton("##scene3d", size,
+                           ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
+                               ImGuiButtonFlags_MouseButtonMiddle);
     record("view:3d");
     const bool hovered = ImGui::IsItemHovered();
-    if (ImGui::IsItemActive() && ImGui::IsMouseDragging(ImGuiMouseButton_Left, 0.0f)) {
-        const ImVec2 delta = ImGui::GetIO().MouseDelta;
-        state.view.azimuthDeg = std::remainder(state.view.azimuthDeg - delta.x * 0.4f, 360.0f);
-        state.view.elevationDeg =
-            std::clamp(state.view.elevationDeg + delta.y * 0.4f, -89.0f, 89.0f);
+    const ImGuiIO& io = ImGui::GetIO();
+    const ImVec2 delta = io.MouseDelta;
+    if (ImGui::IsItemActive()) {
+        // As in 3D Slicer: left orbits (Shift+left pans), middle pans, right zooms.
+        const bool pan = ImGui::IsMouseDragging(ImGuiMouseButton_Middle, 0.0f) ||
+                         (io.KeyShift && ImGui::IsMouseDragging(ImGuiMouseButton_Left, 0.0f));
+        if (pan) {
+            state.view.panX -= delta.x / size.y * 2.0f / state.view.zoom;
+            state.view.panY += delta.y / size.y * 2.0f / state.view.zoom;
+        } else if (ImGui::IsMouseDragging(ImGuiMouseButton_Left, 0.0f)) {
+            state.view.azimuthDeg = std::remainder(state.view.azimuthDeg - delta.x * 0.4f, 360.0f);
+            state.view.elevationDeg =
+                std::clamp(state.view.elevationDeg + delta.y * 0.4f, -89.0f, 89.0f);
+        } else if (ImGui::IsMouseDragging(ImGuiMouseButton_Right, 0.0f)) {
+            state.view.zoom = std::clamp(state.view.zoom * std::pow(1.01f, -delta.y), 0.2f, 8.0f);
+        }
     }
     if (hovered && ImGui::GetIO().MouseWheel != 0.0f)
         state.view.zoom =
@@ -215,6 +239,12 @@ void Ui::parameterPane(AppState& state, const Pane& pane) {
         state.matchIsStale = true;
     }
     record("button:centre-pose");
+    ImGui::SameLine();
+    ImGui::TextColored(kDim, "frame: LPS mm");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Offsets in the patient frame LPS: +x Left, +y Posterior, +z "
+                          "Superior (DICOM, ITK).\n3D Slicer's RAS is the same with x and y "
+                          "negated: RAS = (-x, -y, z).");
 
     ImGui::Separator();
     ImGui::AlignTextToFramePadding();
@@ -274,11 +304,7 @@ void Ui::comparePane(AppState& state, const Pane& pane, unsigned texture) {
     const float controlsWidth = ImGui::GetContentRegionAvail().x * 0.42f;
     const ImVec2 avail = ImGui::GetContentRegionAvail();
     const float side = std::max(16.0f, std::min(avail.x - controlsWidth - 8.0f, avail.y));
-    if (texture)
-        ImGui::Image(toImTexture(texture), ImVec2(side, side));
-    else
-        ImGui::Dummy(ImVec2(side, side));
-    record("image:compare");
+    imageWidget(state, "image:compare", texture, nullptr, state.userEdges, side);
     ImGui::SameLine();
     ImGui::BeginGroup();
     const char* legend = state.display.compare == CompareMode::Difference
@@ -291,15 +317,28 @@ void Ui::comparePane(AppState& state, const Pane& pane, unsigned texture) {
     ImGui::PopTextWrapPos();
     ImGui::Checkbox("Auto window", &state.display.autoWindow);
     record("checkbox:auto-window");
+
     ImGui::SetNextItemWidth(controlsWidth - ImGui::CalcTextSize("Window").x - 8.0f);
     const float range = std::max(state.display.window, state.display.level) * 2.0f + 1e-6f;
-    if (ImGui::SliderFloat("Window", &state.display.window, range * 1e-3f, range, "%.3g"))
+    // Drag fields, not sliders: the value stays readable (a slider's grab covers it). The
+    // values are the images' own: line integrals (mu x mm, or value x mm for raw volumes).
+    if (ImGui::DragFloat("Window", &state.display.window, range * 2e-3f, range * 1e-3f, range,
+                         "%.3g", ImGuiSliderFlags_AlwaysClamp))
         state.display.autoWindow = false;
     record("slider:window");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Width of the grey range, in the DRR's units (line integral). Or "
+                          "drag left/right on an image");
     ImGui::SetNextItemWidth(controlsWidth - ImGui::CalcTextSize("Window").x - 8.0f);
-    if (ImGui::SliderFloat("Level", &state.display.level, -range * 0.5f, range, "%.3g"))
+    if (ImGui::DragFloat("Level", &state.display.level, range * 2e-3f, -range * 0.5f, range,
+                         "%.3g"))
         state.display.autoWindow = false;
     record("slider:level");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Centre of the grey range, in the DRR's units. Or drag up/down on an "
+                          "image");
+    if (ImGui::SmallButton("Enlarge")) state.compareEnlarged = true;
+    record("button:enlarge-compare");
     const Timings& t = state.timings;
     ImGui::Spacing();
     if (!state.showTimings) {

@@ -8,6 +8,7 @@
 
 #include <glm/glm.hpp>
 
+#include "core/Image.h"
 #include "state/AppState.h"
 #include "ui/Layout.h"
 
@@ -18,6 +19,9 @@ namespace fm::app {
 // GL textures the panes show (0 = nothing yet).
 struct UiTextures {
     unsigned reference = 0, user = 0, compare = 0, scene3d = 0;
+    // The images behind the first two (for the pixel readout); null when none yet.
+    const Image* referenceImage = nullptr;
+    const Image* userImage = nullptr;
 };
 
 // A widget's screen rectangle (pixels, top-left origin), for scripted tests.
@@ -52,8 +56,14 @@ class Ui {
     void solveSection(AppState& state);  // SolvePanel.cpp: ... and the computer's
     void helpWindow(AppState& state);    // HelpWindow.cpp
     void keyboard(AppState& state);      // KeyboardNudge.cpp: arrows, Enter, Escape
+    // ImagePane.cpp: a square 2D image with zoom (wheel), pan (right or middle drag),
+    // window/level (left drag), pixel readout and orientation letters.
+    void imageWidget(AppState& state, const std::string& id, unsigned texture, const Image* image,
+                     const ImageEdgeLetters& edges, float side);
+    void enlargedCompare(AppState& state, unsigned texture);
 
     std::map<std::string, WidgetRect> rects_;
+    UiTextures textures_;  // this frame's
     glm::ivec2 sceneViewSize_{320, 320};
     glm::vec2 sceneViewOrigin_{0.0f};
     ImDrawList* sceneDrawList_ = nullptr;

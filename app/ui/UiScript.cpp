@@ -37,16 +37,16 @@ void UiScript::clickWidget(const std::string& id) {
     click(widget(id).center());
 }
 
-void UiScript::drag(glm::vec2 from, glm::vec2 to, int steps) {
+void UiScript::drag(glm::vec2 from, glm::vec2 to, int steps, int button) {
     input_.mousePos = from;
     frame();
-    input_.mouseDown[0] = true;
+    input_.mouseDown[button] = true;
     frame();
     for (int i = 1; i <= steps; ++i) {
         input_.mousePos = from + (to - from) * (float(i) / float(steps));
         frame();
     }
-    input_.mouseDown[0] = false;
+    input_.mouseDown[button] = false;
     frame();
 }
 

@@ -18,8 +18,9 @@ class UiScript {
     void moveTo(glm::vec2 position);  // one frame
     void click(glm::vec2 position);   // three frames
     void clickWidget(const std::string& id);
-    // Press at `from`, move to `to` in `steps` frames, release (steps + 2 frames).
-    void drag(glm::vec2 from, glm::vec2 to, int steps);
+    // Press at `from`, move to `to` in `steps` frames, release (steps + 2 frames). `button`:
+    // 0 left, 1 right, 2 middle.
+    void drag(glm::vec2 from, glm::vec2 to, int steps, int button = 0);
     void type(const std::string& text);              // one frame
     // Down one frame, then up one frame.
     void pressKey(int imguiKey, bool ctrl = false, bool shift = false);

@@ -247,10 +247,42 @@ TEST_F(ScriptedUi, ThreeDViewOrbitsZoomsAndResets) {
     script->wheel(view.center(), 2.0f);
     EXPECT_GT(app->state().view.zoom, zoom) << "wheel up zooms in";
 
+    // Right-drag up zooms in, down zooms out; middle-drag pans.
+    const float zoomed = app->state().view.zoom;
+    script->drag(view.center(), view.center() + glm::vec2(0.0f, 40.0f), 4, 1);
+    EXPECT_LT(app->state().view.zoom, zoomed) << "right-drag down zooms out";
+    const float azimuthBeforePan = app->state().view.azimuthDeg;
+    auto sourceLabel = [&] {
+        for (const auto& l : app->sceneRenderer().labels())
+            if (l.text == "source") return l.pixel;
+        return glm::vec2(NAN);
+    };
+    const glm::vec2 sourceBefore = sourceLabel();
+    script->drag(view.center(), view.center() + glm::vec2(50.0f, 20.0f), 4, 2);
+    script->idle(1);
+    const glm::vec2 moved = sourceLabel() - sourceBefore;
+    EXPECT_GT(moved.x, 25.0f) << "middle-drag right moves the scene right (with the mouse)";
+    EXPECT_GT(moved.y, 10.0f) << "... and down";
+    EXPECT_EQ(app->state().view.azimuthDeg, azimuthBeforePan) << "panning does not orbit";
+
     script->clickWidget("button:reset-view");
+    script->idle(1);
     EXPECT_EQ(app->state().view.azimuthDeg, initial.azimuthDeg);
     EXPECT_EQ(app->state().view.elevationDeg, initial.elevationDeg);
-    EXPECT_EQ(app->state().view.zoom, initial.zoom);
+    EXPECT_EQ(app->state().view.zoom, 1.0f) << "framed";
+    EXPECT_EQ(app->state().view.panX, 0.0f);
+    // The whole set-up is in view: the source and film labels lie inside the 3D view.
+    const glm::ivec2 size = app->ui().sceneViewSize();
+    int inside = 0;
+    for (const auto& l : app->sceneRenderer().labels())
+        if (l.text == "source" || l.text == "film") {
+            EXPECT_GE(l.pixel.x, 0.0f) << l.text;
+            EXPECT_GE(l.pixel.y, 0.0f) << l.text;
+            EXPECT_LE(l.pixel.x, float(size.x)) << l.text;
+            EXPECT_LE(l.pixel.y, float(size.y)) << l.text;
+            ++inside;
+        }
+    EXPECT_EQ(inside, 2);
 }
 
 TEST_F(ScriptedUi, HelpButtonOpensAndClosesTheHelpWindow) {
