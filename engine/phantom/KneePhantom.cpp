@@ -249,7 +249,6 @@ struct KneePose {
     }
 };
 
-
 // Which bone is nearest to a point (given in the model, tibia and patella frames) and how far.
 struct NearestBone {
     double distance = kFar;  // signed distance to that bone's surface, mm (kFar: none near)
@@ -308,91 +307,102 @@ glm::dvec3 kneeModelToWorld(const KneePhantomParams& params, KneeSegment segment
     return m;
 }
 
-Volume makeKneePhantom(const KneePhantomParams& params) {
-    validateKneeParams(params);
-    Volume v = Volume::allocate(params.dims, params.hu.air);
+namespace {
+
+// The phantom's grid: `params.dims` voxels over `params.fieldMm`, centred at the joint.
+Volume kneeGrid(const KneePhantomParams& params, float fill) {
+    Volume v = Volume::allocate(params.dims, fill);
     v.spacing = params.fieldMm / glm::dvec3(params.dims);
     v.origin = -(glm::dvec3(params.dims) - 1.0) * 0.5 * v.spacing;  // centre at the joint
+    return v;
+}
+
+double voxelWidthOf(const Volume& v) {
+    return (v.spacing.x + v.spacing.y + v.spacing.z) / 3.0;
+}
+
+// Calls body(i, j, k, m) for every voxel of `v`, m its centre in the model frame (x mirrored
+// for a left knee); slices in parallel, each voxel written by one call only.
+template <class Body>
+void forEachVoxel(const KneePhantomParams& params, const Volume& v, const Body& body) {
+    const double mirror = params.leftKnee ? -1.0 : 1.0;
+    parallelFor(params.dims.z, params.threads, [&](int k0, int k1) {
+        for (int k = k0; k < k1; ++k)
+            for (int j = 0; j < params.dims.y; ++j)
+                for (int i = 0; i < params.dims.x; ++i) {
+                    glm::dvec3 m = v.origin + v.spacing * glm::dvec3(i, j, k);
+                    m.x *= mirror;
+                    body(i, j, k, m);
+                }
+    });
+}
+
+}  // namespace
+
+Volume makeKneePhantom(const KneePhantomParams& params) {
+    validateKneeParams(params);
+    Volume v = kneeGrid(params, params.hu.air);
     v.meta.source = "phantom:knee";
     v.meta.modality = "CT";
     v.meta.units = ValueUnit::HounsfieldUnits;
     v.meta.description = describeKnee(params);
 
     const KneePose pose(params.flexionDeg);
-    const double voxelWidth = (v.spacing.x + v.spacing.y + v.spacing.z) / 3.0;
+    const double voxelWidth = voxelWidthOf(v);
     const Coverage cover{1.0 / voxelWidth};
     const BoneBoxes boxes(voxelWidth);
     const KneeTissueHU hu = params.hu;
-    const double mirror = params.leftKnee ? -1.0 : 1.0;
 
-    parallelFor(params.dims.z, params.threads, [&](int k0, int k1) {
-        for (int k = k0; k < k1; ++k)
-            for (int j = 0; j < params.dims.y; ++j)
-                for (int i = 0; i < params.dims.x; ++i) {
-                    glm::dvec3 m = v.origin + v.spacing * glm::dvec3(i, j, k);
-                    m.x *= mirror;
-                    const glm::dvec3 t = pose.modelToTibia(m);
+    forEachVoxel(params, v, [&](int i, int j, int k, const glm::dvec3& m) {
+        const glm::dvec3 t = pose.modelToTibia(m);
 
-                    // Soft tissue, in the frame of whichever segment's side of the bisecting
-                    // plane the point lies on.
-                    const glm::dvec3 rel = m - kFlexionAxisPoint;
-                    const bool thighSide = -rel.y * pose.sinHalf + rel.z * pose.cosHalf >= 0.0;
-                    const glm::dvec3 q = thighSide ? m : t;
-                    const LimbProfile limb = limbProfile(q.z - kFlexionAxisPoint.z);
-                    const double skin = ellipse(glm::dvec2(q.x, q.y) - limb.center, limb.semiAxes);
-                    const double inSkin = cover(skin);
-                    if (inSkin <= 0.0) continue;  // air
-                    const double inMuscle = cover(skin + limb.fatMm);
-                    double pad = 0.0;
-                    if (inMuscle > 0.0) {
-                        const double popliteal =
-                            ellipsoid(m - glm::dvec3(0.0, 46.0, 20.0), {24.0, 14.0, 40.0});
-                        const double infrapatellar =
-                            ellipsoid(t - glm::dvec3(0.0, -30.0, 4.0), {18.0, 6.0, 9.0});
-                        pad = cover(std::min(popliteal, infrapatellar));
-                    }
-                    double value = hu.air + inSkin * (hu.fat - hu.air) +
-                                   inMuscle * (1.0 - pad) * (hu.muscle - hu.fat);
+        // Soft tissue, in the frame of whichever segment's side of the bisecting
+        // plane the point lies on.
+        const glm::dvec3 rel = m - kFlexionAxisPoint;
+        const bool thighSide = -rel.y * pose.sinHalf + rel.z * pose.cosHalf >= 0.0;
+        const glm::dvec3 q = thighSide ? m : t;
+        const LimbProfile limb = limbProfile(q.z - kFlexionAxisPoint.z);
+        const double skin = ellipse(glm::dvec2(q.x, q.y) - limb.center, limb.semiAxes);
+        const double inSkin = cover(skin);
+        if (inSkin <= 0.0) return;  // air
+        const double inMuscle = cover(skin + limb.fatMm);
+        double pad = 0.0;
+        if (inMuscle > 0.0) {
+            const double popliteal = ellipsoid(m - glm::dvec3(0.0, 46.0, 20.0), {24.0, 14.0, 40.0});
+            const double infrapatellar =
+                ellipsoid(t - glm::dvec3(0.0, -30.0, 4.0), {18.0, 6.0, 9.0});
+            pad = cover(std::min(popliteal, infrapatellar));
+        }
+        double value =
+            hu.air + inSkin * (hu.fat - hu.air) + inMuscle * (1.0 - pad) * (hu.muscle - hu.fat);
 
-                    // Bones: the nearest one decides (they do not overlap).
-                    const NearestBone bone = boxes.nearest(m, t, pose.modelToPatella(m));
-                    const double d = bone.distance, cortex = bone.cortexMm;
-                    const double inBone = cover(d);
-                    if (inBone > 0.0) {
-                        const double inCancellous = cover(d + cortex);
-                        value += inBone * (hu.cortical - value) +
-                                 inCancellous * (hu.cancellous - hu.cortical);
-                    }
-                    v.at(i, j, k) = static_cast<float>(value);
-                }
+        // Bones: the nearest one decides (they do not overlap).
+        const NearestBone bone = boxes.nearest(m, t, pose.modelToPatella(m));
+        const double d = bone.distance, cortex = bone.cortexMm;
+        const double inBone = cover(d);
+        if (inBone > 0.0) {
+            const double inCancellous = cover(d + cortex);
+            value += inBone * (hu.cortical - value) + inCancellous * (hu.cancellous - hu.cortical);
+        }
+        v.at(i, j, k) = static_cast<float>(value);
     });
     return v;
 }
 
 Volume makeKneeBoneLabels(const KneePhantomParams& params) {
     validateKneeParams(params);
-    Volume v = Volume::allocate(params.dims, 0.0f);
-    v.spacing = params.fieldMm / glm::dvec3(params.dims);
-    v.origin = -(glm::dvec3(params.dims) - 1.0) * 0.5 * v.spacing;
+    Volume v = kneeGrid(params, 0.0f);
     v.meta.source = "phantom:knee labels";
-    v.meta.description = "bone labels (1 femur, 2 tibia, 3 fibula, 4 patella) of the " +
-                         describeKnee(params);
+    v.meta.description =
+        "bone labels (1 femur, 2 tibia, 3 fibula, 4 patella) of the " + describeKnee(params);
     const KneePose pose(params.flexionDeg);
-    const double voxelWidth = (v.spacing.x + v.spacing.y + v.spacing.z) / 3.0;
+    const double voxelWidth = voxelWidthOf(v);
     const Coverage cover{1.0 / voxelWidth};
     const BoneBoxes boxes(voxelWidth);
-    const double mirror = params.leftKnee ? -1.0 : 1.0;
-    parallelFor(params.dims.z, params.threads, [&](int k0, int k1) {
-        for (int k = k0; k < k1; ++k)
-            for (int j = 0; j < params.dims.y; ++j)
-                for (int i = 0; i < params.dims.x; ++i) {
-                    glm::dvec3 m = v.origin + v.spacing * glm::dvec3(i, j, k);
-                    m.x *= mirror;
-                    const NearestBone bone =
-                        boxes.nearest(m, pose.modelToTibia(m), pose.modelToPatella(m));
-                    if (cover(bone.distance) > 0.0)
-                        v.at(i, j, k) = static_cast<float>(static_cast<int>(bone.label));
-                }
+    forEachVoxel(params, v, [&](int i, int j, int k, const glm::dvec3& m) {
+        const NearestBone bone = boxes.nearest(m, pose.modelToTibia(m), pose.modelToPatella(m));
+        if (cover(bone.distance) > 0.0)
+            v.at(i, j, k) = static_cast<float>(static_cast<int>(bone.label));
     });
     return v;
 }
