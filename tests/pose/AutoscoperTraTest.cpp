@@ -7,24 +7,14 @@
 
 #include "common/TestData.h"
 #include "core/Error.h"
+#include "RotationMatrices.h"
 #include "pose/AutoscoperTra.h"
 
 namespace {
 
-using Mat = std::array<std::array<double, 3>, 3>;
-Mat mul(const Mat& a, const Mat& b) {
-    Mat m{};
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j)
-            for (int k = 0; k < 3; ++k) m[i][j] += a[i][k] * b[k][j];
-    return m;
-}
-Mat rot(int axis, double deg) {
-    const double c = std::cos(deg * M_PI / 180), s = std::sin(deg * M_PI / 180);
-    if (axis == 0) return {{{1, 0, 0}, {0, c, -s}, {0, s, c}}};
-    if (axis == 1) return {{{c, 0, s}, {0, 1, 0}, {-s, 0, c}}};
-    return {{{c, -s, 0}, {s, c, 0}, {0, 0, 1}}};
-}
+using fm::test::mul;
+using fm::test::rot;
+using Mat = fm::test::Mat3;
 
 std::string errorOf(const std::string& text, fm::TraForm form = fm::TraForm::Auto) {
     try {

@@ -7,31 +7,16 @@
 
 #include "common/TestData.h"
 #include "core/Error.h"
+#include "RotationMatrices.h"
 #include "pose/JointTrackPoses.h"
 
 namespace {
 
-using Mat = std::array<std::array<double, 3>, 3>;
-
-Mat mul(const Mat& a, const Mat& b) {
-    Mat m{};
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j)
-            for (int k = 0; k < 3; ++k) m[i][j] += a[i][k] * b[k][j];
-    return m;
-}
-Mat rx(double d) {
-    const double c = std::cos(d * M_PI / 180), s = std::sin(d * M_PI / 180);
-    return {{{1, 0, 0}, {0, c, -s}, {0, s, c}}};
-}
-Mat ry(double d) {
-    const double c = std::cos(d * M_PI / 180), s = std::sin(d * M_PI / 180);
-    return {{{c, 0, s}, {0, 1, 0}, {-s, 0, c}}};
-}
-Mat rz(double d) {
-    const double c = std::cos(d * M_PI / 180), s = std::sin(d * M_PI / 180);
-    return {{{c, -s, 0}, {s, c, 0}, {0, 0, 1}}};
-}
+using fm::test::mul;
+using Mat = fm::test::Mat3;
+Mat rx(double d) { return fm::test::rot(0, d); }
+Mat ry(double d) { return fm::test::rot(1, d); }
+Mat rz(double d) { return fm::test::rot(2, d); }
 
 std::string errorOf(const std::string& text) {
     try {
