@@ -57,8 +57,8 @@ void runInfo(const std::string& spec, const fm::cli::BoneOptions& bones) {
     std::printf("orientation  %s\n", fm::orientationCode(v.direction).c_str());
     std::printf("units        %s\n", fm::toString(v.meta.units));
     if (s.nanCount + s.infiniteCount > 0)
-        std::printf("non-finite   %zu NaN and %zu infinite voxels (not a CT value; the figures below "
-                    "leave them out, and a DRR refuses them)\n",
+        std::printf("non-finite   %zu NaN and %zu infinite voxels (the figures below leave them "
+                    "out; a DRR takes NaN as no data and refuses infinite voxels)\n",
                     s.nanCount, s.infiniteCount);
     std::printf("values       min %.6g  max %.6g  mean %.6g\n", s.min, s.max, s.mean);
     std::printf("percentiles  1%%: %.6g  5%%: %.6g  50%%: %.6g  95%%: %.6g  99%%: %.6g\n",
