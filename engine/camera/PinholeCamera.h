@@ -54,9 +54,12 @@ struct PinholeCamera {
 // (nearest rotation) by makePinholeCamera so that every later conversion is exact to rounding.
 // Largest image side accepted (pixels): beyond any flat panel or intensifier camera.
 inline constexpr int kMaxImageSide = 16384;
-// Detector plane distance (mm from the source) used when the pixel pitch is unknown. The line
+// Detector plane distance (mm from the source) used when the pixel pitch is unknown. A DRR ray
+// runs from the source to its detector pixel, so the plane must lie behind everything the
+// camera sees: 10 m is beyond any X-ray set-up (sources sit 0.5-2 m from the subject; the wrist
+// calibrations here put the world origin 0.9 and 1.2 m from their sources). Beyond that the line
 // integrals do not depend on it; it only scales the detector spacing in the geometry JSON.
-inline constexpr double kDefaultPlaneDistanceMm = 1000.0;
+inline constexpr double kDefaultPlaneDistanceMm = 10000.0;
 
 // Parts of a 3x3 K matrix as a file writes it (row-major: k[row][col]).
 struct CameraMatrix {

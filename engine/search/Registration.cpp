@@ -208,6 +208,15 @@ double Registration::viewCost(const Scene& scene, const View& view, int levelInd
     return -similarity(settings_.similarity, cropReference(level.reference, inRoi), drr, &mask);
 }
 
+std::vector<double> Registration::viewCosts(const SceneParams& params, int level) const {
+    if (level < 0 || level >= levelCount())
+        throw Error("registration: level " + std::to_string(level) + " does not exist");
+    const Scene scene = sceneAt(scene_, *parameterization_, params);
+    std::vector<double> costs;
+    for (const View& view : views_) costs.push_back(viewCost(scene, view, level, settings_.threads));
+    return costs;
+}
+
 double Registration::levelCost(const SceneParams& params, int level, int threads) const {
     const Scene scene = sceneAt(scene_, *parameterization_, params);
     double total = viewCost(scene, views_[0], level, threads);

@@ -128,6 +128,8 @@ class Registration {
     // Sum over the views of -similarity of `params` at level `level` (what the optimizers
     // minimise).
     double cost(const SceneParams& params, int level) const;
+    // The same per view (in the order of the views given): what each camera says of a pose.
+    std::vector<double> viewCosts(const SceneParams& params, int level) const;
 
     const RegistrationSettings& settings() const { return settings_; }
     const Scene& scene() const { return scene_; }

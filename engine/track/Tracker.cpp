@@ -1,0 +1,191 @@
+#include "track/Tracker.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "core/Error.h"
+#include "core/Random.h"
+#include "io/HeaderText.h"
+#include "scene/ObjectPoseParameterization.h"
+
+namespace fm {
+
+RegistrationSettings TrackSettings::defaultTrackingRegistration() {
+    RegistrationSettings s;
+    s.method = SearchMethod::CmaEs;
+    s.similarity = SimilarityMeasure::GradientNcc;
+    s.searchRadius = {3.0, 3.0, 3.0, 3.0, 3.0, 3.0};
+    s.boundsFactor = 2.0;
+    s.levelFactors = {4, 2, 1};
+    s.globalEvaluations = 240;
+    s.polishEvaluations = 200;
+    // Biplane constrains depth as well as the film axes: no separate depth line search.
+    s.depthRounds = 0;
+    s.cropToModel = true;
+    return s;
+}
+
+const char* toString(FrameRecord::Status status) {
+    switch (status) {
+        case FrameRecord::Status::Tracked: return "tracked";
+        case FrameRecord::Status::NoStart: return "no start pose";
+        case FrameRecord::Status::NotInView: return "not in view";
+        case FrameRecord::Status::BadFrame: return "bad frame";
+        case FrameRecord::Status::Stopped: return "stopped";
+    }
+    return "?";
+}
+
+Tracker::Tracker(Scene scene, std::string bone, FrameViews frames, TrackSettings settings)
+    : scene_(std::move(scene)), frames_(std::move(frames)), settings_(std::move(settings)) {
+    const auto index = scene_.find(bone);
+    if (!index) throw Error("track: the scene has no bone called '" + bone + "'");
+    bone_ = *index;
+    if (scene_.cameras.empty()) throw Error("track: the scene has no camera");
+    if (!frames_) throw Error("track: no frame source");
+    if (!(settings_.minInViewFraction > 0.0 && settings_.minInViewFraction <= 1.0))
+        throw Error("track: the in-view fraction must be in (0, 1]");
+}
+
+double Tracker::inViewFraction(std::size_t camera, const RigidTransform& pose) const {
+    const ProjectionGeometry& g = scene_.cameras.at(camera);
+    const Box3 box = scene_.objects[bone_].model->bounds();
+    if (box.empty()) return 0.0;
+    glm::dvec2 lo(1e300), hi(-1e300);
+    for (int c = 0; c < 8; ++c) {
+        const glm::dvec3 corner{(c & 1) ? box.upper.x : box.lower.x, (c & 2) ? box.upper.y : box.lower.y,
+                                (c & 4) ? box.upper.z : box.lower.z};
+        const auto px = g.projectToPixel(pose.applyToPoint(corner));
+        if (!px) return 0.0;
+        lo = glm::min(lo, *px);
+        hi = glm::max(hi, *px);
+    }
+    const double area = std::max(hi.x - lo.x, 1e-9) * std::max(hi.y - lo.y, 1e-9);
+    const glm::dvec2 clo = glm::max(lo, glm::dvec2(-0.5));
+    const glm::dvec2 chi = glm::min(hi, glm::dvec2(g.detector.size) - 0.5);
+    if (chi.x <= clo.x || chi.y <= clo.y) return 0.0;
+    return (chi.x - clo.x) * (chi.y - clo.y) / area;
+}
+
+FrameRecord Tracker::trackFrame(int frame, const RigidTransform& start,
+                                const std::atomic<bool>* stop) const {
+    const auto t0 = std::chrono::steady_clock::now();
+    FrameRecord record;
+    record.frame = frame;
+    record.viewCost.assign(scene_.cameras.size(), std::numeric_limits<double>::quiet_NaN());
+    auto finish = [&](FrameRecord::Status status, std::string note) {
+        record.status = status;
+        record.note = std::move(note);
+        record.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        return record;
+    };
+    // 2. The views: every camera with an image of the frame that sees the bone.
+    std::vector<RegistrationView> all;
+    try {
+        all = frames_(frame);
+    } catch (const Error& e) {
+        return finish(FrameRecord::Status::BadFrame, e.what());
+    }
+    std::vector<RegistrationView> views;
+    std::string cameras;
+    for (RegistrationView& v : all) {
+        if (v.camera >= scene_.cameras.size()) continue;
+        if (inViewFraction(v.camera, start) < settings_.minInViewFraction) continue;
+        cameras += (cameras.empty() ? "" : ", ") + std::to_string(v.camera + 1);
+        views.push_back(std::move(v));
+    }
+    if (views.empty()) return finish(FrameRecord::Status::NotInView, "the bone is in no camera's view");
+
+    // 3. The registration, in the first taking camera's frame, pivot at the bone's centre.
+    const SceneObject& bone = scene_.objects[bone_];
+    auto param = std::make_shared<ObjectPoseParameterization>(
+        bone.name, scene_.cameras[views[0].camera], start, defaultPivot(*bone.model));
+    RegistrationSettings rs = settings_.registration;
+    Rng seeds(rs.seed ^ (0x9E3779B97F4A7C15ull * static_cast<std::uint64_t>(frame + 1)));
+    rs.seed = seeds.split();
+    const bool singleView = views.size() == 1;
+    if (singleView) rs.searchRadius[2] = settings_.singleViewDepthRadius;  // depth: see header
+    std::vector<std::size_t> used;
+    for (const RegistrationView& v : views) used.push_back(v.camera);
+    const Registration reg(scene_, param, views, rs);
+    RegistrationResult r = reg.run(param->referenceParams(), {}, stop);
+    int evaluations = r.evaluations;
+    if (settings_.refineEvaluations > 0 && !r.stopped) {
+        // 3b. Restart the simplex at full resolution around the answer.
+        RegistrationSettings fine = rs;
+        fine.levelFactors = {1};
+        fine.method = SearchMethod::NelderMead;
+        fine.searchRadius.fill(settings_.refineRadius);
+        if (singleView) fine.searchRadius[2] = settings_.singleViewDepthRadius;
+        fine.globalEvaluations = settings_.refineEvaluations;
+        fine.polishEvaluations = 0;
+        fine.polishCoarsest = false;
+        const Registration refine(scene_, param, std::move(views), fine);
+        const RegistrationResult f = refine.run(r.params, {}, stop);
+        evaluations += f.evaluations;
+        if (f.similarity >= r.similarity || f.stopped) r = f;
+    }
+
+    // 4. The record.
+    record.worldFromBone = param->worldFromObject(r.params);
+    const std::vector<double> costs = reg.viewCosts(r.params, reg.levelCount() - 1);
+    for (std::size_t i = 0; i < used.size(); ++i) record.viewCost[used[i]] = costs[i];
+    record.camerasUsed = static_cast<int>(used.size());
+    record.evaluations = evaluations;
+    if (r.stopped) return finish(FrameRecord::Status::Stopped, "stopped");
+    return finish(FrameRecord::Status::Tracked,
+                  used.size() > 1 ? "cameras " + cameras : "single view: camera " + cameras);
+}
+
+void Tracker::run(const std::vector<int>& frames, const std::map<int, RigidTransform>& keyframes,
+                  std::map<int, RigidTransform>& tracked,
+                  const std::function<void(const FrameRecord&)>& afterFrame,
+                  const std::atomic<bool>* stop) const {
+    const bool backwards = frames.size() > 1 && frames[1] < frames[0];
+    for (int frame : frames) {
+        if (stop && stop->load()) return;
+        // 1. The start pose.
+        const auto start = initialGuess(settings_.init, frame, tracked, keyframes, backwards);
+        FrameRecord record;
+        if (!start) {
+            record.frame = frame;
+            record.status = FrameRecord::Status::NoStart;
+            record.note = "no start pose (give a keyframe or a start pose)";
+            record.viewCost.assign(scene_.cameras.size(), std::numeric_limits<double>::quiet_NaN());
+        } else {
+            record = trackFrame(frame, *start, stop);
+        }
+        if (record.status == FrameRecord::Status::Tracked) tracked[frame] = *record.worldFromBone;
+        if (afterFrame) afterFrame(record);
+        if (record.status == FrameRecord::Status::Stopped) return;
+    }
+}
+
+std::vector<int> parseFrameRange(const std::string& text, int count, bool reverse) {
+    const auto parts = [&] {
+        std::vector<std::string> p;
+        std::size_t begin = 0;
+        for (std::size_t i = 0; i <= text.size(); ++i)
+            if (i == text.size() || text[i] == ':') {
+                p.push_back(text.substr(begin, i - begin));
+                begin = i + 1;
+            }
+        return p;
+    }();
+    if (parts.size() < 2 || parts.size() > 3)
+        throw Error("--frames must be A:B or A:B:STEP (0-based, inclusive), not '" + text + "'");
+    const long long a = io::parseInteger(parts[0], "--frames start");
+    const long long b = io::parseInteger(parts[1], "--frames end");
+    const long long step = parts.size() == 3 ? io::parseInteger(parts[2], "--frames step") : 1;
+    if (a < 0 || b < a || b >= count)
+        throw Error("--frames " + text + ": the sequence has frames 0.." + std::to_string(count - 1) +
+                    " and the range must be A <= B within them");
+    if (step < 1) throw Error("--frames " + text + ": the step must be at least 1");
+    std::vector<int> frames;
+    for (long long f = a; f <= b; f += step) frames.push_back(static_cast<int>(f));
+    if (reverse) std::reverse(frames.begin(), frames.end());
+    return frames;
+}
+
+}  // namespace fm

@@ -1,0 +1,106 @@
+#pragma once
+// Tracking one bone through a sequence: each frame is a registration of the bone's pose in all
+// cameras at once (the cost is the sum over the cameras that see the bone), started from a
+// guess made from the frames already done (InitialGuess.h).
+//
+// Per frame (numbered as in Tracker::trackFrame):
+//   1. the start pose: the guess for this frame
+//   2. the views: a camera takes part only if the bone's box, projected at the start pose,
+//      lies mostly on its image (minInViewFraction); a frame seen by one camera is tracked in
+//      that one, keeping the predicted depth, and reported as single-view; seen by none, it is
+//      skipped
+//   3. the registration: the bone's pose in the first taking camera's frame
+//      (ObjectPoseParameterization, pivot at the bone's centre), search around the start;
+//      3b. a Nelder-Mead restart at full resolution from its result
+//   4. the record: pose, cost per camera (NaN where not used), evaluations, time
+// Frames inside a run stay sequential: each one starts from the poses before it.
+// Deterministic: frame k's seed is a function of (seed, k) only, so a resumed run gives the
+// same poses as an uninterrupted one.
+#include <atomic>
+#include <functional>
+#include <limits>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "scene/Scene.h"
+#include "search/Registration.h"
+#include "track/InitialGuess.h"
+
+namespace fm {
+
+// A frame's prepared radiographs, one view per camera that has an image of it (camera index set
+// in each view). Throws fm::Error for a frame it cannot read: the tracker reports and skips it.
+using FrameViews = std::function<std::vector<RegistrationView>(int frame)>;
+
+struct TrackSettings {
+    RegistrationSettings registration = defaultTrackingRegistration();
+    InitMode init = InitMode::Extrapolate;
+    // A camera takes part when at least this fraction of the bone's projected box lies on its
+    // image at the start pose.
+    double minInViewFraction = 0.5;
+    // Step 3b: a Nelder-Mead restart at full resolution from the result, with this radius (mm
+    // and deg) and budget (0 = none). A simplex that has collapsed along one direction (the
+    // rotation about a long bone's axis) stalls there; a fresh one does not.
+    double refineRadius = 0.5;
+    // A frame seen by one camera keeps the predicted depth along that camera's view (searched
+    // within this radius, mm): one view hardly constrains depth, and a depth that drifts would
+    // be carried into the next frames' starts by the extrapolation.
+    double singleViewDepthRadius = 0.25;
+    int refineEvaluations = 150;
+
+    // Local search around the start: Autoscoper's PSO box is +-3 mm / +-3 deg; CMA-ES global
+    // search at 1/4 and 1/2 resolution, polish at full, cropped to the bone.
+    static RegistrationSettings defaultTrackingRegistration();
+};
+
+struct FrameRecord {
+    enum class Status { Tracked, NoStart, NotInView, BadFrame, Stopped };
+    int frame = 0;
+    Status status = Status::NoStart;
+    std::string note;                             // "biplane", "single view: camera 2", the error
+    std::optional<RigidTransform> worldFromBone;  // when tracked
+    std::vector<double> viewCost;                 // per camera, NaN when not used
+    int camerasUsed = 0;
+    int evaluations = 0;
+    double seconds = 0.0;
+};
+const char* toString(FrameRecord::Status status);
+
+class Tracker {
+  public:
+    // `bone` names the scene object to track; the others stay where they are (and are seen).
+    // Throws fm::Error if there is no such object or no camera.
+    Tracker(Scene scene, std::string bone, FrameViews frames, TrackSettings settings);
+
+    // One frame from `start` (steps 2-4).
+    FrameRecord trackFrame(int frame, const RigidTransform& start,
+                           const std::atomic<bool>* stop = nullptr) const;
+
+    // Tracks `frames` in the given order. `tracked` holds poses already found (a resumed run)
+    // and receives every new one; `keyframes` are the user's. afterFrame is called after every
+    // frame (to write results at once). Stops after the current frame when *stop is set.
+    void run(const std::vector<int>& frames, const std::map<int, RigidTransform>& keyframes,
+             std::map<int, RigidTransform>& tracked,
+             const std::function<void(const FrameRecord&)>& afterFrame,
+             const std::atomic<bool>* stop = nullptr) const;
+
+    // The fraction of `bone`'s projected box (at `pose`) that lies on camera `camera`'s image
+    // (0 when a corner is behind the source).
+    double inViewFraction(std::size_t camera, const RigidTransform& pose) const;
+
+    const Scene& scene() const { return scene_; }
+
+  private:
+    Scene scene_;
+    std::size_t bone_ = 0;
+    FrameViews frames_;
+    TrackSettings settings_;
+};
+
+// frames "A:B[:STEP]" (inclusive, 0-based) of a sequence of `count` frames, in order, reversed
+// when `reverse`. fm::Error naming --frames for anything else.
+std::vector<int> parseFrameRange(const std::string& text, int count, bool reverse);
+
+}  // namespace fm

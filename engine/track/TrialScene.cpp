@@ -1,0 +1,138 @@
+#include "track/TrialScene.h"
+
+#include <memory>
+
+#include "camera/CameraFile.h"
+#include "core/Error.h"
+#include "drr/Drr.h"
+#include "io/ByteSource.h"
+#include "io/TiffReader.h"
+#include "io/TiffVolume.h"
+#include "radiograph/Radiograph.h"
+#include "scene/XrayModel.h"
+#include "volume/AutoscoperVolumeFrame.h"
+
+namespace fm {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// Autoscoper's VolumeFlip: index j -> W-1-j along each flipped axis, before anything else.
+void flipVolume(Volume& v, const glm::ivec3& flip) {
+    if (flip == glm::ivec3(0)) return;
+    Volume out = v;
+    for (int k = 0; k < v.dims.z; ++k)
+        for (int j = 0; j < v.dims.y; ++j)
+            for (int i = 0; i < v.dims.x; ++i)
+                out.at(flip.x ? v.dims.x - 1 - i : i, flip.y ? v.dims.y - 1 - j : j,
+                       flip.z ? v.dims.z - 1 - k : k) = v.at(i, j, k);
+    v.values = std::move(out.values);
+}
+
+ImageSequence openSequence(const fs::path& frames) {
+    std::error_code ec;
+    if (fs::is_directory(frames, ec)) return listImageFolder(frames);
+    ImageSequence s;
+    s.source = frames;
+    s.multiPage = true;
+    s.pageCount = io::readTiffShape(frames).pages;
+    return s;
+}
+
+}  // namespace
+
+TrialScene loadTrialScene(const Trial& trial, const std::vector<std::string>& bones, int threads) {
+    checkTrialFiles(trial);
+    TrialScene t;
+    t.trial = trial;
+    const std::string where = "trial " + io::quoted(trial.source);
+    for (std::size_t c = 0; c < trial.cameras.size(); ++c) {
+        const TrialCamera& tc = trial.cameras[c];
+        CameraReadResult cam = readCameraFile(tc.calibration);
+        for (const std::string& w : cam.warnings) t.trial.warnings.push_back(w);
+        ImageSequence seq = openSequence(tc.frames);
+        // The first frame's size must be the calibration's (every frame is checked on reading).
+        const io::TiffShape shape = io::readTiffShape(seq.multiPage ? seq.source : seq.frames[0]);
+        checkImageSize(cam.camera, io::quoted(tc.calibration), shape.width, shape.height,
+                       seq.multiPage ? io::quoted(seq.source) : io::quoted(seq.frames[0]));
+        t.scene.cameras.push_back(toProjectionGeometry(cam.camera));
+        t.cameras.push_back(cam.camera);
+        t.sequences.push_back(std::move(seq));
+    }
+    t.frameCount = t.sequences[0].frameCount();
+    for (std::size_t c = 1; c < t.sequences.size(); ++c) {
+        if (t.sequences[c].frameCount() != t.frameCount)
+            throw Error(where + ": camera " + trial.cameras[0].name + " has " +
+                        std::to_string(t.frameCount) + " frames but camera " + trial.cameras[c].name +
+                        " has " + std::to_string(t.sequences[c].frameCount()));
+        if (t.sequences[c].multiPage || t.sequences[0].multiPage) continue;
+        for (int f = 0; f < t.frameCount; ++f) {
+            const int a = frameNumberInName(t.sequences[0].frames[f]);
+            const int b = frameNumberInName(t.sequences[c].frames[f]);
+            if (a != b)
+                t.trial.warnings.push_back(where + ": frame " + std::to_string(f) + " is " +
+                                           t.sequences[0].frameName(f) + " in camera " +
+                                           trial.cameras[0].name + " but " + t.sequences[c].frameName(f) +
+                                           " in camera " + trial.cameras[c].name + " (not simultaneous?)");
+        }
+    }
+    std::vector<std::string> names = bones;
+    if (names.empty())
+        for (const TrialBone& b : trial.bones) names.push_back(b.name);
+    for (const std::string& name : names) {
+        const TrialBone& b = trial.bone(name);
+        Volume v = io::readTiffVolume(b.volume, b.voxelSize);
+        flipVolume(v, b.flip);
+        t.autoscoperFromVolume[name] = autoscoperVolumeFromWorld(v);
+        DrrValueOptions values;
+        values.values = DrrValues::Raw;  // the crops hold raw CT integers, background 0
+        values.threads = threads;
+        auto model = std::make_shared<VolumeXrayModel>(prepareDrrVolume(v, values));
+        t.scene.objects.push_back({name, model, RigidTransform::identity(), true});
+    }
+    return t;
+}
+
+RadiographPreparation defaultTrialPreparation() {
+    RadiographPreparation p;
+    p.invert = true;       // raw fluoroscopy: dense matter dark; a DRR is bright there
+    p.excludeBelow = 0.0;  // the zero border undistortion leaves
+    return p;
+}
+
+FrameViews trialFrameViews(const TrialScene& trial, const RadiographPreparation& preparation,
+                           const std::vector<std::size_t>& cameras) {
+    std::vector<std::size_t> use = cameras;
+    if (use.empty())
+        for (std::size_t c = 0; c < trial.sequences.size(); ++c) use.push_back(c);
+    for (std::size_t c : use)
+        if (c >= trial.sequences.size())
+            throw Error("camera " + std::to_string(c + 1) + " does not exist (the trial has " +
+                        std::to_string(trial.sequences.size()) + ")");
+    return [&trial, preparation, use](int frame) {
+        std::vector<RegistrationView> views;
+        for (std::size_t c : use) {
+            const ImageSequence& seq = trial.sequences[c];
+            const fs::path file = seq.multiPage ? seq.source : seq.frames.at(static_cast<std::size_t>(frame));
+            const RadiographFile r = readRadiograph(file, seq.multiPage ? frame : -1);
+            checkImageSize(trial.cameras[c], io::quoted(trial.trial.cameras[c].calibration), r.image.width,
+                           r.image.height, io::quoted(file));
+            RadiographPreparation p = preparation;
+            p.fullScale = r.bitsPerSample == 16 ? 65535.0 : 255.0;
+            PreparedRadiograph prepared = prepareRadiograph(r.image, p);
+            views.push_back({c, std::move(prepared.image), std::move(prepared.valid)});
+        }
+        return views;
+    };
+}
+
+RigidTransform objectPoseFromTra(const TrialScene& t, const std::string& bone, const RigidTransform& tra) {
+    return tra * t.autoscoperFromVolume.at(bone);
+}
+
+RigidTransform traPoseFromObject(const TrialScene& t, const std::string& bone, const RigidTransform& pose) {
+    return pose * t.autoscoperFromVolume.at(bone).inverse();
+}
+
+}  // namespace fm

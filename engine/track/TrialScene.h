@@ -1,0 +1,49 @@
+#pragma once
+// A trial made ready to render and track: the cameras (calibration world), one scene object
+// per bone (its TIFF stack flipped as VolumeFlip says, prepared for exact DRRs of its raw
+// values), the image sequences, and the frame conversion each bone's .tra poses need.
+//
+// Frames: world = the calibration's world. A bone object's own frame is our volume frame (voxel
+// centre (i, j, k) at (sx i, sy j, sz k) mm, identity direction); autoscoperFromVolume maps it
+// to Autoscoper's corner frame, so a .tra pose P (worldFromAutoscoperVolume) is the object pose
+// P * autoscoperFromVolume, and back.
+#include <map>
+#include <string>
+#include <vector>
+
+#include "camera/PinholeCamera.h"
+#include "radiograph/RadiographPreparation.h"
+#include "scene/Scene.h"
+#include "track/Tracker.h"
+#include "trial/ImageSequence.h"
+#include "trial/Trial.h"
+
+namespace fm {
+
+struct TrialScene {
+    Trial trial;
+    Scene scene;  // cameras[i] = trial.cameras[i]; objects = the loaded bones, identity poses
+    std::vector<PinholeCamera> cameras;
+    std::vector<ImageSequence> sequences;
+    int frameCount = 0;
+    std::map<std::string, RigidTransform> autoscoperFromVolume;  // per loaded bone
+};
+
+// Loads the cameras, sequences and the named bones (all when `bones` is empty). Throws fm::Error
+// naming the trial file and the field for a missing file, a camera whose image size disagrees
+// with its frames, cameras with different frame counts. Non-simultaneous frame numbers across
+// cameras are a warning (trial.warnings).
+TrialScene loadTrialScene(const Trial& trial, const std::vector<std::string>& bones, int threads = 0);
+
+// How the tracker reads frame k: each camera's radiograph, checked against its calibration's
+// image size and prepared (by default inverted, the zero border that undistortion leaves
+// excluded). A frame that cannot be read throws fm::Error naming the file.
+RadiographPreparation defaultTrialPreparation();
+FrameViews trialFrameViews(const TrialScene& trial, const RadiographPreparation& preparation,
+                           const std::vector<std::size_t>& cameras = {});
+
+// .tra poses (worldFromAutoscoperVolume) <-> object poses (worldFromVolume, ours).
+RigidTransform objectPoseFromTra(const TrialScene& t, const std::string& bone, const RigidTransform& tra);
+RigidTransform traPoseFromObject(const TrialScene& t, const std::string& bone, const RigidTransform& pose);
+
+}  // namespace fm
