@@ -16,6 +16,7 @@
 #include "cli/BoneOptions.h"
 #include "cli/CommandRegistry.h"
 #include "cli/SearchCli.h"
+#include "cli/TrialRegister.h"
 #include "cli/VolumeOption.h"
 #include "core/Error.h"
 #include "match/PoseError.h"
@@ -254,7 +255,18 @@ FM_REGISTER_COMMAND("register", 40, [](CLI::App& app) {
     cmd->add_option("--footprint-margin", a->marginMm,
                     "With --bone: mm added around the bone's footprint (the compared pixels)")
         ->capture_default_str();
-    cmd->callback([a] { runRegister(*a); });
+    auto trial = std::make_shared<fm::cli::TrialRegisterArgs>();
+    fm::cli::addTrialRegisterOptions(cmd, *trial);
+    cmd->callback([a, trial] {
+        if (!trial->trial.empty()) {
+            trial->bone = a->bones.bone;  // --bone names the trial's bone here
+            trial->seed = a->search.seed;
+            trial->threads = a->search.threads;
+            fm::cli::runTrialRegister(*trial);
+        } else {
+            runRegister(*a);
+        }
+    });
     return cmd;
 });
 

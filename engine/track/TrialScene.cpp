@@ -1,5 +1,6 @@
 #include "track/TrialScene.h"
 
+#include <cmath>
 #include <memory>
 
 #include "camera/CameraFile.h"
@@ -10,6 +11,7 @@
 #include "io/TiffVolume.h"
 #include "radiograph/Radiograph.h"
 #include "scene/XrayModel.h"
+#include "similarity/ImagePyramid.h"
 #include "volume/AutoscoperVolumeFrame.h"
 
 namespace fm {
@@ -28,6 +30,26 @@ void flipVolume(Volume& v, const glm::ivec3& flip) {
                 out.at(flip.x ? v.dims.x - 1 - i : i, flip.y ? v.dims.y - 1 - j : j,
                        flip.z ? v.dims.z - 1 - k : k) = v.at(i, j, k);
     v.values = std::move(out.values);
+}
+
+// The camera of images reduced by `f` (ImagePyramid's block means: coarse pixel c' is centred
+// on full pixels f c' + (f - 1) / 2).
+PinholeCamera reducedCamera(PinholeCamera c, int f) {
+    c.fx /= f;
+    c.fy /= f;
+    c.cx = (c.cx + 0.5) / f - 0.5;
+    c.cy = (c.cy + 0.5) / f - 0.5;
+    c.imageSize /= f;
+    c.pixelPitch *= f;
+    return c;
+}
+
+int scaleFor(const glm::ivec2& image, const glm::ivec2& render) {
+    const double ratio = std::min(double(image.x) / render.x, double(image.y) / render.y);
+    int f = 1;
+    while (f * 2 <= 64 && std::abs(std::log2(ratio) - std::log2(f * 2.0)) < std::abs(std::log2(ratio) - std::log2(f)))
+        f *= 2;
+    return f;
 }
 
 ImageSequence openSequence(const fs::path& frames) {
@@ -56,7 +78,8 @@ TrialScene loadTrialScene(const Trial& trial, const std::vector<std::string>& bo
         const io::TiffShape shape = io::readTiffShape(seq.multiPage ? seq.source : seq.frames[0]);
         checkImageSize(cam.camera, io::quoted(tc.calibration), shape.width, shape.height,
                        seq.multiPage ? io::quoted(seq.source) : io::quoted(seq.frames[0]));
-        t.scene.cameras.push_back(toProjectionGeometry(cam.camera));
+        if (c == 0) t.imageScale = scaleFor(cam.camera.imageSize, trial.renderResolution);
+        t.scene.cameras.push_back(toProjectionGeometry(reducedCamera(cam.camera, t.imageScale)));
         t.cameras.push_back(cam.camera);
         t.sequences.push_back(std::move(seq));
     }
@@ -121,7 +144,8 @@ FrameViews trialFrameViews(const TrialScene& trial, const RadiographPreparation&
             RadiographPreparation p = preparation;
             p.fullScale = r.bitsPerSample == 16 ? 65535.0 : 255.0;
             PreparedRadiograph prepared = prepareRadiograph(r.image, p);
-            views.push_back({c, std::move(prepared.image), std::move(prepared.valid)});
+            const int f = trial.imageScale;
+            views.push_back({c, downsampleBy(prepared.image, f), downsampleMaskBy(prepared.valid, f)});
         }
         return views;
     };

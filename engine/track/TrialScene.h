@@ -26,6 +26,10 @@ struct TrialScene {
     std::vector<PinholeCamera> cameras;
     std::vector<ImageSequence> sequences;
     int frameCount = 0;
+    // Frames and cameras are reduced by this power of two (the one nearest to image width /
+    // the trial's RenderResolution: 1760 / 512 -> 4, so 440-pixel images): what Autoscoper's
+    // RenderResolution trades, resolution for time.
+    int imageScale = 1;
     std::map<std::string, RigidTransform> autoscoperFromVolume;  // per loaded bone
 };
 

@@ -1,0 +1,77 @@
+#include "cli/TrialRegister.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include "core/Error.h"
+#include "pose/AutoscoperTra.h"
+#include "track/TrialScene.h"
+
+namespace fm::cli {
+
+// --bone is the command's own (BoneOptions); with --trial it names the trial's bone.
+void addTrialRegisterOptions(CLI::App* cmd, TrialRegisterArgs& a) {
+    cmd->add_option("--trial", a.trial, "Register a bone in a trial's frame: .cfg or .json");
+    cmd->add_option("--frame", a.frame, "With --trial: the frame (0-based)");
+    cmd->add_option("--cameras", a.cameras, "With --trial: cameras to use, e.g. 1 (default: all)");
+    cmd->add_option("--start-tra", a.start, "With --trial: .tra holding the start pose at --frame");
+    cmd->add_option("--out-tra", a.out, "With --trial: write the result at --frame to this .tra");
+}
+
+void runTrialRegister(const TrialRegisterArgs& a) {
+    if (a.bone.empty() || a.frame < 0) throw Error("--trial needs --bone NAME and --frame K");
+    const Trial trial = readTrial(a.trial);
+    const TrialScene scene = loadTrialScene(trial, {a.bone}, a.threads);
+    for (const std::string& w : scene.trial.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+    if (a.frame >= scene.frameCount)
+        throw Error("--frame " + std::to_string(a.frame) + ": the trial has frames 0.." +
+                    std::to_string(scene.frameCount - 1));
+    // The start: the .tra's pose at the frame, else the trial's keyframe there.
+    std::optional<RigidTransform> start;
+    if (!a.start.empty()) {
+        const TraFile tra = readTra(a.start);
+        if (a.frame < static_cast<int>(tra.frames.size()) && tra.frames[a.frame][0])
+            start = objectPoseFromTra(scene, a.bone, *tra.frames[a.frame][0]);
+        else
+            throw Error(a.start + ": no pose at frame " + std::to_string(a.frame));
+    } else if (const auto k = scene.trial.keyframes.find(a.bone); k != scene.trial.keyframes.end()) {
+        for (const TrialPose& p : k->second)
+            if (p.frame == a.frame)
+                start = p.volumeFrame == VolumeFrame::Autoscoper ? objectPoseFromTra(scene, a.bone, p.worldFromVolume)
+                                                                 : p.worldFromVolume;
+    }
+    if (!start) throw Error("no start pose for " + a.bone + " at frame " + std::to_string(a.frame) +
+                            ": give --start-tra or a keyframe in the trial");
+    std::vector<std::size_t> cameras;
+    if (!a.cameras.empty())
+        for (std::size_t c = 0; c < scene.cameras.size(); ++c)
+            if (a.cameras.find(std::to_string(c + 1)) != std::string::npos) cameras.push_back(c);
+    TrackSettings settings;
+    settings.registration.seed = a.seed;
+    settings.registration.threads = a.threads;
+    const Tracker tracker(scene.scene, a.bone, trialFrameViews(scene, defaultTrialPreparation(), cameras),
+                          settings);
+    const FrameRecord r = tracker.trackFrame(a.frame, *start);
+    if (r.status != FrameRecord::Status::Tracked)
+        throw Error("frame " + std::to_string(a.frame) + ": " + toString(r.status) + ": " + r.note);
+    const RigidTransform tra = traPoseFromObject(scene, a.bone, *r.worldFromBone);
+    const auto m = tra.toRowMajor4x4();
+    std::printf("bone        %s, frame %d, %s\n", a.bone.c_str(), a.frame, r.note.c_str());
+    std::printf("pose (.tra, Autoscoper volume frame, row-major):\n");
+    for (int row = 0; row < 4; ++row)
+        std::printf("  %12.6f %12.6f %12.6f %12.6f\n", m[4 * row], m[4 * row + 1], m[4 * row + 2], m[4 * row + 3]);
+    for (std::size_t c = 0; c < r.viewCost.size(); ++c)
+        if (!std::isnan(r.viewCost[c])) std::printf("cost cam%zu   %.5f\n", c + 1, r.viewCost[c]);
+    const glm::dvec3 moved = r.worldFromBone->translation - start->translation;
+    std::printf("moved       %.3f mm from the start\n", glm::length(moved));
+    std::printf("time        %.3f s (%d evaluations)\n", r.seconds, r.evaluations);
+    if (!a.out.empty()) {
+        TraFile out;
+        out.frames.assign(static_cast<std::size_t>(scene.frameCount), {std::nullopt});
+        out.frames[a.frame][0] = tra;
+        writeTra(a.out, out);
+        std::printf("wrote       %s\n", a.out.c_str());
+    }
+}
+
+}  // namespace fm::cli

@@ -1,0 +1,24 @@
+#pragma once
+// `fluoromatch register --trial T --bone NAME --frame K`: one frame of a trial registered in all
+// its cameras at once (or in a subset, --cameras 1, to compare single-view answers).
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+namespace fm::cli {
+
+struct TrialRegisterArgs {
+    std::string trial;
+    std::string bone;
+    int frame = -1;
+    std::string cameras;  // "1" or "1,2"; empty = all
+    std::string start;    // .tra holding the start pose at --frame (else the trial's keyframes)
+    std::string out;      // .tra with the result at --frame
+    std::uint64_t seed = 1;
+    int threads = 0;
+};
+
+void addTrialRegisterOptions(CLI::App* cmd, TrialRegisterArgs& args);
+void runTrialRegister(const TrialRegisterArgs& args);
+
+}  // namespace fm::cli
