@@ -67,6 +67,10 @@ void Ui::helpWindow(AppState& state) {
             "level.");
         bulletWrapped("3D view: drag to orbit, mouse wheel to zoom, Reset view.");
         bulletWrapped(
+            "Images: X-ray or MRI slice. In the slice mode both panes show planar slices of the "
+            "volume: the offsets move the volume against the plane, azimuth and elevation tilt "
+            "the plane, rotation turns it; an MRI file opens in this mode.");
+        bulletWrapped(
             "Open another CT: type a path (file, DICOM folder or phantom:NAME) or drop it onto "
             "the window.");
         if (ImGui::Button("Close")) state.showHelp = false;

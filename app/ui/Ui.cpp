@@ -69,13 +69,16 @@ void Ui::referencePane(AppState& state, const Pane& pane, unsigned texture) {
 }
 
 void Ui::userPane(AppState& state, const Pane& pane, unsigned texture) {
-    beginPane("Your DRR", pane);
+    // One window id whatever the title says (the mode renames it).
+    beginPane(state.mode == ImagingMode::Slice ? "Your slice###user" : "Your DRR###user", pane);
     squareImage(texture, ImGui::GetTextLineHeightWithSpacing());
     record("image:user");
     if (state.solve.running) {  // the image follows the computer's best pose meanwhile
         ImGui::TextColored(kWarn, "solving:");
         ImGui::SameLine();
         poseLine(state.solve.bestPose);
+    } else if (state.mode == ImagingMode::Slice && state.userSliceEmpty) {
+        ImGui::TextColored(kWarn, "The plane misses the volume: no data.");
     } else {
         poseLine(state.userPose);
     }
@@ -215,6 +218,7 @@ void Ui::parameterPane(AppState& state, const Pane& pane) {
         state.matchIsStale = true;
     }
     record("button:centre-pose");
+    modeSwitch(state);
 
     ImGui::Separator();
     ImGui::AlignTextToFramePadding();

@@ -50,7 +50,8 @@ class Ui {
     void matchPane(AppState& state, const Pane& pane);
     void matchTab(AppState& state);      // MatchPanel.cpp: the user's attempts ...
     void solveSection(AppState& state);  // SolvePanel.cpp: ... and the computer's
-    void helpWindow(AppState& state);    // HelpWindow.cpp
+    void helpWindow(AppState& state);
+    void modeSwitch(AppState& state);  // X-ray / MRI slice (ModeSwitch.cpp)    // HelpWindow.cpp
     void keyboard(AppState& state);      // KeyboardNudge.cpp: arrows, Enter, Escape
 
     std::map<std::string, WidgetRect> rects_;
