@@ -1,6 +1,7 @@
 #include "similarity/Similarity.h"
 
 #include "core/Error.h"
+#include "similarity/EdgeDistance.h"
 #include "similarity/GradientDifference.h"
 #include "similarity/GradientNcc.h"
 #include "similarity/Ncc.h"
@@ -15,6 +16,8 @@ const char* toString(SimilarityMeasure measure) {
             return "gncc";
         case SimilarityMeasure::GradientDifference:
             return "gd";
+        case SimilarityMeasure::EdgeDistance:
+            return "edge";
     }
     return "?";
 }
@@ -23,13 +26,17 @@ SimilarityMeasure parseSimilarityMeasure(const std::string& text) {
     if (text == "ncc") return SimilarityMeasure::Ncc;
     if (text == "gncc" || text == "gradient-ncc") return SimilarityMeasure::GradientNcc;
     if (text == "gd" || text == "gradient-difference") return SimilarityMeasure::GradientDifference;
-    throw Error("unknown similarity measure '" + text + "' (expected ncc, gncc or gd)");
+    if (text == "edge" || text == "edge-distance") return SimilarityMeasure::EdgeDistance;
+    throw Error("unknown similarity measure '" + text + "' (expected ncc, gncc, gd or edge)");
 }
 
 PreparedReference prepareReference(const Image& reference, SimilarityMeasure measure) {
     PreparedReference p;
     p.image = reference;
-    if (measure != SimilarityMeasure::Ncc) p.gradients = sobel(reference);
+    if (measure == SimilarityMeasure::EdgeDistance)
+        p.edgeDistance = distanceToMask(strongEdges(reference));
+    else if (measure != SimilarityMeasure::Ncc)
+        p.gradients = sobel(reference);
     return p;
 }
 
@@ -49,6 +56,8 @@ double similarity(SimilarityMeasure measure, const PreparedReference& reference,
         case SimilarityMeasure::GradientDifference:
             return gradientDifference(reference.gradients, sobel(moving),
                                       interiorMask(ref.width, ref.height, mask));
+        case SimilarityMeasure::EdgeDistance:
+            return edgeDistanceSimilarity(reference.edgeDistance, moving, mask);
     }
     return 0.0;
 }

@@ -13,16 +13,20 @@ enum class SimilarityMeasure {
     Ncc,                 // intensities; fast, sensitive to soft tissue and background
     GradientNcc,         // Sobel gradients; ignores constant offsets and linear ramps
     GradientDifference,  // Penney 1998; robust to soft tissue and overlays
+    EdgeDistance,        // the footprint's outline against the image's edges (chamfer,
+                         // similarity/EdgeDistance.h): implants, whose outline is the evidence
 };
 
-const char* toString(SimilarityMeasure measure);  // "ncc", "gncc", "gd"
-// Accepts "ncc", "gncc" (or "gradient-ncc"), "gd" (or "gradient-difference"); fm::Error else.
+const char* toString(SimilarityMeasure measure);  // "ncc", "gncc", "gd", "edge"
+// Accepts "ncc", "gncc" (or "gradient-ncc"), "gd" (or "gradient-difference"), "edge" (or
+// "edge-distance"); fm::Error else.
 SimilarityMeasure parseSimilarityMeasure(const std::string& text);
 
 // The fixed image, with what every comparison would otherwise recompute.
 struct PreparedReference {
     Image image;
-    GradientImages gradients;  // empty for Ncc
+    GradientImages gradients;  // empty for Ncc and EdgeDistance
+    Image edgeDistance;        // EdgeDistance only: distance (pixels) to the nearest edge
 };
 PreparedReference prepareReference(const Image& reference, SimilarityMeasure measure);
 
