@@ -9,7 +9,8 @@
 namespace fm::cli {
 
 inline constexpr const char* kVolumeOptionHelp =
-    "CT file (.nii[.gz], .mha/.mhd, .nrrd/.nhdr, .vtk), DICOM folder, or phantom:NAME";
+    "CT file (.nii[.gz], .mha/.mhd, .nrrd/.nhdr, .vtk), DICOM folder, TIFF stack with its voxel "
+    "size (stack.tif?spacing=sx,sy,sz), or phantom:NAME";
 
 // Adds --volume (or a positional "volume" when `positional`), defaulting to the knee phantom
 // unless `spec` already holds another default.

@@ -3,7 +3,9 @@
 #  1. `geometry --camera` prints a MayaCam 2.0 calibration as geometry JSON whose source is the
 #     camera centre; `--out cam.txt` writes MayaCam 2.0 that reads back to the same JSON;
 #  2. a JointTrack calibration without --image-size is refused (exit 1), with it accepted;
-#  3. a calibration that disagrees with --image-size is refused.
+#  3. a calibration that disagrees with --image-size is refused;
+#  4. `radiograph` writes the prepared image and its mask at the frame's size, and refuses an
+#     roi outside the image and a calibration of another size.
 set -uo pipefail
 FM=$1
 DATA=${FM_DATA_DIR:-$(dirname "$0")/../../../shared/data}
@@ -37,4 +39,15 @@ PY
 "$FM" geometry --camera "$JT" --image-size 1024x1024 > /dev/null || fail "JointTrack with --image-size exited $?"
 msg=$("$FM" geometry --camera "$CAM" --image-size 1024x1024 2>&1) && fail "size mismatch accepted"
 grep -q "image size" <<<"$msg" || fail "size mismatch message does not name the field: $msg"
+FRAME="$DATA/jtml-kneel-tka-fluoro/AT_K1_V1_0160.tif"
+png_size() { python3 -c "import struct,sys; d=open(sys.argv[1],'rb').read(24); \
+assert d[:8]==b'\x89PNG\r\n\x1a\n'; print('%dx%d' % struct.unpack('>II', d[16:24]))" "$1"; }
+msg=$("$FM" radiograph "$FRAME" --invert --exclude-below 0 --roi 10,20,1000,900 --camera "$JT" \
+      --out "$OUT/p.png" --mask-out "$OUT/m.png" 2>&1) || fail "radiograph exited $?: $msg"
+grep -q "size         1024 x 1024" <<<"$msg" || fail "radiograph did not print the size: $msg"
+grep -q "valid " <<<"$msg" || fail "radiograph did not print the valid pixel count: $msg"
+[ "$(png_size "$OUT/p.png")" = "1024x1024" ] || fail "prepared PNG is not 1024x1024"
+[ "$(png_size "$OUT/m.png")" = "1024x1024" ] || fail "mask PNG is not 1024x1024"
+"$FM" radiograph "$FRAME" --roi 900,900,200,200 > /dev/null 2>&1 && fail "roi outside the image accepted"
+"$FM" radiograph "$FRAME" --camera "$CAM" > /dev/null 2>&1 && fail "1760x1760 calibration accepted for a 1024x1024 frame"
 echo "camera CLI checks passed"

@@ -6,6 +6,7 @@
 #include "io/ByteSource.h"
 #include "io/DicomReader.h"
 #include "io/HeaderText.h"
+#include "io/TiffVolume.h"
 #include "io/MetaImageReader.h"
 #include "io/NiftiReader.h"
 #include "io/NrrdReader.h"
@@ -29,6 +30,8 @@ std::string formatFromExtension(const fs::path& path) {
     for (const char* ext : {".nrrd", ".nhdr"})
         if (endsWith(name, ext)) return "nrrd";
     if (endsWith(name, ".vtk")) return "vtk";
+    for (const char* ext : {".tif", ".tiff"})
+        if (endsWith(name, ext)) return "tiff";
     return "";
 }
 
@@ -51,6 +54,8 @@ std::string formatFromContent(const Bytes& b) {
     const std::string_view text(reinterpret_cast<const char*>(b.data()), b.size());
     if (startsWith(text, "NRRD000")) return "nrrd";
     if (startsWith(text, "# vtk DataFile")) return "vtk";
+    if (startsWith(text, std::string_view("II*\0", 4)) || startsWith(text, std::string_view("MM\0*", 4)))
+        return "tiff";
     std::size_t pos = 0;
     std::string line;
     for (int n = 0; n < 4 && nextLine(text, pos, line); ++n) {
@@ -78,11 +83,20 @@ std::string detectVolumeFormat(const fs::path& path) {
         throw Error(quoted(path) + " is a single DICOM file: give the folder of its series");
     throw Error(quoted(path) +
                 ": unknown volume format (expected a DICOM folder, .nii/.nii.gz, .mha/.mhd, "
-                ".nrrd/.nhdr or .vtk)");
+                ".nrrd/.nhdr, .vtk or a .tif stack)");
 }
 
-Volume readVolume(const fs::path& path) {
+Volume readVolume(const fs::path& path, const VolumeReadOptions& options) {
     const std::string format = detectVolumeFormat(path);
+    if (format == "tiff") {
+        if (!options.spacing)
+            throw Error(quoted(path) + ": a TIFF stack holds no voxel size: give it, e.g. " +
+                        path.filename().string() + "?spacing=0.39625,0.39625,0.625 (mm)");
+        return io::readTiffVolume(path, *options.spacing);
+    }
+    if (options.spacing)
+        throw Error(quoted(path) + ": a voxel size is only given for TIFF stacks (this " + format +
+                    " file holds its own)");
     if (format == "dicom") return readDicomSeries(path);
     if (format == "nifti") return readNifti(path);
     if (format == "metaimage") return readMetaImage(path);

@@ -1,0 +1,44 @@
+#include "cli/RadiographOptions.h"
+
+#include <cmath>
+
+#include "core/Error.h"
+#include "io/HeaderText.h"
+
+namespace fm::cli {
+
+void addRadiographOptions(CLI::App* cmd, RadiographOptions& o) {
+    cmd->add_flag("--invert", o.invert,
+                  "Invert the radiograph (full scale - value): in raw fluoroscopy dense matter is dark");
+    cmd->add_flag("--log", o.log,
+                  "Log transform for raw detector intensities: -ln(I / I0), dense matter bright");
+    cmd->add_option("--i0", o.i0, "Unattenuated intensity I0 for --log (default: the full scale, 255 or 65535)");
+    cmd->add_option("--exclude-below", o.excludeBelow,
+                    "Pixels with stored values <= V carry no image (undistortion border, collimator)");
+    cmd->add_option("--erode", o.erode, "Grow the excluded region by N pixels (with --exclude-below)")
+        ->capture_default_str();
+    cmd->add_option("--roi", o.roi, "Region of interest x,y,w,h in pixels (column, row of its top-left corner)");
+}
+
+RadiographPreparation preparationFrom(const RadiographOptions& o, int bitsPerSample) {
+    RadiographPreparation p;
+    p.invert = o.invert;
+    p.logTransform = o.log;
+    p.i0 = o.i0;
+    if (o.i0 < 0.0 || !std::isfinite(o.i0)) throw Error("--i0 must be positive");
+    p.fullScale = bitsPerSample >= 32 ? 1.0 : std::pow(2.0, bitsPerSample) - 1.0;
+    p.erodePixels = o.erode;
+    if (!o.excludeBelow.empty()) p.excludeBelow = io::parseFinite(o.excludeBelow, "--exclude-below");
+    if (!o.roi.empty()) {
+        std::string spaced = o.roi;
+        for (char& c : spaced)
+            if (c == ',') c = ' ';
+        const auto v = io::parseNumbers(spaced, 4, "--roi (x,y,w,h in pixels)");
+        for (double x : v)
+            if (x != std::floor(x) || std::abs(x) > 1e6) throw Error("--roi: x,y,w,h must be whole pixels, got \"" + o.roi + "\"");
+        p.roi = PixelRect{static_cast<int>(v[0]), static_cast<int>(v[1]), static_cast<int>(v[2]), static_cast<int>(v[3])};
+    }
+    return p;
+}
+
+}  // namespace fm::cli

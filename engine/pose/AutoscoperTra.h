@@ -1,0 +1,47 @@
+#pragma once
+// Autoscoper tracking results (.tra), docs/real-xray.md "Files":
+//   one text line per frame; per tracked object either 16 numbers, the row-major 4x4
+//   [R t; 0 0 0 1] (mm), or 6 numbers x, y, z, yaw, pitch, roll (mm, degrees) with
+//   R = Rz(yaw) Ry(pitch) Rx(roll); objects follow each other on the line; comma or white space
+//   separated; NaN (all numbers of an object) for a frame that object was not tracked in.
+// A pose is worldFromVolume: from Autoscoper's corner frame of the volume (volume/AutoscoperVolumeFrame.h)
+// to the calibration's world (the MayaCam cube frame). Only mm, degrees and row order are read:
+// Autoscoper's cm / radian / column-order exports are not recognisable from the numbers (a
+// column-order matrix is refused by its last row).
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "scene/RigidTransform.h"
+
+namespace fm {
+
+enum class TraForm {
+    Auto,     // deduce from the count of numbers per line (refused when 16k and 6k both fit)
+    Matrix,   // 16 numbers per object
+    Xyzypr,   // 6 numbers per object
+};
+
+struct TraFile {
+    TraForm form = TraForm::Matrix;  // Matrix or Xyzypr after reading
+    int objects = 1;
+    // frames[frame][object]; nullopt = not tracked (NaN)
+    std::vector<std::vector<std::optional<RigidTransform>>> frames;
+};
+
+// x, y, z, yaw, pitch, roll <-> transform (Autoscoper's CoordFrame::from_xyzypr / to_xyzypr).
+RigidTransform transformFromXyzypr(const double xyzypr[6]);
+void xyzyprFromTransform(const RigidTransform& t, double xyzypr[6]);
+
+// fm::Error "<what>: line N, object K, value V: ..." for wrong counts, non-numbers, partial
+// NaN, a matrix that is not rigid.
+TraFile parseTra(const std::string& text, const std::string& what, TraForm form = TraForm::Auto);
+TraFile readTra(const std::filesystem::path& path, TraForm form = TraForm::Auto);
+
+// What Autoscoper reads back (its own backup format): per object 16 comma-separated numbers in
+// row order (or 6 for Xyzypr), fixed-point with 16 decimals, "NaN" x 16 for untracked frames.
+std::string traText(const TraFile& tra);
+void writeTra(const std::filesystem::path& path, const TraFile& tra);
+
+}  // namespace fm

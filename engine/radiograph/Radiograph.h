@@ -1,0 +1,27 @@
+#pragma once
+// A radiograph (one X-ray frame) from disk as an fm::Image of its stored values: TIFF through
+// libtiff (io/TiffReader.h), PNG / JPEG / BMP through stb_image (converted to one grey
+// channel by stb's luminance; PNG keeps 16 bits). Values are not rescaled: 0..255 for 8-bit,
+// 0..65535 for 16-bit files. Row 0 is the image's top row. Spacing is 1 (unknown); the
+// camera calibration gives the geometry.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "core/Image.h"
+
+namespace fm {
+
+struct RadiographFile {
+    Image image;
+    int bitsPerSample = 8;
+    std::string format;                 // "TIFF (LZW)", "PNG", ...
+    std::vector<std::string> warnings;  // from libtiff
+};
+
+// A multi-page TIFF is refused unless `page` (0-based) names the page. fm::Error names the
+// file for everything unreadable, and for images beyond io::kMaxTiffSide per side (checked
+// before decoding).
+RadiographFile readRadiograph(const std::filesystem::path& path, int page = -1);
+
+}  // namespace fm

@@ -1,0 +1,86 @@
+// Radiograph preparation on small synthetic images with answers worked out by hand.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/Error.h"
+#include "radiograph/RadiographPreparation.h"
+
+namespace {
+
+fm::Image ramp(int w, int h) {
+    fm::Image img(w, h);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) img.at(x, y) = static_cast<float>(10 * x + y);
+    return img;
+}
+
+TEST(Preparation, DefaultsChangeNothing) {
+    const fm::Image img = ramp(5, 4);
+    const fm::PreparedRadiograph p = fm::prepareRadiograph(img, {});
+    EXPECT_EQ(p.image.pixels, img.pixels);
+    EXPECT_EQ(p.valid.count(), 20u);
+}
+
+TEST(Preparation, InvertAndLog) {
+    fm::Image img(4, 1);
+    img.pixels = {0.0f, 100.0f, 1000.0f, 2000.0f};
+    fm::RadiographPreparation o;
+    o.invert = true;
+    o.fullScale = 255;
+    const auto inv = fm::prepareRadiograph(img, o);
+    EXPECT_FLOAT_EQ(inv.image.pixels[1], 155.0f);
+    EXPECT_FLOAT_EQ(inv.image.pixels[0], 255.0f);
+    o = {};
+    o.logTransform = true;
+    o.i0 = 1000;
+    const auto log = fm::prepareRadiograph(img, o);
+    EXPECT_NEAR(log.image.pixels[0], std::log(1000.0), 1e-5);  // I clamped to 1 count
+    EXPECT_NEAR(log.image.pixels[1], std::log(10.0), 1e-6);    // -ln(100/1000)
+    EXPECT_FLOAT_EQ(log.image.pixels[2], 0.0f);
+    EXPECT_FLOAT_EQ(log.image.pixels[3], 0.0f);  // brighter than I0: no attenuation
+    o.i0 = 0;
+    o.fullScale = 65535;
+    EXPECT_NEAR(fm::prepareRadiograph(img, o).image.pixels[1], std::log(655.35), 1e-5);
+}
+
+TEST(Preparation, ZeroBorderIsExcludedAndEroded) {
+    // A 12 x 10 image with a 2-pixel zero border: 8 x 6 pixels carry image; one more pixel of
+    // erosion leaves 6 x 4.
+    fm::Image img(12, 10, 0.0f);
+    for (int y = 2; y < 8; ++y)
+        for (int x = 2; x < 10; ++x) img.at(x, y) = 50.0f;
+    fm::RadiographPreparation o;
+    o.excludeBelow = 0.0;
+    o.erodePixels = 0;
+    EXPECT_EQ(fm::prepareRadiograph(img, o).valid.count(), 48u);
+    o.erodePixels = 1;
+    const auto p = fm::prepareRadiograph(img, o);
+    EXPECT_EQ(p.valid.count(), 24u);
+    EXPECT_TRUE(p.valid.at(3, 3));
+    EXPECT_FALSE(p.valid.at(2, 2));
+    // With a region of interest: columns 0..4, rows 0..9 leave columns 3..4 of rows 3..6.
+    o.roi = fm::PixelRect{0, 0, 5, 10};
+    EXPECT_EQ(fm::prepareRadiograph(img, o).valid.count(), 8u);
+}
+
+TEST(Preparation, NonsenseIsRefused) {
+    const fm::Image img = ramp(5, 4);
+    fm::RadiographPreparation o;
+    o.invert = o.logTransform = true;
+    EXPECT_THROW(fm::prepareRadiograph(img, o), fm::Error);
+    o = {};
+    o.roi = fm::PixelRect{3, 0, 3, 2};
+    EXPECT_THROW(fm::prepareRadiograph(img, o), fm::Error);
+    o = {};
+    o.erodePixels = -1;
+    o.excludeBelow = 1;
+    EXPECT_THROW(fm::prepareRadiograph(img, o), fm::Error);
+    o = {};
+    o.logTransform = true;
+    o.i0 = -5;
+    EXPECT_THROW(fm::prepareRadiograph(img, o), fm::Error);
+    EXPECT_THROW(fm::prepareRadiograph(fm::Image(), {}), fm::Error);
+}
+
+}  // namespace
