@@ -1,6 +1,8 @@
 // `fluoromatch register`: automatic pose search of a CT against one reference image, either a
 // DRR rendered at a known pose (--reference-pose: the truth is known and the error reported) or
-// an image file with its projection geometry (--reference IMG --geometry g.json).
+// an image file with its projection geometry (--reference IMG --geometry g.json). With
+// --camera and --model it registers implant or bone models in a real radiograph instead
+// (cli/RegisterXray.h).
 #include <unistd.h>
 #include <chrono>
 #include <cmath>
@@ -10,6 +12,7 @@
 #include <string>
 
 #include "cli/CommandRegistry.h"
+#include "cli/RegisterXray.h"
 #include "cli/SearchCli.h"
 #include "cli/VolumeOption.h"
 #include "core/Error.h"
@@ -26,9 +29,10 @@ struct RegisterArgs {
     std::string referencePose;
     std::string reference;
     std::string geometry;
-    std::string start;
+    std::vector<std::string> start;
     std::string truth;
     fm::cli::SearchArgs search;
+    fm::cli::XrayRegisterArgs xray;
 };
 
 void printPoseRow(const char* label, const std::array<double, 6>& v) {
@@ -37,6 +41,15 @@ void printPoseRow(const char* label, const std::array<double, 6>& v) {
 }
 
 void runRegister(const RegisterArgs& a) {
+    if (!a.xray.models.empty() || !a.xray.camera.empty()) {
+        if (!a.referencePose.empty() || !a.geometry.empty())
+            throw fm::Error("--camera/--model register models in a real radiograph: they do not "
+                            "go with --reference-pose or --geometry");
+        if (a.xray.models.empty()) throw fm::Error("--camera needs --model MODEL");
+        fm::cli::runXrayRegister(a.reference, a.xray, a.start, a.search);
+        return;
+    }
+    if (a.start.size() > 1) throw fm::Error("--start: give one 2011 pose x,y,z,az,el,rot");
     const bool synthetic = !a.referencePose.empty();
     if (synthetic == !a.reference.empty())
         throw fm::Error("give either --reference-pose POSE or --reference IMG --geometry g.json");
@@ -68,7 +81,7 @@ void runRegister(const RegisterArgs& a) {
         reference = fm::cli::readReferenceImage(a.reference);
         if (!a.truth.empty()) truth = fm::parsePose(a.truth);
     }
-    const fm::Pose start = a.start.empty() ? fm::Pose{} : fm::parsePose(a.start);
+    const fm::Pose start = a.start.empty() ? fm::Pose{} : fm::parsePose(a.start[0]);
 
     std::printf("volume      %s (%d x %d x %d)\n", a.volume.c_str(), volume.dims.x, volume.dims.y,
                 volume.dims.z);
@@ -128,9 +141,12 @@ FM_REGISTER_COMMAND("register", 40, [](CLI::App& app) {
                                 "integral, bright = more attenuation)");
     refPose->excludes(ref);
     cmd->add_option("--geometry", a->geometry, "Projection geometry JSON of --reference");
-    cmd->add_option("--start", a->start, "Start pose x,y,z,az,el,rot (default 0,0,0,0,0,0)");
+    cmd->add_option("--start", a->start,
+                    "Start pose x,y,z,az,el,rot (default 0,0,0,0,0,0); with --model: a .jts or "
+                    ".tra file (row --frame) or x,y,z,zrot,xrot,yrot per model");
     cmd->add_option("--truth", a->truth, "True pose of --reference, if known (errors reported)");
     fm::cli::addSearchOptions(cmd, a->search);
+    fm::cli::addXrayRegisterOptions(cmd, a->xray);
     cmd->callback([a] { runRegister(*a); });
     return cmd;
 });

@@ -37,8 +37,8 @@ void addSearchOptions(CLI::App* cmd, SearchArgs& a, bool withMethod) {
         cmd->add_option("--method", a.method, "Global search: mc, pso, bees or cmaes")
             ->capture_default_str();
     cmd->add_option("--similarity", a.similarity,
-                    "Similarity: ncc, gncc (gradient NCC) or gd (gradient difference)")
-        ->capture_default_str();
+                    "Similarity: ncc, gncc (gradient NCC), gd (gradient difference) or edge (outline "
+                    "against image edges); default gncc, edge with --model");
     cmd->add_option("--seed", a.seed, "Random seed (same seed, same result)")
         ->capture_default_str();
     cmd->add_option("--budget", a.budget, "Evaluations of the global search (default 600)");
@@ -57,14 +57,13 @@ void addSearchOptions(CLI::App* cmd, SearchArgs& a, bool withMethod) {
         ->capture_default_str();
 }
 
-RegistrationSettings registrationSettings(const SearchArgs& a) {
-    RegistrationSettings s;
+RegistrationSettings registrationSettings(const SearchArgs& a, RegistrationSettings s) {
     s.method = parseSearchMethod(a.method);
     if (s.method == SearchMethod::NelderMead)
         throw Error(
             "--method: nm is the local polish, not a global search (use mc, pso, bees "
             "or cmaes)");
-    s.similarity = parseSimilarityMeasure(a.similarity);
+    if (!a.similarity.empty()) s.similarity = parseSimilarityMeasure(a.similarity);
     s.polishMethod = parseSearchMethod(a.polish);
     s.seed = a.seed;
     if (a.budget < 0) throw Error("--budget must be positive");

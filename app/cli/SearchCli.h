@@ -14,7 +14,7 @@ namespace fm::cli {
 
 struct SearchArgs {
     std::string method = "cmaes";
-    std::string similarity = "gncc";
+    std::string similarity;  // empty = the mode's default (gncc; edge for models)
     std::uint64_t seed = 1;
     int budget = 0;         // global search evaluations (0 = the default)
     int polishBudget = -1;  // per polish level (-1 = the default)
@@ -29,8 +29,8 @@ struct SearchArgs {
 // --method, --similarity, --seed, --budget, --polish-budget, --levels, --radius, --threads,
 // --values.
 void addSearchOptions(CLI::App* cmd, SearchArgs& args, bool withMethod = true);
-// Throws fm::Error naming the option on a bad value.
-RegistrationSettings registrationSettings(const SearchArgs& args);
+// `base` with what the options change. Throws fm::Error naming the option on a bad value.
+RegistrationSettings registrationSettings(const SearchArgs& args, RegistrationSettings base = {});
 std::string describeLevels(const RegistrationSettings& settings);
 
 // "mu": HU converted to attenuation (what a CT needs; air becomes 0); "raw": values as stored.
