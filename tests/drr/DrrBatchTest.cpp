@@ -45,7 +45,7 @@ TEST(DrrBatch, BadViewsAreErrorsNamingTheLine) {
     EXPECT_NE(message("0 0 0 0 200 0\n").find("v.txt:1"), std::string::npos) << "elevation 200";
     EXPECT_NE(message("0 0 0 0 x 0\n").find("v.txt:1"), std::string::npos);
     EXPECT_NE(message("# nothing\n\n").find("no view"), std::string::npos);
-    EXPECT_THROW(fm::readDrrViews(fm::test::scratchDir("drr-batch") / "missing.txt"), fm::Error);
+    EXPECT_THROW(fm::readDrrViews(fm::test::scratchDir("drr-batch-missing") / "missing.txt"), fm::Error);
 }
 
 TEST(DrrBatch, SweepStepsTheAzimuthAndWraps) {

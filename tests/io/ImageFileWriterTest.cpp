@@ -56,7 +56,7 @@ TEST(ImageFileWriter, FormatByExtension) {
 }
 
 TEST(ImageFileWriter, Tiff8BitDecodesWithLibtiff) {
-    const fs::path path = fm::test::scratchDir("image-writer") / "grey.tif";
+    const fs::path path = fm::test::scratchDir("image-writer-tiff8") / "grey.tif";
     const fm::Image image = ramp();
     fm::writeViewImage(image, path, -1.5f, 5.0f);
     const std::vector<std::uint8_t> expected = fm::windowToGrey8(image, -1.5f, 5.0f);
@@ -85,7 +85,7 @@ TEST(ImageFileWriter, Tiff8BitDecodesWithLibtiff) {
 }
 
 TEST(ImageFileWriter, TiffFloatHoldsTheExactValues) {
-    const fs::path path = fm::test::scratchDir("image-writer") / "exact.tif";
+    const fs::path path = fm::test::scratchDir("image-writer-tiff32") / "exact.tif";
     const fm::Image image = ramp();
     fm::writeExactImage(image, path);
     TIFF* tif = TIFFOpen(path.c_str(), "r");
@@ -105,7 +105,7 @@ TEST(ImageFileWriter, TiffFloatHoldsTheExactValues) {
 }
 
 TEST(ImageFileWriter, JpegIsAJpegWithTheImage) {
-    const fs::path path = fm::test::scratchDir("image-writer") / "view.jpg";
+    const fs::path path = fm::test::scratchDir("image-writer-jpeg") / "view.jpg";
     // A smooth 64 x 64 ramp: baseline JPEG at quality 95 keeps it within a few grey levels.
     fm::Image image(64, 64);
     for (int r = 0; r < 64; ++r)
@@ -128,7 +128,7 @@ TEST(ImageFileWriter, JpegIsAJpegWithTheImage) {
 }
 
 TEST(ImageFileWriter, PngAndVolumeFormats) {
-    const fs::path dir = fm::test::scratchDir("image-writer");
+    const fs::path dir = fm::test::scratchDir("image-writer-formats");
     const fm::Image image = ramp();
     fm::writeViewImage(image, dir / "view.png", -1.5f, 5.0f);
     const auto png = fileBytes(dir / "view.png");
