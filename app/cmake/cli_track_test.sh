@@ -6,7 +6,6 @@ set -euo pipefail
 FM=$1
 SRC=$(cd "$(dirname "$0")/../.." && pwd)
 TRIAL=$SRC/data/trials/wrist.json
-DATA=${FM_DATA_DIR:-$SRC/../shared/data}
 if [ ! -d "$SRC/../shared/data/autoscoper-bvr" ]; then
     if [ "${CI:-}" = "true" ]; then echo "FAIL: ../shared/data/autoscoper-bvr missing under CI"; exit 1; fi
     echo "SKIP: ../shared/data/autoscoper-bvr not found beside the repository"; exit 77

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "KneeFixture.h"
+
 #include "core/Error.h"
 #include "drr/Drr.h"
 #include "match/FilmCoverage.h"
@@ -15,22 +17,7 @@
 
 namespace {
 
-class ReferenceDrawTest : public ::testing::Test {
-  protected:
-    static void SetUpTestSuite() {
-        knee_ = new fm::Volume(fm::makeKneePhantom());
-        bone_ = new std::vector<glm::dvec3>(fm::boneTargetPoints(*knee_));
-    }
-    static void TearDownTestSuite() {
-        delete knee_;
-        delete bone_;
-    }
-    static fm::Volume* knee_;
-    static std::vector<glm::dvec3>* bone_;
-    fm::SceneSetup setup = fm::defaultSceneSetup();
-};
-fm::Volume* ReferenceDrawTest::knee_ = nullptr;
-std::vector<glm::dvec3>* ReferenceDrawTest::bone_ = nullptr;
+class ReferenceDrawTest : public fm::test::KneeFixture {};
 
 TEST_F(ReferenceDrawTest, NeverMatchesTheCurrentPoseAndHidesTheAskedNumber) {
     const fm::Pose current;  // the start pose: AP, no offsets

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "KneeFixture.h"
+
 #include "common/TestData.h"
 #include "core/Error.h"
 #include "match/FilmCoverage.h"
@@ -137,22 +139,7 @@ TEST(FilmCoverage, BoundingRectangleAndPointsOnFilm) {
     EXPECT_THROW(fm::filmCoverage(g, {}), fm::Error);
 }
 
-class RandomPoseTest : public ::testing::Test {
-  protected:
-    static void SetUpTestSuite() {
-        knee_ = new fm::Volume(fm::makeKneePhantom());
-        bone_ = new std::vector<glm::dvec3>(fm::boneTargetPoints(*knee_));
-    }
-    static void TearDownTestSuite() {
-        delete knee_;
-        delete bone_;
-    }
-    static fm::Volume* knee_;
-    static std::vector<glm::dvec3>* bone_;
-    fm::SceneSetup setup = fm::defaultSceneSetup();
-};
-fm::Volume* RandomPoseTest::knee_ = nullptr;
-std::vector<glm::dvec3>* RandomPoseTest::bone_ = nullptr;
+class RandomPoseTest : public fm::test::KneeFixture {};
 
 TEST_F(RandomPoseTest, DeterministicWithinLimitsAndFramed) {
     const fm::RandomPoseOptions o;

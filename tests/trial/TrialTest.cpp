@@ -38,7 +38,10 @@ bool sharedDataBesideRepo() {
 
 TEST(WristTrial, ShippedCfgNamesTheRealFilesAndFrames) {
     FM_REQUIRE_SHARED_DATA("autoscoper-bvr");
-    if (!sharedDataBesideRepo()) GTEST_SKIP() << "FM_DATA_DIR is not ../shared/data beside the repository";
+    if (!sharedDataBesideRepo()) {
+        if (fm::test::underCI()) FAIL() << "under CI the shared data must be ../shared/data beside the repository";
+        GTEST_SKIP() << "FM_DATA_DIR is not ../shared/data beside the repository";
+    }
     const fm::Trial t = fm::readTrial(fm::test::repoDir() / "data/trials/wrist.cfg");
     EXPECT_TRUE(t.warnings.empty());
     ASSERT_EQ(t.cameras.size(), 2u);
@@ -62,7 +65,10 @@ TEST(WristTrial, ShippedCfgNamesTheRealFilesAndFrames) {
 
 TEST(WristTrial, ShippedJsonIsTheSameTrialWithBoneNames) {
     FM_REQUIRE_SHARED_DATA("autoscoper-bvr");
-    if (!sharedDataBesideRepo()) GTEST_SKIP() << "FM_DATA_DIR is not ../shared/data beside the repository";
+    if (!sharedDataBesideRepo()) {
+        if (fm::test::underCI()) FAIL() << "under CI the shared data must be ../shared/data beside the repository";
+        GTEST_SKIP() << "FM_DATA_DIR is not ../shared/data beside the repository";
+    }
     const fm::Trial cfg = fm::readTrial(fm::test::repoDir() / "data/trials/wrist.cfg");
     const fm::Trial json = fm::readTrial(fm::test::repoDir() / "data/trials/wrist.json");
     EXPECT_TRUE(json.warnings.empty());
