@@ -18,6 +18,7 @@
 #include "cli/BoneOptions.h"
 #include "cli/CommandRegistry.h"
 #include "cli/SearchCli.h"
+#include "cli/SliceCli.h"
 #include "cli/VolumeOption.h"
 #include "core/Error.h"
 #include "distributed/JobRunner.h"
@@ -36,6 +37,9 @@ struct EvaluateArgs {
     int starts = 10;
     std::string csv;
     fm::cli::SearchArgs search;
+    bool slice = false;
+    fm::cli::SliceGridArgs grid;
+    std::string interpolation = "cubic";
     fm::cli::BoneOptions bones;
     bool noRest = false;
     double marginMm = 20.0;
@@ -85,8 +89,23 @@ Evaluated oneBone(const EvaluateArgs& a, const fm::Volume& ct) {
                 std::to_string(scene.objects.size() - 1) + " other objects static"};
 }
 
-void runEvaluate(const EvaluateArgs& a) {
+void runEvaluate(const EvaluateArgs& a, bool similarityGiven) {
     if (a.starts < 1 || a.starts > 10000) throw fm::Error("--starts must be 1..10000");
+    if (a.slice) {  // one process (the slice search is fast; docs/mri.md)
+        fm::cli::SliceEvaluateArgs s;
+        s.volume = a.volume;
+        s.methods = a.methods;
+        s.truth = a.truth;
+        s.starts = a.starts;
+        s.csv = a.csv;
+        s.similarityGiven = similarityGiven;
+        s.grid = a.grid;
+        s.interpolation = a.interpolation;
+        s.search = a.search;
+        return fm::cli::runSliceEvaluate(s);
+    }
+    if (!a.grid.spacing.empty() || !a.grid.size.empty() || a.grid.thickness != 0.0)
+        throw fm::Error("--size, --spacing and --thickness need --slice");
     fm::EvaluationSettings settings;
     settings.registration = fm::cli::registrationSettings(a.search);
     settings.startsPerBin = a.starts;
@@ -251,7 +270,14 @@ FM_REGISTER_COMMAND("evaluate", 41, [](CLI::App& app) {
     cmd->add_option("--footprint-margin", a->marginMm,
                     "With --bone: mm added around the bone's footprint (the compared pixels)")
         ->capture_default_str();
-    cmd->callback([a] { runEvaluate(*a); });
+    cmd->add_flag("--slice", a->slice,
+                  "MRI slice mode: evaluate slice-to-volume registration (reference = a slice "
+                  "at --truth; similarity mi by default; see docs/mri.md)");
+    fm::cli::addSliceGridOptions(cmd, a->grid);
+    cmd->add_option("--interpolation", a->interpolation,
+                    "With --slice: cubic (B-spline, default) or linear")
+        ->capture_default_str();
+    cmd->callback([a, cmd] { runEvaluate(*a, cmd->get_option("--similarity")->count() > 0); });
     return cmd;
 });
 

@@ -1,7 +1,8 @@
 // `fluoromatch geometry`: the projection geometry JSON for six pose parameters, a checked,
 // rewritten copy of a geometry file, or a camera calibration (MayaCam 2.0/1.0, JointTrack) as
 // geometry. Both modes of `drr` go through the same code path, so the JSON printed here is
-// exactly what `drr --pose` renders. `--out cam.txt` writes a MayaCam 2.0 file instead.
+// exactly what `drr --pose` renders. `--out cam.txt` writes a MayaCam 2.0 file instead. With
+// --slice: the slice geometry of the MRI slice mode (docs/mri.md), what `slice --pose` samples.
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -11,6 +12,7 @@
 #include "camera/CameraFile.h"
 #include "cli/CommandRegistry.h"
 #include "cli/SceneOptions.h"
+#include "cli/SliceCli.h"
 #include "core/Error.h"
 #include "geometry/ProjectionGeometry.h"
 #include "io/AtomicFile.h"
@@ -25,6 +27,8 @@ struct GeometryArgs {
     std::string camera;     // calibration file
     std::string imageSize;  // "WxH" for calibrations without a size (JointTrack)
     std::string out;
+    bool slice = false;
+    fm::cli::SliceGridArgs grid;  // --size comes from the scene options
 };
 
 glm::ivec2 parseImageSize(const std::string& text) {
@@ -68,7 +72,37 @@ fm::ProjectionGeometry geometryOfScene(const GeometryArgs& a) {
     return fm::cli::geometryFrom(a.scene, center);
 }
 
+void runSliceGeometry(const GeometryArgs& a) {
+    if (a.scene.usesGeometryFile() || !a.scene.film.empty() || !a.scene.distance.empty() ||
+        a.scene.downsample != 1 || !a.camera.empty())
+        throw fm::Error("--slice takes --pose, --size, --spacing and --thickness; --geometry, "
+                        "--camera, --film, --distance and --downsample belong to the X-ray scene");
+    fm::cli::SliceGridArgs grid = a.grid;
+    grid.size = a.scene.size;
+    const fm::Pose pose = fm::cli::poseFrom(a.scene);
+    fm::SliceSetup setup;
+    glm::dvec3 center{0.0};
+    if (!a.center.empty()) {
+        center = parseCenter(a.center);
+        setup = fm::cli::sliceSetupFrom(grid);
+    } else {
+        const fm::Volume v = fm::loadVolume(a.volume);
+        center = v.center();
+        setup = fm::cli::sliceSetupFrom(grid, v);
+    }
+    const std::string json = fm::sliceGeometryToJson(fm::sliceGeometry(pose, setup, center));
+    if (a.out.empty()) {
+        std::cout << json;
+        return;
+    }
+    fm::io::writeFileAtomically(a.out, json);
+    std::fprintf(stderr, "wrote %s (slice at pose %s)\n", a.out.c_str(), fm::formatPose(pose).c_str());
+}
+
 void runGeometry(const GeometryArgs& a) {
+    if (a.slice) return runSliceGeometry(a);
+    if (!a.grid.spacing.empty() || a.grid.thickness != 0.0)
+        throw fm::Error("--spacing and --thickness need --slice (the X-ray scene has --film)");
     if (!a.imageSize.empty() && a.camera.empty())
         throw fm::Error("--image-size applies to --camera only");
     fm::ProjectionGeometry g;
@@ -132,6 +166,10 @@ FM_REGISTER_COMMAND("geometry", 30, [](CLI::App& app) {
     cmd->add_option("--out", args->out,
                     "Write the JSON to this file instead of printing it; a .txt name writes a "
                     "MayaCam 2.0 calibration (Autoscoper) instead");
+    cmd->add_flag("--slice", args->slice,
+                  "The MRI slice mode: print the slice geometry (origin, u, v, spacing, size, "
+                  "thickness) of --pose instead (see docs/mri.md)");
+    fm::cli::addSliceGridOptions(cmd, args->grid, false);
     cmd->callback([args] { runGeometry(*args); });
     return cmd;
 });

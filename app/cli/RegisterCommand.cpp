@@ -16,6 +16,7 @@
 #include "cli/BoneOptions.h"
 #include "cli/CommandRegistry.h"
 #include "cli/SearchCli.h"
+#include "cli/SliceCli.h"
 #include "cli/TrialRegister.h"
 #include "cli/VolumeOption.h"
 #include "core/Error.h"
@@ -36,6 +37,9 @@ struct RegisterArgs {
     std::string truth;
     std::string pose;
     fm::cli::SearchArgs search;
+    bool slice = false;
+    fm::cli::SliceGridArgs grid;
+    std::string interpolation = "cubic";
     fm::cli::BoneOptions bones;
     std::string boneMotion = "5,-5,5,5,-5,5";
     bool biplane = false;
@@ -142,7 +146,25 @@ void printPoseRow(const char* label, const std::array<double, 6>& v) {
                 v[5]);
 }
 
-void runRegister(const RegisterArgs& a) {
+void runRegister(const RegisterArgs& a, bool similarityGiven) {
+    if (a.slice) {
+        if (!a.geometry.empty())
+            throw fm::Error("--slice: --geometry is the X-ray projection geometry; a slice "
+                            "reference takes its pixel grid from the image (--spacing overrides)");
+        fm::cli::SliceRegisterArgs s;
+        s.volume = a.volume;
+        s.referencePose = a.referencePose;
+        s.reference = a.reference;
+        s.start = a.start;
+        s.truth = a.truth;
+        s.similarityGiven = similarityGiven;
+        s.grid = a.grid;
+        s.interpolation = a.interpolation;
+        s.search = a.search;
+        return fm::cli::runSliceRegister(s);
+    }
+    if (!a.grid.spacing.empty() || !a.grid.size.empty() || a.grid.thickness != 0.0)
+        throw fm::Error("--size, --spacing and --thickness need --slice");
     if (!a.bones.bone.empty() || !a.bones.labels.empty() || !a.bones.without.empty())
         return runRegisterBone(a);
     const bool synthetic = !a.referencePose.empty();
@@ -255,16 +277,23 @@ FM_REGISTER_COMMAND("register", 40, [](CLI::App& app) {
     cmd->add_option("--footprint-margin", a->marginMm,
                     "With --bone: mm added around the bone's footprint (the compared pixels)")
         ->capture_default_str();
+    cmd->add_flag("--slice", a->slice,
+                  "MRI slice mode: match a 2D image with planar slices of the volume "
+                  "(similarity mi by default; see docs/mri.md)");
+    fm::cli::addSliceGridOptions(cmd, a->grid);
+    cmd->add_option("--interpolation", a->interpolation,
+                    "With --slice: cubic (B-spline, default) or linear")
+        ->capture_default_str();
     auto trial = std::make_shared<fm::cli::TrialRegisterArgs>();
     fm::cli::addTrialRegisterOptions(cmd, *trial);
-    cmd->callback([a, trial] {
+    cmd->callback([a, trial, cmd] {
         if (!trial->trial.empty()) {
             trial->bone = a->bones.bone;  // --bone names the trial's bone here
             trial->seed = a->search.seed;
             trial->threads = a->search.threads;
             fm::cli::runTrialRegister(*trial);
         } else {
-            runRegister(*a);
+            runRegister(*a, cmd->get_option("--similarity")->count() > 0);
         }
     });
     return cmd;

@@ -4,12 +4,14 @@
 
 #include <cmath>
 #include <cstdio>
+#include <ostream>
 #include <sstream>
 
 #include <stb/stb_image.h>
 
 #include "cli/NumberChecks.h"
 #include "core/Error.h"
+#include "io/AtomicFile.h"
 #include "io/ReadVolume.h"
 
 namespace fm::cli {
@@ -40,7 +42,8 @@ void addSearchOptions(CLI::App* cmd, SearchArgs& a, bool withMethod) {
         cmd->add_option("--method", a.method, "Global search: mc, pso, bees or cmaes")
             ->capture_default_str();
     cmd->add_option("--similarity", a.similarity,
-                    "Similarity: ncc, gncc (gradient NCC) or gd (gradient difference)")
+                    "Similarity: ncc, gncc (gradient NCC), gd (gradient difference) or mi (mutual "
+                    "information; the default with --slice)")
         ->capture_default_str();
     cmd->add_option("--seed", a.seed, "Random seed (same seed, same result)")
         ->capture_default_str()
@@ -145,6 +148,77 @@ Image readReferenceImage(const std::string& path) {
     for (float p : img.pixels)
         if (!std::isfinite(p)) throw Error(path + ": the image holds non-finite values");
     return img;
+}
+
+std::vector<SearchMethod> parseMethodList(const std::string& text) {
+    std::vector<SearchMethod> methods;
+    std::stringstream ss(text);
+    for (std::string m; std::getline(ss, m, ',');) {
+        const SearchMethod method = parseSearchMethod(m);
+        if (method == SearchMethod::NelderMead)
+            throw Error("--methods: nm is the local polish, not a global search");
+        methods.push_back(method);
+    }
+    if (methods.empty()) throw Error("--methods: give at least one method");
+    return methods;
+}
+
+EvaluationCsv::EvaluationCsv(std::string path) : path_(std::move(path)) {
+    if (path_.empty()) return;
+    saveOften_ = !io::writesThrough(path_);
+    rows_ << "method,bin_low_mm,bin_high_mm,start,start_mtre_mm,final_mtre_mm,"
+             "final_in_plane_mm,final_out_of_plane_mm,seconds,cpu_seconds,evaluations,success\n";
+    if (saveOften_) save();
+}
+
+void EvaluationCsv::save() {
+    io::writeFileAtomically(path_, rows_.str());
+    lastSave_ = std::chrono::steady_clock::now();
+}
+
+void EvaluationCsv::add(const EvaluationTrial& t, const EvaluationSettings& settings) {
+    if (path_.empty()) return;
+    const StartBin& b = settings.bins[t.bin];
+    rows_ << toString(t.method) << ',' << b.lowMm << ',' << b.highMm << ',' << t.start << ','
+          << t.startMtreMm << ',' << t.final.meanMm << ',' << t.final.meanInPlaneMm << ','
+          << t.final.meanDepthMm << ',' << t.seconds << ',' << t.cpuSeconds << ',' << t.evaluations
+          << ',' << (t.success ? 1 : 0) << '\n';
+    if (saveOften_ && std::chrono::steady_clock::now() - lastSave_ > std::chrono::seconds(1))
+        save();
+}
+
+void EvaluationCsv::finish() {
+    if (path_.empty()) return;
+    save();
+    std::printf("wrote %s\n", path_.c_str());
+}
+
+void reportTrial(const EvaluationTrial& t, int done, int total, bool interactive) {
+    if (interactive || done == total || done % 10 == 0)
+        std::fprintf(stderr, "%sregistration %d/%d (%s)%s", interactive ? "\r" : "", done, total,
+                     toString(t.method), interactive ? "   " : "\n");
+}
+
+void printEvaluationSummary(const std::vector<EvaluationTrial>& trials,
+                            const EvaluationSettings& settings) {
+    std::printf("\n%-6s %-9s %4s %8s %12s %10s %13s %10s %9s\n", "method", "start mm", "n",
+                "success", "median mTRE", "in-plane", "out-of-plane", "time/reg", "cpu/reg");
+    for (const auto& b : summarizeBins(trials, settings)) {
+        char bin[32];
+        std::snprintf(bin, sizeof bin, "%g-%g", b.bin.lowMm, b.bin.highMm);
+        std::printf("%-6s %-9s %4d %7.0f%% %9.3f mm %7.3f mm %10.3f mm %8.3f s %7.3f s\n",
+                    toString(b.method), bin, b.count, 100.0 * b.successRate, b.medianMtreMm,
+                    b.medianInPlaneMm, b.medianOutOfPlaneMm, b.medianSeconds, b.medianCpuSeconds);
+    }
+    std::printf("\n%-6s %14s %16s %16s\n", "method", "capture range", "success (all)",
+                "median time/reg");
+    for (const auto& m : summarizeMethods(trials, settings))
+        std::printf("%-6s %11.0f mm %15.0f%% %14.3f s\n", toString(m.method), m.captureRangeMm,
+                    100.0 * m.successRate, m.medianSeconds);
+    std::printf(
+        "(capture range: largest initial mTRE up to which every bin reaches %.0f%% "
+        "success)\n",
+        100.0 * settings.captureSuccessRate);
 }
 
 void ProgressBar::update(const RegistrationProgress& p) {

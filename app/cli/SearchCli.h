@@ -1,12 +1,15 @@
 #pragma once
 // What `register` and `evaluate` share: the search options, preparing a volume for DRRs,
 // rendering or reading the reference image, and the progress bar.
+#include <chrono>
+#include <sstream>
 #include <string>
 
 #include <CLI/CLI.hpp>
 
 #include "core/Image.h"
 #include "drr/Drr.h"
+#include "search/Evaluation.h"
 #include "search/Registration.h"
 #include "volume/Volume.h"
 
@@ -39,6 +42,31 @@ DrrVolumePtr prepareForSearch(const Volume& volume, const std::string& values = 
 Image renderReference(const DrrVolume& volume, const ProjectionGeometry& geometry, int threads = 0);
 // .png (8 or 16 bit, grey or colour: converted to grey) or a 2-D MetaImage/NIfTI/NRRD file.
 Image readReferenceImage(const std::string& path);
+
+// --methods "mc,pso,..." (global methods only); fm::Error naming the option.
+std::vector<SearchMethod> parseMethodList(const std::string& text);
+// The evaluation CSV, one row per registration, rewritten whole and atomically: the header
+// before any work (a path that cannot be written fails now, not after the run), then at most
+// once a second while trials finish (an interrupted run keeps complete rows), and at the end.
+// A pipe or device gets the whole file once, at the end. An empty path writes nothing.
+class EvaluationCsv {
+  public:
+    explicit EvaluationCsv(std::string path);
+    void add(const EvaluationTrial& t, const EvaluationSettings& settings);
+    void finish();  // the final write, and "wrote PATH" on stdout
+
+  private:
+    void save();
+    std::string path_;
+    bool saveOften_ = false;
+    std::ostringstream rows_;
+    std::chrono::steady_clock::time_point lastSave_;
+};
+// The two summary tables of an evaluation on stdout.
+void printEvaluationSummary(const std::vector<EvaluationTrial>& trials,
+                            const EvaluationSettings& settings);
+// "registration 3/40 (cmaes)" on stderr (every 10th when not a terminal).
+void reportTrial(const EvaluationTrial& t, int done, int total, bool interactive);
 
 // "[#####.....]  52%  level 1/2 polish  evals 480/900  cost -0.9712" on stderr, \r-updated
 // at most every 0.1 s when `interactive`, otherwise one line per stage.

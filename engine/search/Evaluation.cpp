@@ -21,9 +21,20 @@ ProjectionGeometry EvaluationScene::camera(const SceneParams& params) const {
 
 SceneParams startInBin(const SceneParams& truth, const EvaluationScene& scene,
                        const std::vector<glm::dvec3>& targets, const StartBin& bin, Rng& rng) {
+    const ProjectionGeometry truthGeometry = scene.camera(truth);
+    return startInBin(
+        truth,
+        [&](const SceneParams& p) {
+            return targetRegistrationError(truthGeometry, scene.camera(p), targets).meanMm;
+        },
+        bin, rng);
+}
+
+SceneParams startInBin(const SceneParams& truth,
+                       const std::function<double(const SceneParams&)>& mtreFromTruth,
+                       const StartBin& bin, Rng& rng) {
     if (!(bin.lowMm >= 0.0 && bin.highMm > bin.lowMm))
         throw Error("start bin must satisfy 0 <= low < high");
-    const ProjectionGeometry truthGeometry = scene.camera(truth);
     const std::array<double, 6> base = truth;
     for (int attempt = 0; attempt < 20; ++attempt) {
         std::array<double, 6> dir;
@@ -40,9 +51,7 @@ SceneParams startInBin(const SceneParams& truth, const EvaluationScene& scene,
             for (int i = 0; i < 6; ++i) p[i] = base[i] + t * dir[i];
             return p;
         };
-        auto mtre = [&](double t) {
-            return targetRegistrationError(truthGeometry, scene.camera(poseAt(t)), targets).meanMm;
-        };
+        auto mtre = [&](double t) { return mtreFromTruth(poseAt(t)); };
         // Bracket the goal, then bisect (mTRE grows with t along a line for these ranges).
         double lo = 0.0, hi = 1.0;
         while (mtre(hi) < goal && hi < 1e3) hi *= 2.0;

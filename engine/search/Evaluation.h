@@ -42,6 +42,11 @@ struct EvaluationScene {
 // along the drawn directions reaches the bin (targets degenerate).
 SceneParams startInBin(const SceneParams& truth, const EvaluationScene& scene,
                        const std::vector<glm::dvec3>& targets, const StartBin& bin, Rng& rng);
+// The same for any error measure: `mtreFromTruth(params)` is the mTRE of `params` from the
+// truth (the MRI slice mode measures it in slice frames, engine/slice/SlicePoseError.h).
+SceneParams startInBin(const SceneParams& truth,
+                       const std::function<double(const SceneParams&)>& mtreFromTruth,
+                       const StartBin& bin, Rng& rng);
 
 struct EvaluationSettings {
     std::vector<SearchMethod> methods = globalSearchMethods();

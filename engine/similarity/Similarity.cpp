@@ -3,6 +3,7 @@
 #include "core/Error.h"
 #include "similarity/GradientDifference.h"
 #include "similarity/GradientNcc.h"
+#include "similarity/MutualInformation.h"
 #include "similarity/Ncc.h"
 
 namespace fm {
@@ -15,6 +16,8 @@ const char* toString(SimilarityMeasure measure) {
             return "gncc";
         case SimilarityMeasure::GradientDifference:
             return "gd";
+        case SimilarityMeasure::MutualInformation:
+            return "mi";
     }
     return "?";
 }
@@ -23,13 +26,15 @@ SimilarityMeasure parseSimilarityMeasure(const std::string& text) {
     if (text == "ncc") return SimilarityMeasure::Ncc;
     if (text == "gncc" || text == "gradient-ncc") return SimilarityMeasure::GradientNcc;
     if (text == "gd" || text == "gradient-difference") return SimilarityMeasure::GradientDifference;
-    throw Error("unknown similarity measure '" + text + "' (expected ncc, gncc or gd)");
+    if (text == "mi" || text == "mutual-information") return SimilarityMeasure::MutualInformation;
+    throw Error("unknown similarity measure '" + text + "' (expected ncc, gncc, gd or mi)");
 }
 
 PreparedReference prepareReference(const Image& reference, SimilarityMeasure measure) {
     PreparedReference p;
     p.image = reference;
-    if (measure != SimilarityMeasure::Ncc) p.gradients = sobel(reference);
+    if (measure != SimilarityMeasure::Ncc && measure != SimilarityMeasure::MutualInformation)
+        p.gradients = sobel(reference);
     return p;
 }
 
@@ -43,6 +48,8 @@ double similarity(SimilarityMeasure measure, const PreparedReference& reference,
     switch (measure) {
         case SimilarityMeasure::Ncc:
             return ncc(ref, moving, mask);
+        case SimilarityMeasure::MutualInformation:
+            return mutualInformation(ref, moving, mask);
         case SimilarityMeasure::GradientNcc:
             return gradientNcc(reference.gradients, sobel(moving),
                                interiorMask(ref.width, ref.height, mask));

@@ -1,6 +1,7 @@
 #pragma once
 // One entry point for the similarity measures used by the pose search. Higher is better:
-// NCC and gradient NCC lie in [-1, 1], gradient difference in (0, 1].
+// NCC and gradient NCC lie in [-1, 1], gradient difference in (0, 1], mutual
+// information in [0, log(bins)] nats.
 #include <string>
 
 #include "core/Image.h"
@@ -13,16 +14,18 @@ enum class SimilarityMeasure {
     Ncc,                 // intensities; fast, sensitive to soft tissue and background
     GradientNcc,         // Sobel gradients; ignores constant offsets and linear ramps
     GradientDifference,  // Penney 1998; robust to soft tissue and overlays
+    MutualInformation,   // intensity statistics; across contrasts (MR slices)
 };
 
-const char* toString(SimilarityMeasure measure);  // "ncc", "gncc", "gd"
-// Accepts "ncc", "gncc" (or "gradient-ncc"), "gd" (or "gradient-difference"); fm::Error else.
+const char* toString(SimilarityMeasure measure);  // "ncc", "gncc", "gd", "mi"
+// Accepts "ncc", "gncc" (or "gradient-ncc"), "gd" (or "gradient-difference"), "mi" (or
+// "mutual-information"); fm::Error else.
 SimilarityMeasure parseSimilarityMeasure(const std::string& text);
 
 // The fixed image, with what every comparison would otherwise recompute.
 struct PreparedReference {
     Image image;
-    GradientImages gradients;  // empty for Ncc
+    GradientImages gradients;  // empty for Ncc and MutualInformation
 };
 PreparedReference prepareReference(const Image& reference, SimilarityMeasure measure);
 

@@ -183,7 +183,7 @@ TEST(SimilarityDispatch, MatchesTheDirectFunctionsAndParsesNames) {
         EXPECT_DOUBLE_EQ(viaDispatch, direct) << toString(m);
         EXPECT_EQ(parseSimilarityMeasure(toString(m)), m);
     }
-    EXPECT_THROW(parseSimilarityMeasure("mi"), Error);
+    EXPECT_THROW(parseSimilarityMeasure("mutual"), Error);  // "mi" is mutual information
 }
 
 TEST(Mask, FootprintDilationAndBoundingRect) {

@@ -1,0 +1,68 @@
+#!/usr/bin/env bash
+# The MRI slice commands (docs/mri.md):
+#  1. geometry --slice prints the documented JSON, exactly;
+#  2. slice writes the PNG, raw values and mask, the same bytes on a second run;
+#  3. a plane that misses the volume gives an empty slice and a message (exit 0), not NaN;
+#  4. register --slice finds a hidden slice pose (mTRE below 1 mm);
+#  5. nonsensical slice options are refused, naming the option.
+set -uo pipefail
+FM=$1
+OUT=$(mktemp -d)
+trap 'rm -rf "$OUT"' EXIT
+fail() { echo "FAIL: $*"; exit 1; }
+
+# 1. The zero pose around the origin: a coronal slice, u = +x (left), v = -z (feet).
+json=$("$FM" geometry --slice --center 0,0,0 --pose 0,0,0,0,0,0 --size 5x3 --spacing 2 --thickness 1.5) \
+    || fail "geometry --slice exited $?"
+expected='{
+  "origin": [-4, 0, 2],
+  "u": [1, 0, 0],
+  "v": [0, 0, -1],
+  "spacing": [2, 2],
+  "size": [5, 3],
+  "thickness": 1.5
+}'
+[ "$json" = "$expected" ] || fail "geometry --slice printed
+$json"
+
+# 2. Deterministic outputs.
+for run in a b; do
+    "$FM" slice --volume phantom:sphere --pose 3,-2,5,30,20,10 --size 64x48 --spacing 2 \
+        --out "$OUT/$run.png" --raw "$OUT/$run.mha" --mask "$OUT/$run-mask.png" > "$OUT/$run.txt" \
+        || fail "slice exited $?"
+done
+cmp -s "$OUT/a.png" "$OUT/b.png" && cmp -s "$OUT/a.mha" "$OUT/b.mha" && \
+    cmp -s "$OUT/a-mask.png" "$OUT/b-mask.png" || fail "two identical slice runs differ"
+grep -q "data      [1-9][0-9]* of 3072 pixels" "$OUT/a.txt" || fail "no data pixels: $(cat "$OUT/a.txt")"
+
+# 3. A plane beyond the volume.
+msg=$("$FM" slice --volume phantom:sphere --pose 0,900,0,0,0,0 --out "$OUT/none.png" --raw "$OUT/none.mha" 2>&1)
+rc=$?
+[ $rc -eq 0 ] || fail "an empty slice exited $rc"
+grep -q "misses the volume" <<<"$msg" || fail "no message for an empty slice: $msg"
+grep -q "data      0 of" <<<"$msg" || fail "an empty slice reports data: $msg"
+[ -s "$OUT/none.png" ] || fail "no PNG for an empty slice"
+if grep -qa "nan" "$OUT/none.mha"; then fail "the empty slice's header mentions NaN"; fi
+
+# 4. Registration of a hidden slice (small budget, small grid: seconds).
+out=$("$FM" register --slice --volume phantom:knee --reference-pose 3,-2,4,20,10,5 \
+      --start 0,0,0,15,5,0 --size 96x96 --spacing 2.5 --threads 2 2>/dev/null) \
+    || fail "register --slice exited $?"
+echo "$out" | tail -3
+final=$(sed -n 's/^mTRE .*-> final \([0-9.]*\) mm.*/\1/p' <<<"$out")
+[ -n "$final" ] || fail "register --slice printed no mTRE"
+python3 -c "import sys; sys.exit(0 if float('$final') < 1.0 else 1)" || fail "final mTRE $final mm"
+
+# 5. Bad input, named.
+msg=$("$FM" slice --volume phantom:sphere --thickness -1 --out "$OUT/t.png" 2>&1)
+[ $? -ne 0 ] && grep -q "thickness" <<<"$msg" || fail "negative thickness not refused: $msg"
+msg=$("$FM" slice --volume phantom:sphere --size 0x10 --out "$OUT/t.png" 2>&1)
+[ $? -ne 0 ] && grep -q -- "--size" <<<"$msg" || fail "zero size not refused: $msg"
+msg=$("$FM" slice --volume phantom:sphere --interpolation quintic --out "$OUT/t.png" 2>&1)
+[ $? -ne 0 ] && grep -q "quintic" <<<"$msg" || fail "unknown interpolation not refused: $msg"
+msg=$("$FM" geometry --slice --center 0,0,0 --film 100x100 2>&1)
+[ $? -ne 0 ] && grep -q -- "--film" <<<"$msg" || fail "geometry --slice --film not refused: $msg"
+msg=$("$FM" register --reference-pose 0,0,0,0,0,0 --thickness 3 2>&1)
+[ $? -ne 0 ] && grep -q -- "--slice" <<<"$msg" || fail "--thickness without --slice not refused: $msg"
+[ ! -e "$OUT/t.png" ] || fail "a PNG was written for refused options"
+echo PASS
