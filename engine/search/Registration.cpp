@@ -34,6 +34,7 @@ PreparedReference cropReference(const PreparedReference& r, const PixelRect& rec
         out.gradients.gx = cropImage(r.gradients.gx, rect);
         out.gradients.gy = cropImage(r.gradients.gy, rect);
     }
+    if (!r.edgeDistance.empty()) out.edgeDistance = cropImage(r.edgeDistance, rect);
     return out;
 }
 

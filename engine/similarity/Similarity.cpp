@@ -1,6 +1,7 @@
 #include "similarity/Similarity.h"
 
 #include "core/Error.h"
+#include "similarity/EdgeDistance.h"
 #include "similarity/GradientDifference.h"
 #include "similarity/GradientNcc.h"
 #include "similarity/MutualInformation.h"
@@ -18,6 +19,8 @@ const char* toString(SimilarityMeasure measure) {
             return "gd";
         case SimilarityMeasure::MutualInformation:
             return "mi";
+        case SimilarityMeasure::EdgeDistance:
+            return "edge";
     }
     return "?";
 }
@@ -27,13 +30,16 @@ SimilarityMeasure parseSimilarityMeasure(const std::string& text) {
     if (text == "gncc" || text == "gradient-ncc") return SimilarityMeasure::GradientNcc;
     if (text == "gd" || text == "gradient-difference") return SimilarityMeasure::GradientDifference;
     if (text == "mi" || text == "mutual-information") return SimilarityMeasure::MutualInformation;
-    throw Error("unknown similarity measure '" + text + "' (expected ncc, gncc, gd or mi)");
+    if (text == "edge" || text == "edge-distance") return SimilarityMeasure::EdgeDistance;
+    throw Error("unknown similarity measure '" + text + "' (expected ncc, gncc, gd, mi or edge)");
 }
 
 PreparedReference prepareReference(const Image& reference, SimilarityMeasure measure) {
     PreparedReference p;
     p.image = reference;
-    if (measure != SimilarityMeasure::Ncc && measure != SimilarityMeasure::MutualInformation)
+    if (measure == SimilarityMeasure::EdgeDistance)
+        p.edgeDistance = distanceToMask(strongEdges(reference));
+    else if (measure != SimilarityMeasure::Ncc && measure != SimilarityMeasure::MutualInformation)
         p.gradients = sobel(reference);
     return p;
 }
@@ -56,6 +62,8 @@ double similarity(SimilarityMeasure measure, const PreparedReference& reference,
         case SimilarityMeasure::GradientDifference:
             return gradientDifference(reference.gradients, sobel(moving),
                                       interiorMask(ref.width, ref.height, mask));
+        case SimilarityMeasure::EdgeDistance:
+            return edgeDistanceSimilarity(reference.edgeDistance, moving, mask);
     }
     return 0.0;
 }

@@ -15,17 +15,20 @@ enum class SimilarityMeasure {
     GradientNcc,         // Sobel gradients; ignores constant offsets and linear ramps
     GradientDifference,  // Penney 1998; robust to soft tissue and overlays
     MutualInformation,   // intensity statistics; across contrasts (MR slices)
+    EdgeDistance,        // the footprint's outline against the image's edges (chamfer,
+                         // similarity/EdgeDistance.h): implants, whose outline is the evidence
 };
 
-const char* toString(SimilarityMeasure measure);  // "ncc", "gncc", "gd", "mi"
+const char* toString(SimilarityMeasure measure);  // "ncc", "gncc", "gd", "mi", "edge"
 // Accepts "ncc", "gncc" (or "gradient-ncc"), "gd" (or "gradient-difference"), "mi" (or
-// "mutual-information"); fm::Error else.
+// "mutual-information"), "edge" (or "edge-distance"); fm::Error else.
 SimilarityMeasure parseSimilarityMeasure(const std::string& text);
 
 // The fixed image, with what every comparison would otherwise recompute.
 struct PreparedReference {
     Image image;
-    GradientImages gradients;  // empty for Ncc and MutualInformation
+    GradientImages gradients;  // empty for Ncc, MutualInformation and EdgeDistance
+    Image edgeDistance;        // EdgeDistance only: distance (pixels) to the nearest edge
 };
 PreparedReference prepareReference(const Image& reference, SimilarityMeasure measure);
 
