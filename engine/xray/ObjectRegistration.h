@@ -1,0 +1,42 @@
+#pragma once
+// Registering one object of a calibrated scene against a real radiograph: the object's pose
+// in the camera's frame (ObjectPoseParameterization, pivot at the centre of its bounds) is
+// searched from a start pose; the other objects are hidden meanwhile (their outlines are not
+// this object's evidence). Several objects are registered one at a time (registerObjects).
+#include <string>
+#include <vector>
+
+#include "scene/Scene.h"
+#include "search/Registration.h"
+
+namespace fm {
+
+// The search for a real radiograph and a mesh (docs/real-xray.md gives the figures):
+// edge-distance similarity (implants) or gradient NCC (CT volumes), levels 4, 2, 1 of a
+// 1024-pixel image, a start within 5 mm in-plane, 20 mm in depth and 5 deg, each candidate
+// rendered only where the model projects.
+RegistrationSettings realXraySettings(SimilarityMeasure similarity = SimilarityMeasure::EdgeDistance);
+
+struct ObjectRegistrationResult {
+    RigidTransform worldFromObject;
+    double similarity = 0.0;  // at the finest level
+    int evaluations = 0;
+    double seconds = 0.0;
+    bool stopped = false;
+};
+
+// Throws fm::Error if the object or the view's camera does not exist (and as Registration).
+ObjectRegistrationResult registerObject(const Scene& scene, std::size_t object,
+                                        const RegistrationView& view,
+                                        const RigidTransform& start,
+                                        const RegistrationSettings& settings,
+                                        const RegistrationCallback& progress = {},
+                                        const std::atomic<bool>* stop = nullptr);
+
+// The object's silhouette: pixels of `camera` whose ray crosses it (line integral > 0).
+Mask objectSilhouette(const SceneObject& object, const ProjectionGeometry& camera, int threads = 0);
+
+// |a and b| / |a or b|; 0 if both are empty. Throws fm::Error for masks of different sizes.
+double silhouetteIoU(const Mask& a, const Mask& b);
+
+}  // namespace fm
