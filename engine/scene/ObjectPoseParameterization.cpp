@@ -69,8 +69,15 @@ void ObjectPoseParameterization::apply(const SceneParams& params, Scene& scene) 
 
 SceneParams ObjectPoseParameterization::fromSearchPoint(const SceneParams& start,
                                                         const std::array<double, 6>& point) const {
+    // Depth moves the pivot along its ray from the source (x, y scale with the depth), so the
+    // projection stays put: single views constrain depth weakly, and a depth step that also
+    // moved the image would couple it to the in-plane coordinates the image constrains well.
     SceneParams p;
-    for (int i = 0; i < 6; ++i) p[i] = start[i] + point[i];
+    for (int i = 3; i < 6; ++i) p[i] = start[i] + point[i];
+    p[2] = start[2] + point[2];
+    const double scale = start[2] != 0.0 ? p[2] / start[2] : 1.0;
+    p[0] = (start[0] + point[0]) * scale;
+    p[1] = (start[1] + point[1]) * scale;
     return p;
 }
 

@@ -11,7 +11,8 @@
 //           u, v and the view direction, relative to the reference orientation, composed
 //           R = R_view(c) R_u(a) R_v(b) (JointTrack's 3-1-2 order, in the camera's axes)
 // The pivot is a point of the object's own frame (by default the centre of its bounds).
-// Translations of the search coordinates are exactly x, y and depth; angles add.
+// Search coordinates: film-parallel steps (mm at the start's depth), a depth step along the
+// ray through the pivot (x, y scale with depth: the pivot's projection stays), angles add.
 #include <string>
 
 #include "scene/RigidTransform.h"
