@@ -21,7 +21,7 @@ RegistrationSettings realXraySettings(SimilarityMeasure similarity) {
     s.roiMargin = 6;
     s.footprintDilation = 2;
     s.depthRounds = 4;
-    s.depthStepMm = 3.0;
+    s.depthStepMm = 6.0;  // reach +-12 mm, then a third of that per round
     return s;
 }
 
