@@ -23,8 +23,12 @@ void requireFinite(const SceneParams& params, const std::string& object) {
 ObjectPoseParameterization::ObjectPoseParameterization(std::string object,
                                                        const ProjectionGeometry& cameraInWorld,
                                                        const RigidTransform& reference,
-                                                       const glm::dvec3& pivotInObject)
-    : object_(std::move(object)), reference_(reference), pivot_(pivotInObject) {
+                                                       const glm::dvec3& pivotInObject,
+                                                       DepthSearch depthSearch)
+    : object_(std::move(object)),
+      reference_(reference),
+      pivot_(pivotInObject),
+      depthSearch_(depthSearch) {
     cameraInWorld.validate("camera of '" + object_ + "'");
     reference.validate("reference pose of '" + object_ + "'");
     if (!std::isfinite(pivot_.x) || !std::isfinite(pivot_.y) || !std::isfinite(pivot_.z))
@@ -73,8 +77,8 @@ SceneParams ObjectPoseParameterization::fromSearchPoint(const SceneParams& start
     // projection stays put: single views constrain depth weakly, and a depth step that also
     // moved the image would couple it to the in-plane coordinates the image constrains well.
     SceneParams p;
-    for (int i = 3; i < 6; ++i) p[i] = start[i] + point[i];
-    p[2] = start[2] + point[2];
+    for (int i = 0; i < 6; ++i) p[i] = start[i] + point[i];
+    if (depthSearch_ == DepthSearch::Straight) return p;
     const double scale = start[2] != 0.0 ? p[2] / start[2] : 1.0;
     p[0] = (start[0] + point[0]) * scale;
     p[1] = (start[1] + point[1]) * scale;

@@ -11,14 +11,17 @@
 //           u, v and the view direction, relative to the reference orientation, composed
 //           R = R_view(c) R_u(a) R_v(b) (JointTrack's 3-1-2 order, in the camera's axes)
 // The pivot is a point of the object's own frame (by default the centre of its bounds).
-// Search coordinates: film-parallel steps (mm at the start's depth), a depth step along the
-// ray through the pivot (x, y scale with depth: the pivot's projection stays), angles add.
+// Search coordinates: the numbers add (DepthSearch::Straight), or film-parallel steps (mm at
+// the start's depth) and a depth step along the ray through the pivot (DepthSearch::AlongRay:
+// x, y scale with depth so the pivot's projection stays; real radiographs use this).
 #include <string>
 
 #include "scene/RigidTransform.h"
 #include "scene/SceneParameterization.h"
 
 namespace fm {
+
+enum class DepthSearch { Straight, AlongRay };
 
 class ObjectPoseParameterization final : public SceneParameterization {
   public:
@@ -27,7 +30,8 @@ class ObjectPoseParameterization final : public SceneParameterization {
     // Throws fm::Error for an invalid camera, a reference that is not a rigid motion, or a
     // non-finite pivot.
     ObjectPoseParameterization(std::string object, const ProjectionGeometry& cameraInWorld,
-                               const RigidTransform& reference, const glm::dvec3& pivotInObject);
+                               const RigidTransform& reference, const glm::dvec3& pivotInObject,
+                               DepthSearch depthSearch = DepthSearch::Straight);
 
     std::array<ParameterInfo, 6> describe() const override;
     // Writes scene.object(name).worldFromObject; throws fm::Error if there is no such object
@@ -54,6 +58,7 @@ class ObjectPoseParameterization final : public SceneParameterization {
     glm::dmat3 referenceInCamera_{1.0};  // the reference orientation in E
     RigidTransform reference_;
     glm::dvec3 pivot_{0.0};
+    DepthSearch depthSearch_ = DepthSearch::Straight;
 };
 
 // The pivot the parameterization uses by default: the centre of the model's bounds (object

@@ -42,7 +42,8 @@ ObjectRegistrationResult registerObject(const Scene& scene, std::size_t object,
     if (!target.model) throw Error("registration: object '" + target.name + "' has no model");
     target.worldFromObject = start;
     auto parameterization = std::make_shared<ObjectPoseParameterization>(
-        target.name, alone.cameras[view.camera], start, defaultPivot(*target.model));
+        target.name, alone.cameras[view.camera], start, defaultPivot(*target.model),
+        DepthSearch::AlongRay);
     const Registration registration(alone, parameterization, {view}, settings);
     const RegistrationResult r =
         registration.run(parameterization->referenceParams(), progress, stop);

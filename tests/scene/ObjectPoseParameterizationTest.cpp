@@ -146,12 +146,17 @@ TEST(ObjectPoseParameterization, RotationsTurnAboutThePivotAlongTheCameraAxes) {
 TEST(ObjectPoseParameterization, SearchPointsMoveDepthAlongTheRayAndBadInputIsRefused) {
     Fixture f;
     const fm::SceneParams start{1, 2, 900, 4, 5, 6};
-    const fm::SceneParams p = f.param.fromSearchPoint(start, {0.5, -1, 20, 1, -2, 3});
+    const fm::SceneParams straight = f.param.fromSearchPoint(start, {0.5, -1, 20, 1, -2, 3});
+    const fm::SceneParams sum{1.5, 1, 920, 5, 3, 9};
+    EXPECT_EQ(straight, sum);
+    const fm::ObjectPoseParameterization alongRay("implant", f.camera.geometry, f.reference,
+                                                  f.pivot, fm::DepthSearch::AlongRay);
+    const fm::SceneParams p = alongRay.fromSearchPoint(start, {0.5, -1, 20, 1, -2, 3});
     // In-plane steps at the start depth, then along the ray to depth 920: x, y scale 920/900.
     const fm::SceneParams expected{1.5 * 920.0 / 900.0, 1.0 * 920.0 / 900.0, 920, 5, 3, 9};
     for (int i = 0; i < 6; ++i) EXPECT_NEAR(p[i], expected[i], 1e-12);
     // A pure depth step keeps the pivot's projection.
-    const fm::SceneParams deeper = f.param.fromSearchPoint(start, {0, 0, 150, 0, 0, 0});
+    const fm::SceneParams deeper = alongRay.fromSearchPoint(start, {0, 0, 150, 0, 0, 0});
     const glm::dvec2 before = project(f.camera, f.centreAt(start));
     const glm::dvec2 after = project(f.camera, f.centreAt(deeper));
     EXPECT_NEAR(after.x, before.x, kExactTol);
