@@ -1,6 +1,7 @@
 #include "ProcessTransport.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 #include <string>
 
@@ -60,6 +61,12 @@ Transport& processTransport() {
 
 void endRunAfterError(int exitCode) {
     if (gStarted) gStarted->abortAll(exitCode);
+}
+
+void silenceStandardOutput() {
+    std::fflush(stdout);
+    if (!std::freopen("/dev/null", "w", stdout))
+        throw Error("cannot send standard output to /dev/null");
 }
 
 int threadsPerRank(const Transport& transport, int requested) {

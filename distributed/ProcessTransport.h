@@ -32,6 +32,10 @@ class JobsFailed : public Error {
 // nothing when no distributed run was started.
 void endRunAfterError(int exitCode);
 
+// For ranks other than 0: a command's report is printed once, by rank 0, so the others send
+// their standard output to /dev/null (warnings and errors on standard error stay).
+void silenceStandardOutput();
+
 // True in a build with MPI.
 bool builtWithMpi();
 

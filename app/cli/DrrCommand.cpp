@@ -5,9 +5,12 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -17,6 +20,8 @@
 #include "cli/VolumeOption.h"
 #include "core/Error.h"
 #include "core/Parallel.h"
+#include "distributed/JobRunner.h"
+#include "distributed/ProcessTransport.h"
 #include "drr/Drr.h"
 #include "cli/ValuesChoice.h"
 #include "drr/DrrBatch.h"
@@ -141,9 +146,71 @@ void checkArgs(const DrrArgs& a, bool batch) {
     fm::io::checkOutputPath(a.raw, "--raw");
 }
 
+// A batch view's result on its way to rank 0: the image's size and spacing and its render time,
+// then its pixels (row 0 first), padded to the largest view of the batch (fixed-size records).
+struct DrrRecordHeader {
+    std::int32_t width = 0;
+    std::int32_t height = 0;
+    double spacingX = 0.0;
+    double spacingY = 0.0;
+    double renderMs = 0.0;
+};
+
+// Many views of one prepared volume (engine/drr/DrrBatch): job i renders view i on rank
+// i % ranks; rank 0 writes every view's files, in order. One process runs the same code.
+void renderBatch(const DrrArgs& a, const std::vector<fm::DrrJob>& jobs,
+                 const fm::DrrVolume& prepared, const fm::DrrRenderOptions& renderOptions,
+                 fm::distributed::Transport& transport) {
+    const bool writer = transport.rank() == 0;
+    std::size_t maxPixels = 0;
+    for (const fm::DrrJob& job : jobs)
+        maxPixels = std::max(maxPixels, static_cast<std::size_t>(job.geometry.detector.size.x) *
+                                            static_cast<std::size_t>(job.geometry.detector.size.y));
+    const std::size_t recordBytes = sizeof(DrrRecordHeader) + maxPixels * sizeof(float);
+    if (writer)
+        std::printf("views     %zu (%s) on %d process%s (%s), %zu bytes each to rank 0\n",
+                    jobs.size(), a.posesFile.empty() ? "azimuth sweep" : a.posesFile.c_str(),
+                    transport.size(), transport.size() == 1 ? "" : "es", transport.name(),
+                    fm::distributed::bytesPerJob(recordBytes));
+    std::fflush(stdout);
+    const auto failures = fm::distributed::runIndexedJobs(
+        transport, static_cast<int>(jobs.size()), recordBytes,
+        [&](int i, std::span<std::byte> record) {
+            const auto start = std::chrono::steady_clock::now();
+            const fm::Image image = fm::renderDrr(prepared, jobs[i].geometry, renderOptions);
+            DrrRecordHeader h{image.width, image.height, image.spacing.x, image.spacing.y,
+                              msSince(start)};
+            std::memcpy(record.data(), &h, sizeof h);
+            std::memcpy(record.data() + sizeof h, image.pixels.data(),
+                        image.pixels.size() * sizeof(float));
+        },
+        [&](int i, std::span<const std::byte> record) {
+            DrrRecordHeader h;
+            std::memcpy(&h, record.data(), sizeof h);
+            fm::Image image(h.width, h.height);
+            image.spacing = {h.spacingX, h.spacingY};
+            std::memcpy(image.pixels.data(), record.data() + sizeof h,
+                        image.pixels.size() * sizeof(float));
+            const fm::DrrJob& job = jobs[i];
+            warnIfEmpty(image, "view " + std::to_string(job.index) + " (" + job.origin + ")");
+            writeOutputs(image, job.output, job.rawOutput, a.intensity);
+            std::printf("wrote     %s%s%s (%s, %.2f ms)\n", job.output.c_str(),
+                        job.output.empty() || job.rawOutput.empty() ? "" : " ",
+                        job.rawOutput.c_str(), job.origin.c_str(), h.renderMs);
+        });
+    if (!failures.empty())
+        throw fm::distributed::JobsFailed(
+            std::to_string(failures.size()) + " of " + std::to_string(jobs.size()) +
+            " views failed (the others were written): " +
+            fm::distributed::describeFailures(failures));
+}
+
 void runDrr(const DrrArgs& a) {
     const bool batch = !a.posesFile.empty() || a.angles > 0;
     checkArgs(a, batch);
+    if (!batch && fm::distributed::launcherProcessCount() > 1)
+        throw fm::Error("one view runs on one process: give --poses FILE or --angles N to spread "
+                        "views over the processes of an MPI run");
     if (a.intensity && a.values == "raw")
         std::fprintf(stderr,
                      "fluoromatch: note: --intensity with --values raw is exp(-value * mm), "
@@ -161,6 +228,12 @@ void runDrr(const DrrArgs& a) {
     const fm::cli::BoneChoice choice = fm::cli::chooseBone(a.bones, fm::loadVolume(a.volume));
     const fm::Volume& volume = choice.volume;
     const double loadMs = msSince(start);
+    // A batch runs over this process's transport (MPI ranks, or this process alone). Every
+    // rank loads and prepares the volume once; only rank 0 reports and writes.
+    fm::distributed::Transport* transport = batch ? &fm::distributed::processTransport() : nullptr;
+    if (transport && transport->rank() != 0) fm::distributed::silenceStandardOutput();
+    const int threads =
+        transport ? fm::distributed::threadsPerRank(*transport, a.threads) : a.threads;
     std::printf("volume    %s (%d x %d x %d voxels, loaded in %.1f ms)\n", a.volume.c_str(),
                 volume.dims.x, volume.dims.y, volume.dims.z, loadMs);
     if (!choice.describe.empty()) std::printf("bone      %s\n", choice.describe.c_str());
@@ -168,7 +241,7 @@ void runDrr(const DrrArgs& a) {
     fm::DrrValueOptions valueOptions;
     valueOptions.values = fm::cli::reportValues(volume, a.values);
     valueOptions.thresholdHU = a.thresholdHU;
-    valueOptions.threads = a.threads;
+    valueOptions.threads = threads;
     start = std::chrono::steady_clock::now();
     const fm::DrrVolumePtr prepared = fm::prepareDrrVolume(volume, valueOptions);
     const double prepareMs = msSince(start);
@@ -177,16 +250,16 @@ void runDrr(const DrrArgs& a) {
     renderOptions.output = a.intensity ? fm::DrrOutput::Intensity : fm::DrrOutput::LineIntegral;
     renderOptions.trace = a.mode == "approx" ? fm::DrrTrace::Approx : fm::DrrTrace::Exact;
     renderOptions.approxStepMm = a.stepMm;
-    renderOptions.threads = a.threads;
+    renderOptions.threads = threads;
     renderOptions.skipEmptySpace = !a.noSkip;
 
-    const int threads = a.threads == 0 ? fm::defaultThreadCount() : a.threads;
+    const int shownThreads = threads == 0 ? fm::defaultThreadCount() : threads;
     std::printf("render    %s, %s", a.intensity ? "intensity exp(-integral)" : "line integral",
                 a.mode.c_str());
     if (a.thresholdHU) std::printf(", threshold %g", *a.thresholdHU);
     if (a.mode == "approx") std::printf(" (step %g mm)", a.stepMm);
     if (a.noSkip) std::printf(", no empty-space skipping");
-    std::printf(", %d thread%s\n", threads, threads == 1 ? "" : "s");
+    std::printf(", %d thread%s\n", shownThreads, shownThreads == 1 ? "" : "s");
     std::printf("prepare   %.2f ms\n", prepareMs);
 
     if (batch) {
@@ -194,18 +267,7 @@ void runDrr(const DrrArgs& a) {
         const std::vector<fm::DrrJob> jobs =
             fm::makeDrrJobs(views, fm::cli::sceneSetupFrom(a.scene), choice.ctCenter,
                             a.scene.downsample, a.out, a.raw);
-        std::printf("views     %zu (%s)\n", jobs.size(),
-                    a.posesFile.empty() ? "azimuth sweep" : a.posesFile.c_str());
-        for (const fm::DrrJob& job : jobs) {
-            start = std::chrono::steady_clock::now();
-            const fm::Image image = fm::renderDrr(*prepared, job.geometry, renderOptions);
-            const double ms = msSince(start);
-            warnIfEmpty(image, "view " + std::to_string(job.index) + " (" + job.origin + ")");
-            writeOutputs(image, job.output, job.rawOutput, a.intensity);
-            std::printf("wrote     %s%s%s (%s, %.2f ms)\n", job.output.c_str(),
-                        job.output.empty() || job.rawOutput.empty() ? "" : " ",
-                        job.rawOutput.c_str(), job.origin.c_str(), ms);
-        }
+        renderBatch(a, jobs, *prepared, renderOptions, *transport);
         return;
     }
 

@@ -4,7 +4,11 @@
 #     job order, job j on rank j % size, failures named with their rank, others finish);
 #  2. `fluoromatch evaluate --csv` gives byte-identical CSVs without mpirun and with 1, 2 and 3
 #     ranks, except the columns of measured times (header contains "second" or "time", or ends
-#     in "_ms"), which are dropped before comparing.
+#     in "_ms"), which are dropped before comparing;
+#  3. `fluoromatch drr --poses` writes byte-identical files (PNG and exact values per view)
+#     without mpirun and with 1, 2 and 3 ranks;
+#  4. a view that cannot be written fails alone: the others are written, the run exits
+#     non-zero and names the job.
 # Usage: mpi_runs_test.sh MPI_FOUND MPIEXEC TEST_BINARY FLUOROMATCH LSAN_SUPPRESSIONS
 # Skips (77) only when the build has no MPI, and never under CI=true (CI installs MPI).
 set -uo pipefail
@@ -63,4 +67,33 @@ for n in 1 2 3; do
     [ "$(grep -c '^method  capture range' "$OUT/np$n.txt")" -eq 1 ] || fail "the summary was printed more than once on $n ranks"
     echo "evaluate on $n ranks: CSV identical to one process (apart from: $dropped)"
 done
+
+# 3. Batch DRRs (drr --poses): 5 views, PNG and exact values per view, byte-identical files
+#    without mpirun and on 1, 2 and 3 ranks.
+printf '0 0 0 0 0 0\n5 0 0 30 0 0\n# a comment\n0 -5 10 -40 10 5\n0 0 0 90 -20 0\n3 3 3 170 5 -10\n' >"$OUT/views.txt"
+DRR=(drr --poses "$OUT/views.txt" --size 48x40 --threads 1)
+mkdir -p "$OUT/drr-plain"
+"$FM" "${DRR[@]}" --out "$OUT/drr-plain/v.png" --raw "$OUT/drr-plain/v.mha" >"$OUT/drr-plain.txt" 2>&1 || {
+    cat "$OUT/drr-plain.txt"; fail "drr --poses without mpirun exited $?"; }
+[ "$(ls "$OUT/drr-plain" | wc -l)" -eq 10 ] || { ls "$OUT/drr-plain"; fail "expected 5 PNGs and 5 .mha files"; }
+for n in 1 2 3; do
+    mkdir -p "$OUT/drr-np$n"
+    run "$n" "$FM" "${DRR[@]}" --out "$OUT/drr-np$n/v.png" --raw "$OUT/drr-np$n/v.mha" >"$OUT/drr-np$n.txt" 2>&1 || {
+        cat "$OUT/drr-np$n.txt"; fail "drr --poses on $n ranks exited $?"; }
+    grep -q "on $n process.* (MPI)" "$OUT/drr-np$n.txt" || { cat "$OUT/drr-np$n.txt"; fail "drr did not run on $n MPI ranks"; }
+    diff -r "$OUT/drr-plain" "$OUT/drr-np$n" || fail "batch DRRs on $n ranks differ from one process"
+    [ "$(grep -c '^wrote ' "$OUT/drr-np$n.txt")" -eq 5 ] || fail "rank 0 should report 5 views once on $n ranks"
+    echo "drr --poses on $n ranks: 10 files identical to one process"
+done
+
+# 4. A job that fails: view 2's PNG cannot be written (a folder has its name). The other views
+#    are written, the run exits 1 and names job 2.
+mkdir -p "$OUT/drr-fail/v_002.png"
+run 3 "$FM" "${DRR[@]}" --out "$OUT/drr-fail/v.png" >"$OUT/drr-fail.txt" 2>&1
+rc=$?
+cat "$OUT/drr-fail.txt"
+[ $rc -ne 0 ] || fail "a run with a failed view exited 0"
+grep -q "1 of 5 views failed.*job 2 (rank 0)" "$OUT/drr-fail.txt" || fail "the failed job is not named"
+for v in 000 001 003 004; do [ -s "$OUT/drr-fail/v_$v.png" ] || fail "view $v was not written"; done
+echo "a failed view: the others written, exit $rc naming job 2"
 echo "PASS"
