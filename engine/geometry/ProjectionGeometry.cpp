@@ -1,6 +1,5 @@
 #include "geometry/ProjectionGeometry.h"
 
-#include <charconv>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -9,7 +8,7 @@
 
 #include "core/Error.h"
 #include "core/WorldLimits.h"
-#include "io/StrictJson.h"
+#include "geometry/StrictJson.h"
 
 namespace fm {
 
@@ -26,99 +25,8 @@ constexpr int kMaxDetectorPixels = 16384;
 // grazes the film and the image is meaningless.
 constexpr double kMinSourceToPlaneMm = 1e-3;
 
-std::string formatNumber(double value) {
-    // Shortest text that reads back to the same double: exact round trip, readable output.
-    // -0 is written as 0 (equal as numbers; "-0" only confuses readers).
-    if (value == 0.0) value = 0.0;
-    char buffer[64];
-    const auto result = std::to_chars(buffer, buffer + sizeof(buffer), value);
-    return std::string(buffer, result.ptr);
-}
-
-std::string formatVec(const glm::dvec3& v) {
-    std::string out = "[";
-    out += formatNumber(v.x);
-    out += ", ";
-    out += formatNumber(v.y);
-    out += ", ";
-    out += formatNumber(v.z);
-    out += "]";
-    return out;
-}
-
-class JsonReader {
-  public:
-    explicit JsonReader(std::string what) : what_(std::move(what)) {}
-
-    [[noreturn]] void fail(const std::string& field, const std::string& why) const {
-        throw Error(what_ + ": " + (field.empty() ? "" : "\"" + field + "\" ") + why);
-    }
-
-    const Json& member(const Json& object, const std::string& key, const std::string& path) const {
-        const auto it = object.find(key);
-        if (it == object.end()) fail(path, "is missing");
-        return *it;
-    }
-
-    void requireObject(const Json& value, const std::string& path,
-                       std::initializer_list<const char*> allowedKeys) const {
-        if (!value.is_object()) fail(path, "must be a JSON object");
-        for (const auto& item : value.items()) {
-            bool known = false;
-            for (const char* key : allowedKeys) known = known || item.key() == key;
-            // Unknown keys are rejected so that a misspelt or unsupported key never goes unnoticed.
-            if (!known) {
-                const std::string where = path.empty() ? item.key() : path + "." + item.key();
-                fail(where, "is not part of the geometry format");
-            }
-        }
-    }
-
-    double number(const Json& value, const std::string& path) const {
-        if (!value.is_number()) fail(path, "must be a number");
-        const double d = value.get<double>();
-        if (!std::isfinite(d)) fail(path, "must be finite");
-        return d;
-    }
-
-    const Json& array(const Json& value, const std::string& path, std::size_t count) const {
-        if (!value.is_array() || value.size() != count)
-            fail(path, "must be an array of " + std::to_string(count) + " numbers");
-        return value;
-    }
-
-    glm::dvec3 vec3(const Json& object, const std::string& key, const std::string& path) const {
-        const Json& a = array(member(object, key, path), path, 3);
-        glm::dvec3 v;
-        for (int i = 0; i < 3; ++i) v[i] = number(a[i], path + "[" + std::to_string(i) + "]");
-        return v;
-    }
-
-    glm::dvec2 vec2(const Json& object, const std::string& key, const std::string& path) const {
-        const Json& a = array(member(object, key, path), path, 2);
-        glm::dvec2 v;
-        for (int i = 0; i < 2; ++i) v[i] = number(a[i], path + "[" + std::to_string(i) + "]");
-        return v;
-    }
-
-    glm::ivec2 size(const Json& object, const std::string& key, const std::string& path) const {
-        const Json& a = array(member(object, key, path), path, 2);
-        glm::ivec2 v;
-        for (int i = 0; i < 2; ++i) {
-            const std::string elementPath = path + "[" + std::to_string(i) + "]";
-            const double d = number(a[i], elementPath);
-            // Integral floats (256.0, as some JSON writers print) are fine; 255.5 is not.
-            if (d != std::floor(d)) fail(elementPath, "must be a whole number of pixels");
-            if (d < 1 || d > kMaxDetectorPixels)
-                fail(elementPath, "must be between 1 and " + std::to_string(kMaxDetectorPixels));
-            v[i] = static_cast<int>(d);
-        }
-        return v;
-    }
-
-  private:
-    std::string what_;
-};
+using json_detail::formatNumber;
+using json_detail::formatVec;
 
 }  // namespace
 
@@ -208,14 +116,14 @@ std::optional<glm::dvec2> ProjectionGeometry::projectToPixel(const glm::dvec3& w
 
 ProjectionGeometry geometryFromJson(const std::string& jsonText, const std::string& what) {
     // Strict: syntax errors, numbers out of double range and duplicate keys are refused.
-    const Json root = io::parseStrictJson(jsonText, what);
-    const JsonReader reader(what);
+    const StrictJsonReader reader(what, "the geometry format");
+    const Json root = reader.parse(jsonText);
     reader.requireObject(root, "", {"source", "detector"});
     ProjectionGeometry g;
     g.source = reader.vec3(root, "source", "source");
     const Json& det = reader.member(root, "detector", "detector");
     reader.requireObject(det, "detector", {"size", "spacing", "origin", "u", "v"});
-    g.detector.size = reader.size(det, "size", "detector.size");
+    g.detector.size = reader.size(det, "size", "detector.size", kMaxDetectorPixels);
     g.detector.spacing = reader.vec2(det, "spacing", "detector.spacing");
     g.detector.origin = reader.vec3(det, "origin", "detector.origin");
     g.detector.u = reader.vec3(det, "u", "detector.u");

@@ -1,6 +1,6 @@
 #pragma once
-// Strict JSON reading and exact number writing for the slice geometry file (the X-ray
-// geometry's reader in ProjectionGeometry.cpp follows the same rules): missing keys, unknown keys (a misspelt key never goes
+// Strict JSON reading and exact number writing for the geometry files (the X-ray projection
+// geometry and the slice geometry): missing keys, unknown keys (a misspelt key never goes
 // unnoticed), wrong types and non-finite numbers are fm::Error naming the file and the field;
 // numbers are written with the shortest text that reads back to the same double.
 #include <charconv>
