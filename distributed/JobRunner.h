@@ -1,7 +1,7 @@
 #pragma once
 // Indexed jobs -> fixed-size result records -> rank 0 writes. The one mechanism behind every
-// distributed command (evaluate: one job per registration; batch DRRs: one per pose; later
-// track: one per trial x bone or keyframe segment).
+// distributed command (evaluate: one job per registration; batch DRRs: one per pose;
+// track: one per bone x keyframe segment).
 //
 //   runIndexedJobs(transport, jobCount, sizeof(Record),
 //       [&](int job, std::span<std::byte> record) { ...compute job, fill record... },

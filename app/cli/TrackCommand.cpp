@@ -2,19 +2,27 @@
 // more cameras), frame by frame, each frame started from the frames before it. The .tra (and
 // the per-frame CSV) are rewritten atomically after every frame: a run that is killed loses at
 // most the frame it was on, and --resume continues it. docs/tracking.md.
+// Jobs are bone x keyframe segment (track/TrackSegments.h), run over this process's transport:
+// under an MPI launcher they spread over the ranks and rank 0 alone writes (docs/distributed.md).
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <memory>
 #include <sstream>
 #include <string>
 
 #include "cli/CommandRegistry.h"
 #include "core/Error.h"
+#include "distributed/JobRunner.h"
+#include "distributed/ProcessTransport.h"
 #include "io/AtomicFile.h"
 #include "io/ByteSource.h"
 #include "pose/AutoscoperTra.h"
+#include "track/FrameRecordBytes.h"
+#include "track/TrackSegments.h"
 #include "track/TrialScene.h"
 
 namespace {
@@ -51,8 +59,8 @@ std::vector<std::size_t> parseCameras(const std::string& text, std::size_t count
         char* end = nullptr;
         const long v = std::strtol(item.c_str(), &end, 10);
         if (item.empty() || *end != '\0' || v < 1 || static_cast<std::size_t>(v) > count)
-            throw fm::Error("--cameras must list camera numbers 1.." + std::to_string(count) + ", not '" +
-                            text + "'");
+            throw fm::Error("--cameras must list camera numbers 1.." + std::to_string(count) +
+                            ", not '" + text + "'");
         out.push_back(static_cast<std::size_t>(v - 1));
     }
     return out;
@@ -87,115 +95,274 @@ std::string csvRow(const fm::FrameRecord& r, const std::string& bone) {
     return row + buf + note + "\n";
 }
 
+// One bone's inputs (the same on every rank) and, on rank 0, what has been found so far.
+struct BoneRun {
+    std::string name;
+    fs::path out;
+    std::map<int, fm::RigidTransform> done;  // frames already in --out (--resume), object poses
+    std::vector<fm::TrackSegment> segments;
+    std::size_t todo = 0;                 // frames to track in this run
+    fm::TraFile tra;                      // rank 0: one row per trial frame
+    std::map<int, fm::FrameRecord> rows;  // rank 0: this run's frames, by tracking position
+};
+
+// A job: one segment of one bone; its record holds the segment's frames (a count, then one
+// fixed-size frame record each, padded to the longest segment of the run).
+struct TrackJob {
+    std::size_t bone = 0;
+    std::size_t segment = 0;
+};
+
+std::map<int, fm::RigidTransform> keyframesOf(const fm::TrialScene& scene, const std::string& bone,
+                                              std::size_t boneIndex,
+                                              const std::optional<fm::TraFile>& startTra,
+                                              const std::string& startPath) {
+    // The trial's own keyframes, then the --start file's poses (Autoscoper frame).
+    std::map<int, fm::RigidTransform> keyframes;
+    if (const auto k = scene.trial.keyframes.find(bone); k != scene.trial.keyframes.end())
+        for (const fm::TrialPose& p : k->second)
+            keyframes[p.frame] = p.volumeFrame == fm::VolumeFrame::Autoscoper
+                                     ? fm::objectPoseFromTra(scene, bone, p.worldFromVolume)
+                                     : p.worldFromVolume;
+    if (startTra) {
+        const int object = startTra->objects > 1 ? static_cast<int>(boneIndex) : 0;
+        if (object >= startTra->objects)
+            throw fm::Error(startPath + ": holds " + std::to_string(startTra->objects) +
+                            " objects; bone " + bone + " would be object " +
+                            std::to_string(object + 1));
+        for (std::size_t f = 0; f < startTra->frames.size(); ++f)
+            if (const auto& p = startTra->frames[f][static_cast<std::size_t>(object)])
+                keyframes[static_cast<int>(f)] = fm::objectPoseFromTra(scene, bone, *p);
+    }
+    return keyframes;
+}
+
+// --resume: the frames of `out` already tracked (object poses), after checking its shape.
+std::map<int, fm::RigidTransform> resumedFrames(const fm::TrialScene& scene,
+                                                const std::string& bone, const fs::path& out,
+                                                fm::TraFile& tra) {
+    const fm::TraFile done = fm::readTra(out);
+    if (static_cast<int>(done.frames.size()) != scene.frameCount || done.objects != 1)
+        throw fm::Error("--resume: " + fm::io::quoted(out) + " has " +
+                        std::to_string(done.frames.size()) + " frames of " +
+                        std::to_string(done.objects) + " objects, the trial " +
+                        std::to_string(scene.frameCount) + " frames of one bone");
+    tra = done;
+    std::map<int, fm::RigidTransform> poses;
+    for (std::size_t f = 0; f < done.frames.size(); ++f)
+        if (done.frames[f][0])
+            poses[static_cast<int>(f)] = fm::objectPoseFromTra(scene, bone, *done.frames[f][0]);
+    return poses;
+}
+
 void runTrack(const TrackArgs& a) {
+    fm::distributed::Transport& transport = fm::distributed::processTransport();
+    const bool writer = transport.rank() == 0;
+    if (!writer) fm::distributed::silenceStandardOutput();
+    const int threads = fm::distributed::threadsPerRank(transport, a.threads);
+
     const fm::Trial trial = fm::readTrial(a.trial);
-    for (const std::string& w : trial.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
-    if (a.bones.empty()) throw fm::Error("--bone NAME is required (the trial's bones: see its file)");
+    if (writer)
+        for (const std::string& w : trial.warnings)
+            std::fprintf(stderr, "warning: %s\n", w.c_str());
+    if (a.bones.empty())
+        throw fm::Error("--bone NAME is required (the trial's bones: see its file)");
     for (const std::string& b : a.bones) trial.bone(b);  // names the bones it has otherwise
-    const fm::TrialScene scene = fm::loadTrialScene(trial, a.bones, a.threads);
-    for (const std::string& w : scene.trial.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+    const fm::TrialScene scene = fm::loadTrialScene(trial, a.bones, threads);
+    if (writer)
+        for (const std::string& w : scene.trial.warnings)
+            std::fprintf(stderr, "warning: %s\n", w.c_str());
     const std::vector<std::size_t> cameras = parseCameras(a.cameras, scene.cameras.size());
-    const std::vector<int> frames =
-        fm::parseFrameRange(a.frames.empty() ? "0:" + std::to_string(scene.frameCount - 1) : a.frames,
-                            scene.frameCount, a.reverse);
+    const std::vector<int> frames = fm::parseFrameRange(
+        a.frames.empty() ? "0:" + std::to_string(scene.frameCount - 1) : a.frames, scene.frameCount,
+        a.reverse);
+    std::map<int, int> position;  // frame -> its place in tracking order (CSV rows follow it)
+    for (std::size_t i = 0; i < frames.size(); ++i) position[frames[i]] = static_cast<int>(i);
     fm::TrackSettings settings;
     settings.init = fm::parseInitMode(a.init);
     settings.registration.seed = a.seed;
-    settings.registration.threads = a.threads;
+    settings.registration.threads = threads;
 
     std::optional<fm::TraFile> startTra;
     if (!a.start.empty()) startTra = fm::readTra(a.start);
     const bool several = a.bones.size() > 1;
-    const bool interactive = isatty(fileno(stderr)) != 0;
-    std::string csvText = csvHeader(scene.cameras.size());
 
+    // Every rank works out the same bones, segments and jobs.
+    std::vector<BoneRun> bones;
+    std::vector<TrackJob> jobs;
+    std::size_t longest = 0;
     for (std::size_t bi = 0; bi < a.bones.size(); ++bi) {
-        const std::string& bone = a.bones[bi];
-        const fs::path out = outFor(a.out, bone, several);
-        // Keyframes: the trial's own, then the --start file's poses (Autoscoper frame).
-        std::map<int, fm::RigidTransform> keyframes;
-        if (const auto k = scene.trial.keyframes.find(bone); k != scene.trial.keyframes.end())
-            for (const fm::TrialPose& p : k->second)
-                keyframes[p.frame] = p.volumeFrame == fm::VolumeFrame::Autoscoper
-                                         ? fm::objectPoseFromTra(scene, bone, p.worldFromVolume)
-                                         : p.worldFromVolume;
-        if (startTra) {
-            const int object = startTra->objects > 1 ? static_cast<int>(bi) : 0;
-            if (object >= startTra->objects)
-                throw fm::Error(a.start + ": holds " + std::to_string(startTra->objects) +
-                                " objects; bone " + bone + " would be object " + std::to_string(object + 1));
-            for (std::size_t f = 0; f < startTra->frames.size(); ++f)
-                if (const auto& p = startTra->frames[f][static_cast<std::size_t>(object)])
-                    keyframes[static_cast<int>(f)] = fm::objectPoseFromTra(scene, bone, *p);
+        BoneRun b;
+        b.name = a.bones[bi];
+        b.out = outFor(a.out, b.name, several);
+        b.tra.frames.assign(static_cast<std::size_t>(scene.frameCount), {std::nullopt});
+        if (a.resume && fs::exists(b.out)) b.done = resumedFrames(scene, b.name, b.out, b.tra);
+        b.segments =
+            fm::splitAtKeyframes(frames, keyframesOf(scene, b.name, bi, startTra, a.start));
+        for (std::size_t s = 0; s < b.segments.size(); ++s) {
+            jobs.push_back({bi, s});
+            longest = std::max(longest, b.segments[s].frames.size());
         }
-        // Everything found so far, one row per frame of the trial (NaN = not tracked).
-        fm::TraFile tra;
-        tra.frames.assign(static_cast<std::size_t>(scene.frameCount), {std::nullopt});
-        std::map<int, fm::RigidTransform> tracked;
-        std::vector<int> todo = frames;
-        if (a.resume && fs::exists(out)) {
-            const fm::TraFile done = fm::readTra(out);
-            if (static_cast<int>(done.frames.size()) != scene.frameCount || done.objects != 1)
-                throw fm::Error("--resume: " + fm::io::quoted(out) + " has " +
-                                std::to_string(done.frames.size()) + " frames of " +
-                                std::to_string(done.objects) + " objects, the trial " +
-                                std::to_string(scene.frameCount) + " frames of one bone");
-            tra = done;
-            for (std::size_t f = 0; f < done.frames.size(); ++f)
-                if (done.frames[f][0])
-                    tracked[static_cast<int>(f)] = fm::objectPoseFromTra(scene, bone, *done.frames[f][0]);
-            std::erase_if(todo, [&](int f) { return tracked.count(f) > 0; });
-            std::fprintf(stderr, "resume: %zu frames of %s already in %s, %zu to go\n", tracked.size(),
-                         bone.c_str(), out.string().c_str(), todo.size());
+        for (int f : frames) b.todo += b.done.count(f) == 0 ? 1 : 0;
+        if (a.resume && writer)
+            std::fprintf(stderr, "resume: %zu frames of %s already in %s, %zu to go\n",
+                         b.done.size(), b.name.c_str(), b.out.string().c_str(), b.todo);
+        bones.push_back(std::move(b));
+    }
+    std::vector<fm::Tracker> trackers;
+    for (const BoneRun& b : bones)
+        trackers.emplace_back(scene.scene, b.name,
+                              fm::trialFrameViews(scene, fm::defaultTrialPreparation(), cameras),
+                              settings);
+
+    const std::size_t frameBytes = fm::frameRecordBytes(scene.cameras.size());
+    const std::size_t recordBytes = sizeof(std::int32_t) + longest * frameBytes;
+    if (writer)
+        std::printf(
+            "jobs      %zu (bone x keyframe segment) on %d process%s (%s), %zu bytes each to rank "
+            "0\n",
+            jobs.size(), transport.size(), transport.size() == 1 ? "" : "es", transport.name(),
+            fm::distributed::bytesPerJob(recordBytes));
+    std::fflush(stdout);
+
+    // Rank 0: a frame's result into its bone's .tra row and CSV row, and both files rewritten.
+    auto apply = [&](BoneRun& b, const fm::FrameRecord& r) {
+        if (r.worldFromBone)
+            b.tra.frames[static_cast<std::size_t>(r.frame)][0] =
+                asWritten(fm::traPoseFromObject(scene, b.name, *r.worldFromBone));
+        b.rows[position.at(r.frame)] = r;
+    };
+    auto writeOutputs = [&](const BoneRun& b) {
+        if (!a.csv.empty()) {
+            std::string text = csvHeader(scene.cameras.size());
+            for (const BoneRun& each : bones)
+                for (const auto& [pos, r] : each.rows) text += csvRow(r, each.name);
+            fm::io::writeFileAtomically(a.csv, text);
         }
-        const fm::Tracker tracker(scene.scene, bone,
-                                  fm::trialFrameViews(scene, fm::defaultTrialPreparation(), cameras), settings);
-        int done = 0, newlyTracked = 0;
-        double seconds = 0.0;
-        std::string lastFailure;
-        tracker.run(todo, keyframes, tracked, [&](const fm::FrameRecord& r) {
-            ++done;
-            seconds += r.seconds;
-            if (r.status == fm::FrameRecord::Status::Tracked) ++newlyTracked;
-            else lastFailure = "frame " + std::to_string(r.frame) + ": " + r.note;
-            if (r.worldFromBone) {
-                const fm::RigidTransform written = asWritten(fm::traPoseFromObject(scene, bone, *r.worldFromBone));
-                tra.frames[static_cast<std::size_t>(r.frame)][0] = written;
-                tracked[r.frame] = fm::objectPoseFromTra(scene, bone, written);
+        fm::writeTra(b.out, b.tra);  // atomically
+    };
+
+    const bool interactive = isatty(fileno(stderr)) != 0;
+    const std::string who =
+        transport.size() > 1 ? "[rank " + std::to_string(transport.rank()) + "] " : "";
+    const auto failures = fm::distributed::runIndexedJobs(
+        transport, static_cast<int>(jobs.size()), recordBytes,
+        [&](int job, std::span<std::byte> record) {
+            BoneRun& b = bones[jobs[static_cast<std::size_t>(job)].bone];
+            const fm::TrackSegment& segment =
+                b.segments[jobs[static_cast<std::size_t>(job)].segment];
+            std::map<int, fm::RigidTransform> tracked;  // this segment's frames only
+            std::vector<int> todo;
+            for (int f : segment.frames) {
+                if (const auto d = b.done.find(f); d != b.done.end())
+                    tracked[f] = d->second;
+                else
+                    todo.push_back(f);
             }
-            fm::writeTra(out, tra);  // atomically, after every frame
-            csvText += csvRow(r, bone);
-            if (!a.csv.empty()) fm::io::writeFileAtomically(a.csv, csvText);
-            double cost = 0.0;
-            for (double c : r.viewCost)
-                if (!std::isnan(c)) cost += c;
-            std::fprintf(stderr, "%s%s frame %d  [%d/%zu]  %.2f s/frame  cost %.4f  %s%s", interactive ? "\r" : "",
-                         bone.c_str(), r.frame, done, todo.size(), seconds / done, cost,
-                         r.status == fm::FrameRecord::Status::Tracked ? r.note.c_str() : fm::toString(r.status),
-                         interactive ? "        " : "\n");
-            if (r.status == fm::FrameRecord::Status::BadFrame || r.status == fm::FrameRecord::Status::NoStart)
-                std::fprintf(stderr, "%sframe %d skipped: %s\n", interactive ? "\n" : "", r.frame, r.note.c_str());
+            std::int32_t count = 0;
+            double seconds = 0.0;
+            trackers[jobs[static_cast<std::size_t>(job)].bone].run(
+                todo, segment.keyframes, tracked, [&](const fm::FrameRecord& r) {
+                    if (r.worldFromBone)  // later frames start from the pose as the .tra holds it
+                        tracked[r.frame] = fm::objectPoseFromTra(
+                            scene, b.name,
+                            asWritten(fm::traPoseFromObject(scene, b.name, *r.worldFromBone)));
+                    fm::encodeFrameRecord(
+                        r,
+                        record.subspan(sizeof count + static_cast<std::size_t>(count) * frameBytes,
+                                       frameBytes));
+                    ++count;
+                    seconds += r.seconds;
+                    if (writer) {
+                        // Rank 0 saves its own frames at once; a write that fails here fails again,
+                        // and is reported, when the job's record reaches the sink.
+                        apply(b, r);
+                        try {
+                            writeOutputs(b);
+                        } catch (const fm::Error&) {
+                        }
+                    }
+                    double cost = 0.0;
+                    for (double c : r.viewCost)
+                        if (!std::isnan(c)) cost += c;
+                    std::fprintf(stderr, "%s%s%s frame %d  [%d/%zu]  %.2f s/frame  cost %.4f  %s%s",
+                                 interactive ? "\r" : "", who.c_str(), b.name.c_str(), r.frame,
+                                 count, todo.size(), seconds / count, cost,
+                                 r.status == fm::FrameRecord::Status::Tracked
+                                     ? r.note.c_str()
+                                     : fm::toString(r.status),
+                                 interactive ? "        " : "\n");
+                    if (r.status == fm::FrameRecord::Status::BadFrame ||
+                        r.status == fm::FrameRecord::Status::NoStart)
+                        std::fprintf(stderr, "%s%sframe %d skipped: %s\n", interactive ? "\n" : "",
+                                     who.c_str(), r.frame, r.note.c_str());
+                });
+            std::memcpy(record.data(), &count, sizeof count);
+        },
+        [&](int job, std::span<const std::byte> record) {
+            BoneRun& b = bones[jobs[static_cast<std::size_t>(job)].bone];
+            std::int32_t count = 0;
+            std::memcpy(&count, record.data(), sizeof count);
+            if (count < 0 || static_cast<std::size_t>(count) > longest)
+                throw fm::Error("a record of " + std::to_string(count) + " frames");
+            for (std::int32_t i = 0; i < count; ++i)
+                apply(b, fm::decodeFrameRecord(
+                             record.subspan(sizeof count + static_cast<std::size_t>(i) * frameBytes,
+                                            frameBytes),
+                             scene.cameras.size()));
+            writeOutputs(b);
+        },
+        {}, fm::distributed::bytesPerJob(recordBytes));  // rounds of one job a rank: see docs
+    if (interactive) std::fprintf(stderr, "\n");
+    if (!writer) return;
+
+    std::vector<std::string> problems;
+    if (!failures.empty())
+        problems.push_back(std::to_string(failures.size()) + " of " + std::to_string(jobs.size()) +
+                           " jobs failed (the others were written): " +
+                           fm::distributed::describeFailures(failures));
+    for (const BoneRun& b : bones) {
+        int tracked = 0, newlyTracked = 0;
+        std::string lastFailure;
+        for (const auto& row : b.tra.frames) tracked += row[0] ? 1 : 0;
+        for (const auto& [pos, r] : b.rows) {
+            if (r.status == fm::FrameRecord::Status::Tracked)
+                ++newlyTracked;
+            else
+                lastFailure = "frame " + std::to_string(r.frame) + ": " + r.note;
+        }
+        const bool failed = std::any_of(failures.begin(), failures.end(), [&](const auto& f) {
+            return &bones[jobs[static_cast<std::size_t>(f.job)].bone] == &b;
         });
-        if (interactive) std::fprintf(stderr, "\n");
-        if (!todo.empty() && newlyTracked == 0)
-            throw fm::Error("no frame of " + bone + " could be tracked (" + lastFailure + ")");
-        std::printf("%s: %zu of %d frames tracked, %s written\n", bone.c_str(), tracked.size(),
-                    scene.frameCount, out.string().c_str());
+        std::printf("%s: %d of %d frames tracked, %s %s\n", b.name.c_str(), tracked,
+                    scene.frameCount, b.out.string().c_str(),
+                    failed ? "NOT complete (failed jobs below)" : "written");
+        if (b.todo > 0 && newlyTracked == 0 && !b.rows.empty())
+            problems.push_back("no frame of " + b.name + " could be tracked (" + lastFailure + ")");
+    }
+    // Every rank has finished: end normally, non-zero (JobsFailed), rather than abort the others.
+    if (!problems.empty()) {
+        std::string text;
+        for (const std::string& p : problems) text += (text.empty() ? "" : "; ") + p;
+        throw fm::distributed::JobsFailed(text);
     }
 }
 
 FM_REGISTER_COMMAND("track", 45, [](CLI::App& app) {
-    auto* cmd = app.add_subcommand("track", "Track bones through a trial's frames (all cameras at once)");
+    auto* cmd =
+        app.add_subcommand("track", "Track bones through a trial's frames (all cameras at once)");
     auto a = std::make_shared<TrackArgs>();
     cmd->add_option("--trial", a->trial, "Trial: Autoscoper .cfg or fluoromatch .json")->required();
-    cmd->add_option("--bone", a->bones, "Bone to track (repeat for several: one after another)")->required();
+    cmd->add_option("--bone", a->bones, "Bone to track (repeat for several: one after another)")
+        ->required();
     cmd->add_option("--frames", a->frames, "Frames A:B[:STEP], 0-based, inclusive (default: all)");
     cmd->add_flag("--reverse", a->reverse, "Track from the last frame of the range to the first");
     cmd->add_option("--init", a->init, "Start of each frame: previous, extrapolate or keyframes")
         ->capture_default_str();
     cmd->add_option("--start", a->start,
                     "A .tra whose poses (Autoscoper's volume frame) are keyframes where not NaN");
-    cmd->add_option("--out", a->out, "Result .tra (rewritten after every frame; NaN = not tracked)")->required();
+    cmd->add_option("--out", a->out, "Result .tra (rewritten after every frame; NaN = not tracked)")
+        ->required();
     cmd->add_option("--csv", a->csv, "Per-frame rows: status, cost per camera, evaluations, time");
     cmd->add_flag("--resume", a->resume, "Continue a run: frames already in --out are kept");
     cmd->add_option("--seed", a->seed, "Random seed (frame k uses a seed made from it and k)")

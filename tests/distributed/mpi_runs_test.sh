@@ -8,7 +8,10 @@
 #  3. `fluoromatch drr --poses` writes byte-identical files (PNG and exact values per view)
 #     without mpirun and with 1, 2 and 3 ranks;
 #  4. a view that cannot be written fails alone: the others are written, the run exits
-#     non-zero and names the job.
+#     non-zero and names the job;
+#  5. `fluoromatch track` (the wrist trial at 110 pixels, 2 bones x 2 keyframe segments = 4
+#     jobs) writes byte-identical .tra files and CSVs (without the time column) without mpirun
+#     and on 1, 2 and 3 ranks; a bone whose .tra cannot be written fails its jobs alone.
 # Usage: mpi_runs_test.sh MPI_FOUND MPIEXEC TEST_BINARY FLUOROMATCH LSAN_SUPPRESSIONS
 # Skips (77) only when the build has no MPI, and never under CI=true (CI installs MPI).
 set -uo pipefail
@@ -96,4 +99,50 @@ cat "$OUT/drr-fail.txt"
 grep -q "1 of 5 views failed.*job 2 (rank 0)" "$OUT/drr-fail.txt" || fail "the failed job is not named"
 for v in 000 001 003 004; do [ -s "$OUT/drr-fail/v_$v.png" ] || fail "view $v was not written"; done
 echo "a failed view: the others written, exit $rc naming job 2"
+
+# 5. track: radius and ulna through the wrist trial's 3 frames, keyframes at frames 0 and 2
+#    (segments {0, 1} and {2}: 4 jobs), rendered at 110 pixels (RenderResolution) to stay short.
+SRC=$(cd "$(dirname "$0")/../.." && pwd)
+WRIST=${FM_DATA_DIR:-$SRC/../shared/data}/autoscoper-bvr
+if [ ! -d "$WRIST" ]; then
+    [ "${CI:-}" = "true" ] && fail "$WRIST missing under CI"
+    echo "track: skipped ($WRIST not found)"; echo "PASS"; exit 0
+fi
+sed -e "s#\.\./\.\./\.\./shared/data/autoscoper-bvr#$WRIST#g" \
+    -e 's#"render_resolution": \[512, 512\]#"render_resolution": [110, 110]#' \
+    "$SRC/data/trials/wrist.json" >"$OUT/wrist110.json"
+grep -q '"render_resolution": \[110, 110\]' "$OUT/wrist110.json" || fail "could not make the 110-pixel trial"
+{ echo "1,0,0,0,0,1,0,0,0,0,1,0,0,0,0,1"; echo "NaN,NaN,NaN,NaN,NaN,NaN,NaN,NaN,NaN,NaN,NaN,NaN,NaN,NaN,NaN,NaN"
+  echo "1,0,0,2,0,1,0,0,0,0,1,0,0,0,0,1"; } >"$OUT/keys.tra"
+TRACK=(track --trial "$OUT/wrist110.json" --bone radius --bone ulna --start "$OUT/keys.tra" --threads 1)
+mkdir -p "$OUT/track-plain"
+"$FM" "${TRACK[@]}" --out "$OUT/track-plain/t.tra" --csv "$OUT/track-plain/t.csv" >"$OUT/track-plain.txt" 2>&1 || {
+    cat "$OUT/track-plain.txt"; fail "track without mpirun exited $?"; }
+grep -q "jobs      4 (bone x keyframe segment) on 1 process" "$OUT/track-plain.txt" || {
+    cat "$OUT/track-plain.txt"; fail "track did not make 4 jobs"; }
+[ "$(wc -l <"$OUT/track-plain/t.csv")" -eq 7 ] || fail "expected 6 frame rows and a header in track's CSV"
+tkeep=$(head -1 "$OUT/track-plain/t.csv" | tr ',' '\n' | grep -n -v -E 'second|time|_ms$' | cut -d: -f1 | paste -sd,)
+head -1 "$OUT/track-plain/t.csv" | tr ',' '\n' | grep -q -x time_ms || fail "track's CSV has no time_ms column to drop"
+for n in 1 2 3; do
+    d=$OUT/track-np$n; mkdir -p "$d"
+    run "$n" "$FM" "${TRACK[@]}" --out "$d/t.tra" --csv "$d/t.csv" >"$d.txt" 2>&1 || {
+        cat "$d.txt"; fail "track on $n ranks exited $?"; }
+    grep -q "on $n process.* (MPI)" "$d.txt" || { cat "$d.txt"; fail "track did not run on $n MPI ranks"; }
+    for b in radius ulna; do
+        cmp "$OUT/track-plain/t_$b.tra" "$d/t_$b.tra" || fail "track's $b .tra on $n ranks differs from one process"
+    done
+    cmp <(cut -d, -f"$tkeep" "$OUT/track-plain/t.csv") <(cut -d, -f"$tkeep" "$d/t.csv") || {
+        diff "$OUT/track-plain/t.csv" "$d/t.csv"; fail "track's CSV on $n ranks differs (apart from time_ms)"; }
+    echo "track on $n ranks: 2 .tra files and the CSV (apart from time_ms) identical to one process"
+done
+# The ulna's .tra cannot be written (a folder has its name): its 2 jobs fail, the radius's
+# file is complete, the run exits non-zero naming jobs 2 and 3.
+mkdir -p "$OUT/track-fail/t_ulna.tra"
+run 3 "$FM" "${TRACK[@]}" --out "$OUT/track-fail/t.tra" >"$OUT/track-fail.txt" 2>&1
+rc=$?
+[ $rc -ne 0 ] || { cat "$OUT/track-fail.txt"; fail "a track run with failed jobs exited 0"; }
+grep -q "2 of 4 jobs failed.*job 2 (rank 0).*job 3 (rank 0)" "$OUT/track-fail.txt" || {
+    cat "$OUT/track-fail.txt"; fail "track's failed jobs are not named"; }
+cmp "$OUT/track-plain/t_radius.tra" "$OUT/track-fail/t_radius.tra" || fail "the radius was not written in full"
+echo "track with a failed bone: the other written, exit $rc naming jobs 2 and 3"
 echo "PASS"

@@ -1,0 +1,93 @@
+#include "track/FrameRecordBytes.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+#include <string>
+
+#include "core/Error.h"
+
+namespace fm {
+
+namespace {
+
+struct Fixed {  // the part every record has, whatever the camera count
+    std::int32_t frame = 0;
+    std::int32_t status = 0;
+    std::int32_t camerasUsed = 0;
+    std::int32_t evaluations = 0;
+    std::int32_t hasPose = 0;
+    std::int32_t noteLength = 0;
+    double seconds = 0.0;
+    double pose[12] = {};  // rotation column by column, then translation
+};
+
+constexpr int kLastStatus = static_cast<int>(FrameRecord::Status::Stopped);
+
+}  // namespace
+
+std::size_t frameRecordBytes(std::size_t cameras) {
+    return sizeof(Fixed) + cameras * sizeof(double) + kFrameNoteBytes;
+}
+
+void encodeFrameRecord(const FrameRecord& r, std::span<std::byte> out) {
+    if (out.size() != frameRecordBytes(r.viewCost.size()))
+        throw Error("frame record: " + std::to_string(out.size()) + " bytes for " +
+                    std::to_string(r.viewCost.size()) + " cameras");
+    Fixed f;
+    f.frame = r.frame;
+    f.status = static_cast<std::int32_t>(r.status);
+    f.camerasUsed = r.camerasUsed;
+    f.evaluations = r.evaluations;
+    f.hasPose = r.worldFromBone ? 1 : 0;
+    f.seconds = r.seconds;
+    if (r.worldFromBone) {
+        for (int c = 0; c < 3; ++c)
+            for (int row = 0; row < 3; ++row)
+                f.pose[3 * c + row] = r.worldFromBone->rotation[c][row];
+        for (int i = 0; i < 3; ++i) f.pose[9 + i] = r.worldFromBone->translation[i];
+    }
+    f.noteLength = static_cast<std::int32_t>(std::min(r.note.size(), kFrameNoteBytes - 1));
+    std::fill(out.begin(), out.end(), std::byte{0});
+    std::memcpy(out.data(), &f, sizeof f);
+    std::memcpy(out.data() + sizeof f, r.viewCost.data(), r.viewCost.size() * sizeof(double));
+    std::memcpy(out.data() + sizeof f + r.viewCost.size() * sizeof(double), r.note.data(),
+                static_cast<std::size_t>(f.noteLength));
+}
+
+FrameRecord decodeFrameRecord(std::span<const std::byte> in, std::size_t cameras) {
+    if (in.size() != frameRecordBytes(cameras))
+        throw Error("frame record: " + std::to_string(in.size()) + " bytes, expected " +
+                    std::to_string(frameRecordBytes(cameras)) + " for " + std::to_string(cameras) +
+                    " cameras");
+    Fixed f;
+    std::memcpy(&f, in.data(), sizeof f);
+    if (f.status < 0 || f.status > kLastStatus)
+        throw Error("frame record: status " + std::to_string(f.status) + " is not a status");
+    if (f.noteLength < 0 || static_cast<std::size_t>(f.noteLength) >= kFrameNoteBytes)
+        throw Error("frame record: note length " + std::to_string(f.noteLength) + " out of range");
+    if (f.camerasUsed < 0 || static_cast<std::size_t>(f.camerasUsed) > cameras)
+        throw Error("frame record: " + std::to_string(f.camerasUsed) + " cameras used of " +
+                    std::to_string(cameras));
+    FrameRecord r;
+    r.frame = f.frame;
+    r.status = static_cast<FrameRecord::Status>(f.status);
+    r.camerasUsed = f.camerasUsed;
+    r.evaluations = f.evaluations;
+    r.seconds = f.seconds;
+    if (f.hasPose) {
+        RigidTransform p;
+        for (int c = 0; c < 3; ++c)
+            for (int row = 0; row < 3; ++row) p.rotation[c][row] = f.pose[3 * c + row];
+        for (int i = 0; i < 3; ++i) p.translation[i] = f.pose[9 + i];
+        r.worldFromBone = p;
+    }
+    r.viewCost.resize(cameras);
+    std::memcpy(r.viewCost.data(), in.data() + sizeof f, cameras * sizeof(double));
+    const char* note =
+        reinterpret_cast<const char*>(in.data() + sizeof f + cameras * sizeof(double));
+    r.note.assign(note, static_cast<std::size_t>(f.noteLength));
+    return r;
+}
+
+}  // namespace fm

@@ -1,0 +1,80 @@
+// A frame record survives its fixed-size bytes bit for bit (what rank 0 receives is what the
+// tracking rank found), and bytes no encoder wrote are refused.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <vector>
+
+#include "core/Error.h"
+#include "track/FrameRecordBytes.h"
+
+namespace fm {
+namespace {
+
+FrameRecord sample() {
+    FrameRecord r;
+    r.frame = 17;
+    r.status = FrameRecord::Status::Tracked;
+    r.note = "single view: camera 2";
+    RigidTransform p;
+    p.rotation = glm::dmat3(0.36, 0.48, -0.8, -0.8, 0.6, 0.0, 0.48, 0.64, 0.6);
+    p.translation = {1.0 / 3.0, -2.5e-7, 123.456789};
+    r.worldFromBone = p;
+    r.viewCost = {std::numeric_limits<double>::quiet_NaN(), -0.123456789012345};
+    r.camerasUsed = 1;
+    r.evaluations = 990;
+    r.seconds = 0.731;
+    return r;
+}
+
+TEST(FrameRecordBytes, RoundTripIsExact) {
+    const FrameRecord r = sample();
+    std::vector<std::byte> bytes(frameRecordBytes(2));
+    encodeFrameRecord(r, bytes);
+    const FrameRecord d = decodeFrameRecord(bytes, 2);
+    EXPECT_EQ(d.frame, 17);
+    EXPECT_EQ(d.status, FrameRecord::Status::Tracked);
+    EXPECT_EQ(d.note, r.note);
+    EXPECT_EQ(d.camerasUsed, 1);
+    EXPECT_EQ(d.evaluations, 990);
+    EXPECT_EQ(d.seconds, r.seconds);
+    ASSERT_TRUE(d.worldFromBone);
+    EXPECT_EQ(
+        std::memcmp(&d.worldFromBone->rotation, &r.worldFromBone->rotation, sizeof(glm::dmat3)), 0);
+    EXPECT_EQ(std::memcmp(&d.worldFromBone->translation, &r.worldFromBone->translation,
+                          sizeof(glm::dvec3)),
+              0);
+    ASSERT_EQ(d.viewCost.size(), 2u);
+    EXPECT_TRUE(std::isnan(d.viewCost[0]));
+    EXPECT_EQ(d.viewCost[1], r.viewCost[1]);
+}
+
+TEST(FrameRecordBytes, NoPoseStaysNoPoseAndLongNotesAreCut) {
+    FrameRecord r;
+    r.frame = 3;
+    r.status = FrameRecord::Status::BadFrame;
+    r.note = std::string(500, 'x');
+    r.viewCost.assign(3, 0.5);
+    std::vector<std::byte> bytes(frameRecordBytes(3));
+    encodeFrameRecord(r, bytes);
+    const FrameRecord d = decodeFrameRecord(bytes, 3);
+    EXPECT_FALSE(d.worldFromBone);
+    EXPECT_EQ(d.status, FrameRecord::Status::BadFrame);
+    EXPECT_EQ(d.note, std::string(kFrameNoteBytes - 1, 'x'));
+}
+
+TEST(FrameRecordBytes, RefusesWrongSizesAndBytesNoEncoderWrote) {
+    const FrameRecord r = sample();
+    std::vector<std::byte> small(frameRecordBytes(2) - 1);
+    EXPECT_THROW(encodeFrameRecord(r, small), Error);
+    std::vector<std::byte> bytes(frameRecordBytes(2));
+    encodeFrameRecord(r, bytes);
+    EXPECT_THROW(decodeFrameRecord(bytes, 3), Error);  // another camera count
+    std::vector<std::byte> junk(frameRecordBytes(2), std::byte{0xff});
+    EXPECT_THROW(decodeFrameRecord(junk, 2), Error);
+}
+
+}  // namespace
+}  // namespace fm
