@@ -33,7 +33,8 @@ std::string mutate(const std::string& original, std::mt19937& rng) {
 }
 
 void fuzz(const std::string& good, const std::string& name) {
-    const fs::path dir = fm::test::scratchDir("trial_fuzz");
+    // One folder per file kind: ctest -j runs the two tests at once, and scratchDir empties it.
+    const fs::path dir = fm::test::scratchDir("trial_fuzz_" + fs::path(name).extension().string().substr(1));
     std::mt19937 rng(kSeed);
     int loaded = 0, refused = 0;
     for (int i = 0; i < kCasesPerFile; ++i) {
