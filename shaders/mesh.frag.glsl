@@ -5,6 +5,7 @@ in vec3 vWorldNormal;
 uniform vec3 uColor;
 uniform vec3 uCameraPosition;
 uniform float uAmbient;
+uniform float uAlpha;  // 1 opaque; below 1 translucent (the MRI slice mode's surface)
 out vec4 fragColor;
 void main() {
     vec3 n = normalize(vWorldNormal);
@@ -15,5 +16,5 @@ void main() {
     // Headlight: the half vector between light and eye is the eye direction itself.
     float specular = pow(max(dot(n, toEye), 0.0), 48.0) * 0.25;
     vec3 color = uColor * (uAmbient + (1.0 - uAmbient) * diffuse) + vec3(specular);
-    fragColor = vec4(color, 1.0);
+    fragColor = vec4(color, uAlpha);
 }

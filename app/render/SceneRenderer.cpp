@@ -1,12 +1,14 @@
 #include "render/SceneRenderer.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "scene/DrrCache.h"
 #include "scene/LoadedScene.h"
+#include "scene/SliceImages.h"
 
 namespace fm::render {
 namespace {
@@ -48,6 +50,34 @@ void makeSphere(std::vector<glm::vec3>& vertices, std::vector<glm::uvec3>& trian
             triangles.emplace_back(a + 1, b, b + 1);
         }
 }
+
+// Where a plane cuts the box (corner bit i: +i axis): the points on the 12 edges, in order
+// around the plane (by angle in its (u, v) axes). Fewer than 3 points: no cut.
+std::vector<glm::dvec3> planeCutOfBox(const SliceGeometry& slice,
+                                      const std::array<glm::dvec3, 8>& box) {
+    const glm::dvec3 c = slice.center(), n = slice.normal();
+    std::vector<glm::dvec3> points;
+    for (int a = 0; a < 8; ++a)
+        for (int bit = 1; bit < 8; bit <<= 1) {
+            if (a & bit) continue;
+            const double da = glm::dot(box[a] - c, n), db = glm::dot(box[a | bit] - c, n);
+            if ((da > 0) == (db > 0) && da != 0.0) continue;
+            const double t = da == db ? 0.0 : da / (da - db);
+            points.push_back(box[a] + t * (box[a | bit] - box[a]));
+        }
+    if (points.size() < 3) return {};
+    glm::dvec3 mid(0.0);
+    for (const auto& p : points) mid += p;
+    mid /= double(points.size());
+    auto angle = [&](const glm::dvec3& p) {
+        return std::atan2(glm::dot(p - mid, slice.v), glm::dot(p - mid, slice.u));
+    };
+    std::sort(points.begin(), points.end(),
+              [&](const glm::dvec3& p, const glm::dvec3& q) { return angle(p) < angle(q); });
+    return points;
+}
+
+const glm::vec4 kSliceFrameColor{0.45f, 0.95f, 0.65f, 1.0f};
 
 }  // namespace
 
@@ -194,7 +224,7 @@ void SceneRenderer::uploadMesh(const Mesh& mesh, std::uint64_t generation) {
 
 void SceneRenderer::draw(const app::LoadedScene* scene, const Mesh* bone,
                          std::uint64_t boneGeneration, const Pose& pose, const app::View3d& view,
-                         GLuint filmTexture, glm::ivec2 size, bool multisample) {
+                         GLuint filmTexture, glm::ivec2 size, bool multisample, bool slicePlane) {
     size = glm::max(size, glm::ivec2(16));
     resize(size);
     labels_.clear();
@@ -214,8 +244,10 @@ void SceneRenderer::draw(const app::LoadedScene* scene, const Mesh* bone,
             d.pixelCenter(-0.5, -0.5), d.pixelCenter(d.size.x - 0.5, -0.5),
             d.pixelCenter(d.size.x - 0.5, d.size.y - 0.5), d.pixelCenter(-0.5, d.size.y - 0.5)};
         const glm::vec3 source = toScene(g.source);
-        double radius = glm::length(source);
-        for (const auto& c : corners) radius = std::max(radius, double(glm::length(toScene(c))));
+        // The slice mode shows the volume alone: frame its box, not the X-ray apparatus.
+        double radius = slicePlane ? 0.0 : glm::length(source);
+        if (!slicePlane)
+            for (const auto& c : corners) radius = std::max(radius, double(glm::length(toScene(c))));
         for (const auto& c : scene->boxCorners)
             radius = std::max(radius, double(glm::length(toScene(c))));
 
@@ -236,15 +268,62 @@ void SceneRenderer::draw(const app::LoadedScene* scene, const Mesh* bone,
         meshShader_.use();
         meshShader_.set("uViewProjection", viewProjection);
         meshShader_.set("uCameraPosition", camera.position);
+        meshShader_.set("uAlpha", 1.0f);
+        std::vector<glm::dvec3> cut;
+        if (slicePlane) {
+            // The slice's cut through the box, textured with the user's slice: a texture
+            // coordinate is the point's continuous pixel position (t = 0: image row 0).
+            const SliceGeometry sl = app::appSlice(*scene, pose);
+            cut = planeCutOfBox(sl, scene->boxCorners);
+            std::vector<float> fan;
+            auto vertex = [&](const glm::dvec3& p) {
+                const glm::dvec3 rel = p - sl.origin;
+                const glm::vec3 q = toScene(p);
+                fan.insert(fan.end(),
+                           {q.x, q.y, q.z,
+                            float((glm::dot(rel, sl.u) / sl.spacing.x + 0.5) / sl.size.x),
+                            float((glm::dot(rel, sl.v) / sl.spacing.y + 0.5) / sl.size.y)});
+            };
+            for (std::size_t i = 1; i + 1 < cut.size(); ++i) {
+                vertex(cut[0]);
+                vertex(cut[i]);
+                vertex(cut[i + 1]);
+            }
+            if (!fan.empty()) {
+                filmShader_.use();
+                filmShader_.set("uViewProjection", viewProjection);
+                filmShader_.set("uImage", 0);
+                glActiveTexture(GL_TEXTURE0);
+                glBindTexture(GL_TEXTURE_2D, filmTexture);
+                glBindVertexArray(filmVao_);
+                glBindBuffer(GL_ARRAY_BUFFER, filmVbo_);
+                glBufferData(GL_ARRAY_BUFFER, fan.size() * sizeof(float), fan.data(),
+                             GL_STREAM_DRAW);
+                glDrawArrays(GL_TRIANGLES, 0, GLsizei(fan.size() / 5));
+            }
+            meshShader_.use();
+        }
         if (view.showBone && bone) {
             uploadMesh(*bone, boneGeneration);
+            if (slicePlane) {  // translucent, so the plane inside shows through it
+                meshShader_.set("uAlpha", 0.3f);
+                glEnable(GL_BLEND);
+                glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+                glDepthMask(GL_FALSE);
+            }
             meshShader_.set("uModel", glm::translate(glm::mat4(1.0f), glm::vec3(shift)));
             meshShader_.set("uColor", kBoneColor);
             meshShader_.set("uAmbient", 0.25f);
             glBindVertexArray(meshVao_);
             glDrawElements(GL_TRIANGLES, meshIndexCount_, GL_UNSIGNED_INT, nullptr);
+            if (slicePlane) {
+                meshShader_.set("uAlpha", 1.0f);
+                glDepthMask(GL_TRUE);
+                glDisable(GL_BLEND);
+            }
         }
-        if (view.showApparatus) {
+        const bool apparatus = view.showApparatus && !slicePlane;
+        if (apparatus) {
             const float markerRadius = float(radius) * 0.02f;
             meshShader_.set("uModel", glm::scale(glm::translate(glm::mat4(1.0f), source),
                                                  glm::vec3(markerRadius)));
@@ -286,7 +365,12 @@ void SceneRenderer::draw(const app::LoadedScene* scene, const Mesh* bone,
                 label(tip, std::string(1, "xyz"[axis]), kAxisColors[axis]);
             }
         }
-        if (view.showApparatus) {
+        if (slicePlane && view.showApparatus && !cut.empty()) {
+            for (std::size_t i = 0; i < cut.size(); ++i)
+                line(lines, toScene(cut[i]), toScene(cut[(i + 1) % cut.size()]), kSliceFrameColor);
+            label(toScene(cut[0]), "slice", kSliceFrameColor);
+        }
+        if (apparatus) {
             for (int i = 0; i < 4; ++i) {
                 line(lines, source, toScene(corners[i]), kConeColor);
                 line(lines, toScene(corners[i]), toScene(corners[(i + 1) % 4]), kFilmFrameColor);
@@ -296,7 +380,7 @@ void SceneRenderer::draw(const app::LoadedScene* scene, const Mesh* bone,
             label(toScene(corners[2]), "film", kFilmFrameColor);
         }
         const std::size_t lineVertexCount = lines.size();
-        if (view.showApparatus)  // translucent cone faces, drawn last without depth writes
+        if (apparatus)  // translucent cone faces, drawn last without depth writes
             for (int i = 0; i < 4; ++i) {
                 lines.push_back({source, kConeFaceColor});
                 lines.push_back({toScene(corners[i]), kConeFaceColor});

@@ -41,9 +41,12 @@ class SceneRenderer {
     // `multisample` false draws straight into the shown texture (fast while interacting).
     // `bone` (may be null) is the surface to show; it is uploaded again only when
     // `boneGeneration` changes.
+    // `slicePlane` (the MRI slice mode): instead of source, film and rays, the slice plane of
+    // `pose` where it cuts the volume's box, textured with the user's slice, and the surface
+    // translucent so the plane shows through it.
     void draw(const app::LoadedScene* scene, const Mesh* bone, std::uint64_t boneGeneration,
               const Pose& pose, const app::View3d& view, GLuint filmTexture, glm::ivec2 size,
-              bool multisample = true);
+              bool multisample = true, bool slicePlane = false);
 
     GLuint texture() const { return resolveTexture_; }
     // The last drawn view as RGBA, row 0 = top (golden tests of the 3D view alone).
@@ -54,6 +57,7 @@ class SceneRenderer {
 
   private:
     void resize(glm::ivec2 size);
+
     void uploadMesh(const Mesh& mesh, std::uint64_t generation);
 
     ShaderProgram meshShader_, lineShader_, filmShader_;

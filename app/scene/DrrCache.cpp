@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <chrono>
 
+#include "scene/SliceImages.h"
+
 namespace fm::app {
 
 ProjectionGeometry appGeometry(const LoadedScene& scene, const Pose& pose, int downsample) {
@@ -11,8 +13,8 @@ ProjectionGeometry appGeometry(const LoadedScene& scene, const Pose& pose, int d
 }
 
 DrrRender DrrCache::get(const LoadedScene& scene, const Pose& pose, int downsample, DrrTrace trace,
-                        int threads) {
-    const DrrKey key{scene.generation, pose.toArray(), downsample, trace};
+                        int threads, ImagingMode mode) {
+    const DrrKey key{scene.generation, pose.toArray(), downsample, trace, mode};
     auto hit =
         std::find_if(entries_.begin(), entries_.end(), [&](const auto& e) { return e.key == key; });
     if (hit != entries_.end()) {
@@ -27,7 +29,9 @@ DrrRender DrrCache::get(const LoadedScene& scene, const Pose& pose, int downsamp
     const Volume& v = *scene.volume;
     options.approxStepMm = std::min({v.spacing.x, v.spacing.y, v.spacing.z}) * double(downsample);
     const auto start = std::chrono::steady_clock::now();
-    Image image = renderDrr(*scene.drrVolume, appGeometry(scene, pose, downsample), options);
+    Image image = mode == ImagingMode::Slice
+                      ? renderAppSlice(scene, pose, downsample, threads).image
+                      : renderDrr(*scene.drrVolume, appGeometry(scene, pose, downsample), options);
     const double ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     ++renders_;

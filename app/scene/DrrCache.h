@@ -1,5 +1,5 @@
 #pragma once
-// DRRs keyed by everything they depend on (scene, pose, detector resampling, trace mode), so a
+// DRRs (or slices) keyed by everything they depend on (scene, pose, detector resampling, trace mode), so a
 // DRR is rendered only when one of those changes. Holds the few most recent images.
 #include <array>
 #include <cstdint>
@@ -9,6 +9,7 @@
 #include "drr/Drr.h"
 #include "geometry/Pose.h"
 #include "scene/LoadedScene.h"
+#include "state/AppState.h"
 
 namespace fm::app {
 
@@ -17,6 +18,7 @@ struct DrrKey {
     std::array<double, 6> pose{};
     int downsample = 1;  // detector factor (coarse preview > 1)
     DrrTrace trace = DrrTrace::Exact;
+    ImagingMode mode = ImagingMode::Xray;  // a DRR, or a slice (scene/SliceImages.h)
     bool operator==(const DrrKey&) const = default;
 };
 
@@ -30,8 +32,9 @@ class DrrCache {
   public:
     explicit DrrCache(std::size_t capacity = 4) : capacity_(capacity) {}
     // The DRR of `pose` in `scene`, rendered now unless cached. `threads` as DrrRenderOptions.
+    // In the slice mode the image is the trilinear slice at `pose` (no-data pixels 0).
     DrrRender get(const LoadedScene& scene, const Pose& pose, int downsample, DrrTrace trace,
-                  int threads = 0);
+                  int threads = 0, ImagingMode mode = ImagingMode::Xray);
     std::size_t renders() const { return renders_; }  // how many were actually rendered
     void clear() { entries_.clear(); }
 

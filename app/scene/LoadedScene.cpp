@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "core/Error.h"
+#include "slice/SlicePoseError.h"
 #include "match/PoseError.h"
 #include "mesh/MarchingCubes.h"
 #include "volume/ValueUnitGuess.h"
@@ -30,10 +31,24 @@ double boneIsoValue(const Volume& volume) {
     return s.percentiles[0] + 0.6 * (s.percentiles[1] - s.percentiles[0]);
 }
 
+// The level of the foreground surface of an MRI: the mean value (above it: head, not air).
+double foregroundLevel(const Volume& volume) {
+    double sum = 0.0;
+    for (float v : volume.values) sum += v;
+    return volume.values.empty() ? 0.0 : sum / double(volume.values.size());
+}
+
 }  // namespace
 
 bool looksLikeHounsfield(const Volume& volume) {
     return guessHounsfield(volume).hounsfield;  // the CLI's rule too (engine/volume)
+}
+
+bool looksLikeMri(const Volume& volume) {
+    if (volume.meta.modality == "MR") return true;
+    if (!volume.meta.modality.empty() || looksLikeHounsfield(volume)) return false;
+    const std::string& d = volume.meta.description;
+    return d.rfind("NIfTI", 0) == 0;
 }
 
 DrrValueOptions appDrrValueOptions(const Volume& volume) {
@@ -60,7 +75,10 @@ std::shared_ptr<LoadedScene> buildScene(const std::string& spec, const SceneProg
     start = std::chrono::steady_clock::now();
     progress("meshing the bone (marching cubes)", 0.55f);
     MarchingCubesOptions mc;
-    scene->isoValue = mc.isoValue = boneIsoValue(*volume);
+    scene->looksLikeMri = looksLikeMri(*volume);
+    // An MRI has no bone level: its surface is the head's (or body's), voxels above the mean.
+    scene->isoValue = mc.isoValue =
+        scene->looksLikeMri ? foregroundLevel(*volume) : boneIsoValue(*volume);
     scene->mesh = std::make_shared<Mesh>(marchingCubes(*volume, mc));
     scene->meshSeconds = secondsSince(start);
     progress("picking bone target points", 0.95f);
@@ -68,6 +86,13 @@ std::shared_ptr<LoadedScene> buildScene(const std::string& spec, const SceneProg
         scene->bonePoints = boneTargetPoints(*volume, scene->isoValue);
     } catch (const Error&) {
         scene->bonePoints.clear();  // no voxel reaches the bone level: no mTRE, no random pose
+    }
+    progress("preparing slices", 0.97f);
+    scene->sliceSetup = defaultSliceSetup(*volume);
+    try {
+        scene->foregroundPoints = foregroundTargetPoints(*volume);
+    } catch (const Error&) {
+        scene->foregroundPoints.clear();  // a constant volume: no slice mTRE
     }
     progress("done", 1.0f);
 
@@ -102,6 +127,7 @@ std::shared_ptr<LoadedScene> buildScene(const std::string& spec, const SceneProg
                   volume->spacing.y, volume->spacing.z);
     scene->summary = text;
     scene->volume = std::move(volume);
+    scene->sliceVolume = prepareSliceVolume(scene->volume, false);  // trilinear: no copy
     scene->generation = nextGeneration++;
     return scene;
 }

@@ -11,6 +11,8 @@
 #include "drr/Drr.h"
 #include "geometry/Pose.h"
 #include "mesh/Mesh.h"
+#include "slice/SliceGeometry.h"
+#include "slice/SliceSampler.h"
 #include "volume/Volume.h"
 
 namespace fm::app {
@@ -30,6 +32,13 @@ struct LoadedScene {
     std::vector<glm::dvec3> bonePoints;      // mTRE targets (engine/match); empty if no bone
     double loadSeconds = 0.0, prepareSeconds = 0.0, meshSeconds = 0.0;
     std::string summary;  // one line for the UI: size and spacing
+    // The MRI slice mode (scene/SliceImages.h): the volume for trilinear slicing, the slice
+    // grid, the mTRE targets for slices (voxels above the mean) and whether the file looks
+    // like an MRI (then the app starts in the slice mode).
+    SliceVolumePtr sliceVolume;
+    SliceSetup sliceSetup;
+    std::vector<glm::dvec3> foregroundPoints;
+    bool looksLikeMri = false;
 };
 
 // Progress of buildScene: stage name and fraction 0..1 over the stages.
@@ -41,6 +50,10 @@ std::shared_ptr<LoadedScene> buildScene(const std::string& spec, const SceneProg
 
 // True for HU volumes, and for volumes without units whose 1st percentile is air (<= -900).
 bool looksLikeHounsfield(const Volume& volume);
+
+// An MRI file: modality MR; or, without a modality, a NIfTI file whose values are not HU
+// (research MRIs come as NIfTI; CTs in NIfTI hold HU, caught first). Phantoms are CTs.
+bool looksLikeMri(const Volume& volume);
 
 // The DRR options the app uses for every image (both reference and user).
 DrrValueOptions appDrrValueOptions(const Volume& volume);

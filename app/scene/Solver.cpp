@@ -48,6 +48,35 @@ SolveSnapshot Solver::snapshot() const {
 
 void Solver::start(std::shared_ptr<const LoadedScene> scene, Image reference, const Pose& start,
                    RegistrationSettings settings) {
+    launch(settings.method, start,
+           [scene = std::move(scene), reference = std::move(reference), start, settings](
+               const auto& prepared, const RegistrationCallback& progress,
+               const std::atomic<bool>* stop) {
+               const Registration registration(
+                   volumeScene(scene->drrVolume),
+                   std::make_shared<Pose2011Parameterization>(scene->setup, scene->center),
+                   {{0, reference, {}}}, settings);
+               prepared(registration.totalBudget(), registration.levelCount());
+               return registration.run(start.toArray(), progress, stop);
+           });
+}
+
+void Solver::startSlice(std::shared_ptr<const LoadedScene> scene, Image reference, Mask mask,
+                        const Pose& start, SliceRegistrationSettings settings) {
+    launch(settings.method, start,
+           [scene = std::move(scene), reference = std::move(reference), mask = std::move(mask),
+            start, settings](const auto& prepared, const RegistrationCallback& progress,
+                             const std::atomic<bool>* stop) {
+               const bool cubic = settings.interpolation == SliceInterpolation::CubicBSpline;
+               const SliceRegistration registration(
+                   prepareSliceVolume(scene->volume, cubic, settings.threads), reference, &mask,
+                   scene->sliceSetup, scene->center, settings);
+               prepared(registration.totalBudget(), registration.levelCount());
+               return registration.run(start, progress, stop);
+           });
+}
+
+void Solver::launch(SearchMethod method, const Pose& start, Search search) {
     stop();
     stopFlag_ = false;
     {
@@ -55,27 +84,21 @@ void Solver::start(std::shared_ptr<const LoadedScene> scene, Image reference, co
         const std::uint64_t version = snapshot_.version + 1;
         snapshot_ = {};
         snapshot_.running = true;
-        snapshot_.method = settings.method;
+        snapshot_.method = method;
         snapshot_.stage = "preparing";
         snapshot_.start = snapshot_.bestPose = snapshot_.candidate = start;
         snapshot_.version = version;
     }
-    worker_ = std::thread([this, scene = std::move(scene), reference = std::move(reference), start,
-                           settings]() {
+    worker_ = std::thread([this, search = std::move(search)]() {
         const auto began = std::chrono::steady_clock::now();
         try {
-            const Registration registration(
-                volumeScene(scene->drrVolume),
-                std::make_shared<Pose2011Parameterization>(scene->setup, scene->center),
-                {{0, reference, {}}}, settings);
-            {
-                std::lock_guard lock(mutex_);
-                snapshot_.budget = registration.totalBudget();
-                snapshot_.levelCount = registration.levelCount();
-                ++snapshot_.version;
-            }
-            const RegistrationResult result = registration.run(
-                start.toArray(),
+            const RegistrationResult result = search(
+                [&](int budget, int levels) {
+                    std::lock_guard lock(mutex_);
+                    snapshot_.budget = budget;
+                    snapshot_.levelCount = levels;
+                    ++snapshot_.version;
+                },
                 [&](const RegistrationProgress& p) {
                     std::lock_guard lock(mutex_);
                     if (p.level != snapshot_.level) snapshot_.costHistory.clear();

@@ -6,6 +6,7 @@
 #include <atomic>
 #include <chrono>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -17,6 +18,7 @@
 #include "geometry/Pose.h"
 #include "scene/LoadedScene.h"
 #include "search/Registration.h"
+#include "slice/SliceRegistration.h"
 
 namespace fm::app {
 
@@ -51,6 +53,11 @@ class Solver {
     // settings' seed and thread count.
     void start(std::shared_ptr<const LoadedScene> scene, Image reference, const Pose& start,
                RegistrationSettings settings);
+    // The same in the MRI slice mode: slice-to-volume registration (SliceRegistration) of
+    // `reference` (a slice of the scene, with its data mask). The volume's B-spline
+    // coefficients are computed on the worker ("preparing").
+    void startSlice(std::shared_ptr<const LoadedScene> scene, Image reference, Mask mask,
+                    const Pose& start, SliceRegistrationSettings settings);
     // Asks the search to end after its current batch and waits for it (the best pose so far is
     // kept in the snapshot). Does nothing when idle.
     void stop();
@@ -59,6 +66,12 @@ class Solver {
 
   private:
     void join();
+    // What a worker runs: registers from `start`, reporting through the callback; `budget`
+    // is called once the search knows its total budget and level count.
+    using Search = std::function<RegistrationResult(
+        const std::function<void(int budget, int levels)>& prepared,
+        const RegistrationCallback& progress, const std::atomic<bool>* stop)>;
+    void launch(SearchMethod method, const Pose& start, Search search);
 
     mutable std::mutex mutex_;
     std::thread worker_;

@@ -147,6 +147,10 @@ inline constexpr const char* kSolveMethodLabels[] = {"Monte Carlo", "Particle sw
                                                      "CMA-ES"};
 inline constexpr int kSolveMethodCount = 4;
 
+// What the panes show: X-ray images (DRRs) or planar slices of the volume (the MRI slice mode,
+// docs/mri.md). The same six parameters, game and search either way.
+enum class ImagingMode { Xray, Slice };
+
 // Things the UI asks for; the App consumes them after the UI pass.
 struct Requests {
     bool newReference = false;
@@ -158,6 +162,7 @@ struct Requests {
     bool resetView = false;
     bool remesh = false;  // rebuild the bone surface at BoneSurface::level
     std::optional<std::string> loadVolume;
+    std::optional<ImagingMode> mode;  // switch X-ray / MRI slice (a new reference in that mode)
 };
 
 // The bone surface of the 3D view: the level the user asks for, and what is shown.
@@ -169,6 +174,9 @@ struct BoneSurface {
 };
 
 struct AppState {
+    // Chosen on load (slices for an MRI file, X-rays otherwise) and by the user.
+    ImagingMode mode = ImagingMode::Xray;
+    bool userSliceEmpty = false;  // slice mode: the user's plane misses the volume (no data)
     Pose userPose;
     Pose referencePose;
     bool referenceRevealed = false;

@@ -15,6 +15,7 @@
 #include "render/SceneRenderer.h"
 #include "render/Texture.h"
 #include "scene/Matching.h"
+#include "scene/SliceImages.h"
 
 namespace fm::app {
 namespace {
@@ -101,6 +102,9 @@ void App::installLoadResult(SceneLoader::Result result) {
     userCache_.clear();
     referenceKey_.reset();
     userKey_.reset();
+    // An MRI file opens in the slice mode, anything else as X-rays; the user may switch.
+    state_.mode = scene_->looksLikeMri ? ImagingMode::Slice : ImagingMode::Xray;
+    if (firstScene_ && options_.mode) state_.mode = *options_.mode;
     if (firstScene_ && options_.referencePose) {
         state_.referencePose = *options_.referencePose;
         state_.referenceSource = "given on the command line";
@@ -145,9 +149,11 @@ void App::remesh() {
 void App::newReference() {
     if (!scene_) return;
     const bool haveReference = referenceKey_.has_value();
+    const Pose* avoid = haveReference ? &state_.referencePose : nullptr;
     const ReferenceChoice choice =
-        chooseReference(*scene_, nextSeed_++, state_.userPose, state_.difficulty,
-                        haveReference ? &state_.referencePose : nullptr);
+        state_.mode == ImagingMode::Slice
+            ? chooseSliceReference(*scene_, nextSeed_++, state_.userPose, state_.difficulty, avoid)
+            : chooseReference(*scene_, nextSeed_++, state_.userPose, state_.difficulty, avoid);
     state_.referencePose = choice.pose;
     state_.referenceSource = choice.source;
     state_.referenceRevealed = false;
@@ -164,18 +170,31 @@ void App::newReference() {
 
 void App::startSolve() {
     if (!scene_) return;
-    const Image reference =
-        referenceCache_.get(*scene_, state_.referencePose, 1, DrrTrace::Exact, options_.drrThreads)
-            .image;
     const int method = std::clamp(state_.solve.method, 0, kSolveMethodCount - 1);
-    solver_.start(scene_, reference, state_.userPose,
-                  appSolveSettings(parseSearchMethod(kSolveMethods[method]), options_.drrThreads));
+    if (state_.mode == ImagingMode::Slice) {
+        SampledSlice reference =
+            renderAppSlice(*scene_, state_.referencePose, 1, options_.drrThreads);
+        solver_.startSlice(scene_, std::move(reference.image), std::move(reference.mask),
+                           state_.userPose,
+                           appSliceSolveSettings(parseSearchMethod(kSolveMethods[method]),
+                                                 options_.drrThreads));
+    } else {
+        startXraySolve(method);
+    }
     state_.solve = SolveStatus{method};
     state_.solve.running = true;
     solveJudged_ = false;
     solveShownPose_ = state_.userPose;
     solveShownFrame_ = state_.frame;
     pollSolver();
+}
+
+void App::startXraySolve(int method) {
+    const Image reference =
+        referenceCache_.get(*scene_, state_.referencePose, 1, DrrTrace::Exact, options_.drrThreads)
+            .image;
+    solver_.start(scene_, reference, state_.userPose,
+                  appSolveSettings(parseSearchMethod(kSolveMethods[method]), options_.drrThreads));
 }
 
 void App::pollSolver() {
@@ -204,7 +223,9 @@ void App::pollSolver() {
     if (s.finished && !solveJudged_ && scene_) {
         // Judged like a user's attempt: per-parameter error and mTRE against the reference.
         out.error6 = poseDifference(state_.referencePose, s.bestPose);
-        out.poseErrorMm = sceneMtre(*scene_, state_.referencePose, s.bestPose);
+        out.poseErrorMm = state_.mode == ImagingMode::Slice
+                              ? sliceMtre(*scene_, state_.referencePose, s.bestPose)
+                              : sceneMtre(*scene_, state_.referencePose, s.bestPose);
         const MatchVerdict verdict = judgeMatch(state_.referencePose, s.bestPose, out.poseErrorMm);
         out.matched = verdict.match;
         out.closeness = verdict.closeness;
@@ -233,6 +254,13 @@ void App::processRequests() {
         state_.load.error.clear();
         loader_.start(*requests.loadVolume);
     }
+    if (requests.mode && *requests.mode != state_.mode && scene_) {
+        // Another kind of image: the reference, the attempts and the solve start over.
+        state_.mode = *requests.mode;
+        referenceKey_.reset();
+        userKey_.reset();
+        newReference();
+    }
     if (requests.newReference) newReference();
     if (requests.remesh) remesh();
     if (requests.stopSolve) {
@@ -251,7 +279,14 @@ void App::processRequests() {
         state_.solve.applied = true;
         state_.matchIsStale = true;
     }
-    if (requests.match && scene_) {
+    if (requests.match && scene_ && state_.mode == ImagingMode::Slice) {
+        ++state_.attempts;
+        MatchOutcome outcome = evaluateSliceMatch(
+            *scene_, state_.userPose, state_.referencePose,
+            renderAppSlice(*scene_, state_.userPose, 1, options_.drrThreads),
+            renderAppSlice(*scene_, state_.referencePose, 1, options_.drrThreads));
+        recordAttempt(std::move(outcome));
+    } else if (requests.match && scene_) {
         // Judge the exact images, whatever the preview showed.
         const Image user =
             userCache_.get(*scene_, state_.userPose, 1, DrrTrace::Exact, options_.drrThreads).image;
@@ -262,13 +297,17 @@ void App::processRequests() {
         ++state_.attempts;
         MatchOutcome outcome =
             evaluateMatch(*scene_, state_.userPose, state_.referencePose, user, reference);
-        outcome.attempt = state_.attempts;
-        if (!state_.bestUserPoseErrorMm || outcome.poseErrorMm < *state_.bestUserPoseErrorMm)
-            state_.bestUserPoseErrorMm = outcome.poseErrorMm;
-        state_.match = std::move(outcome);
-        state_.matchIsStale = false;
+        recordAttempt(std::move(outcome));
     }
     refreshMatchTexts();
+}
+
+void App::recordAttempt(MatchOutcome outcome) {
+    outcome.attempt = state_.attempts;
+    if (!state_.bestUserPoseErrorMm || outcome.poseErrorMm < *state_.bestUserPoseErrorMm)
+        state_.bestUserPoseErrorMm = outcome.poseErrorMm;
+    state_.match = std::move(outcome);
+    state_.matchIsStale = false;
 }
 
 void App::refreshMatchTexts() {
@@ -281,11 +320,12 @@ void App::refreshMatchTexts() {
 void App::updateImages() {
     if (!scene_) return;
     const int threads = options_.drrThreads;
+    const ImagingMode mode = state_.mode;
     const DrrKey referenceKey{scene_->generation, state_.referencePose.toArray(), 1,
-                              DrrTrace::Exact};
+                              DrrTrace::Exact, mode};
     if (referenceKey_ != referenceKey) {
         DrrRender r =
-            referenceCache_.get(*scene_, state_.referencePose, 1, DrrTrace::Exact, threads);
+            referenceCache_.get(*scene_, state_.referencePose, 1, DrrTrace::Exact, threads, mode);
         referenceDrr_ = std::move(r.image);
         state_.timings.referenceDrrMs = r.milliseconds;
         referenceKey_ = referenceKey;
@@ -298,9 +338,9 @@ void App::updateImages() {
     const int factor = coarse ? state_.timings.coarseFactor : 1;
     const DrrTrace trace = DrrTrace::Exact;
     const Pose& userPose = shownUserPose();
-    const DrrKey userKey{scene_->generation, userPose.toArray(), factor, trace};
+    const DrrKey userKey{scene_->generation, userPose.toArray(), factor, trace, mode};
     if (userKey_ != userKey) {
-        DrrRender r = userCache_.get(*scene_, userPose, factor, trace, threads);
+        DrrRender r = userCache_.get(*scene_, userPose, factor, trace, threads, mode);
         userDrr_ = std::move(r.image);
         state_.timings.userDrrMs = r.milliseconds;
         state_.timings.userDrrCoarse = coarse;
@@ -309,6 +349,7 @@ void App::updateImages() {
         userKey_ = userKey;
         ++userVersion_;
         state_.userEdges = imageEdgeLetters(appGeometry(*scene_, userPose));
+        state_.userSliceEmpty = mode == ImagingMode::Slice && !sliceCutsVolume(*scene_, userPose);
     }
 
     if (state_.display.autoWindow) {
@@ -329,7 +370,8 @@ void App::updateImages() {
     const Image& reference =
         userDrr_.width == referenceDrr_.width
             ? referenceDrr_
-            : referenceCache_.get(*scene_, state_.referencePose, factor, DrrTrace::Exact, threads)
+            : referenceCache_
+                  .get(*scene_, state_.referencePose, factor, DrrTrace::Exact, threads, mode)
                   .image;
     std::vector<std::uint8_t> rgba;
     switch (state_.display.compare) {
@@ -398,11 +440,12 @@ void App::frame() {
                             shownKey_.user,
                             shownKey_.window,
                             shownKey_.level,
-                            fast};
+                            fast,
+                            state_.mode};
     if (sceneKey != sceneKey_) {
         sceneRenderer_->draw(scene_.get(), bone_.get(), boneGeneration_, state_.userPose,
                              state_.view, userTexture_->empty() ? 0 : userTexture_->id(),
-                             ui_.sceneViewSize(), !fast);
+                             ui_.sceneViewSize(), !fast, state_.mode == ImagingMode::Slice);
         sceneKey_ = sceneKey;
         ++sceneDraws_;
     }

@@ -28,6 +28,7 @@ namespace fm::app {
 struct AppOptions {
     std::string volumeSpec = "phantom:knee";
     std::optional<Pose> userPose;
+    std::optional<ImagingMode> mode;    // otherwise chosen from the volume (MRI: slices)
     std::optional<Pose> referencePose;  // otherwise chosen by chooseReference(seed)
     std::optional<View3d> view;
     std::uint64_t seed = 1;   // reference choice; the window passes the clock
@@ -74,6 +75,8 @@ class App {
     void updateImages();
     void newReference();
     void startSolve();
+    void startXraySolve(int method);
+    void recordAttempt(MatchOutcome outcome);  // counts it as the latest, best-so-far tracked
     void pollSolver();
     void showBone(std::shared_ptr<const Mesh> mesh, double level);
     void remesh();
@@ -113,6 +116,7 @@ class App {
         std::uint64_t film = 0;
         float window = 0, level = 0;
         bool fast = false;
+        ImagingMode mode = ImagingMode::Xray;
         bool operator==(const SceneKey&) const = default;
     } sceneKey_;
     int sceneDraws_ = 0;

@@ -69,6 +69,10 @@ void Ui::helpWindow(AppState& state) {
             "3D view: drag to orbit, middle-drag (or Shift+drag) to pan, right-drag or wheel to "
             "zoom; Reset view frames the whole set-up.");
         bulletWrapped(
+            "Images: X-ray or MRI slice. In the slice mode both panes show planar slices of the "
+            "volume: the offsets move the volume against the plane, azimuth and elevation tilt "
+            "the plane, rotation turns it; an MRI file opens in this mode.");
+        bulletWrapped(
             "Open another CT: type a path (file, DICOM folder or phantom:NAME) or drop it onto "
             "the window.");
         if (ImGui::Button("Close")) state.showHelp = false;

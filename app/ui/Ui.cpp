@@ -79,7 +79,8 @@ void Ui::referencePane(AppState& state, const Pane& pane, unsigned texture) {
 }
 
 void Ui::userPane(AppState& state, const Pane& pane, unsigned texture) {
-    beginPane("Your DRR", pane);
+    // One window id whatever the title says (the mode renames it).
+    beginPane(state.mode == ImagingMode::Slice ? "Your slice###user" : "Your DRR###user", pane);
     const float side = squareSide(ImGui::GetTextLineHeightWithSpacing());
     imageWidget(state, "image:user", texture, textures_.userImage, state.userEdges, side);
     if (readoutLine(state, "image:user")) {
@@ -87,6 +88,8 @@ void Ui::userPane(AppState& state, const Pane& pane, unsigned texture) {
         ImGui::TextColored(kWarn, "solving:");
         ImGui::SameLine();
         poseLine(state.solve.bestPose);
+    } else if (state.mode == ImagingMode::Slice && state.userSliceEmpty) {
+        ImGui::TextColored(kWarn, "The plane misses the volume: no data.");
     } else {
         poseLine(state.userPose);
     }
@@ -245,6 +248,7 @@ void Ui::parameterPane(AppState& state, const Pane& pane) {
         ImGui::SetTooltip("Offsets in the patient frame LPS: +x Left, +y Posterior, +z "
                           "Superior (DICOM, ITK).\n3D Slicer's RAS is the same with x and y "
                           "negated: RAS = (-x, -y, z).");
+    modeSwitch(state);
 
     ImGui::Separator();
     ImGui::AlignTextToFramePadding();

@@ -55,6 +55,7 @@ class Ui {
     void matchTab(AppState& state);      // MatchPanel.cpp: the user's attempts ...
     void solveSection(AppState& state);  // SolvePanel.cpp: ... and the computer's
     void helpWindow(AppState& state);    // HelpWindow.cpp
+    void modeSwitch(AppState& state);    // ModeSwitch.cpp: X-ray / MRI slice
     void keyboard(AppState& state);      // KeyboardNudge.cpp: arrows, Enter, Escape
     // ImagePane.cpp: a square 2D image with zoom (wheel), pan (right or middle drag),
     // window/level (left drag), pixel readout and orientation letters.

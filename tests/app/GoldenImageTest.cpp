@@ -62,5 +62,30 @@ TEST_F(GoldenUi, ThreeDViewFromAboveBehind) {
     expectSceneGolden(*app, view, "view3d_above_behind");
 }
 
+// The MRI slice mode on the knee phantom (self-contained): both panes show slices, the 3D view
+// the plane cutting the box inside a translucent surface.
+class GoldenSliceUi : public HeadlessApp {
+  protected:
+    void SetUp() override {
+        app::AppOptions options = testAppOptions();
+        options.mode = app::ImagingMode::Slice;
+        options.userPose = parsePose("0,0,0,20,10,0");
+        start(options);
+    }
+};
+
+TEST_F(GoldenSliceUi, SliceMode) {
+    ASSERT_EQ(app->state().mode, app::ImagingMode::Slice);
+    EXPECT_TRUE(matchesGolden(app->capture(), "ui_slice_mode"));
+}
+
+TEST_F(GoldenSliceUi, ThreeDViewOfTheSlicePlane) {
+    app::View3d view;
+    view.azimuthDeg = 35.0f;
+    view.elevationDeg = 25.0f;
+    view.zoom = 1.3f;
+    expectSceneGolden(*app, view, "view3d_slice");
+}
+
 }  // namespace
 }  // namespace fm::test

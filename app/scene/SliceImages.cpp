@@ -1,0 +1,119 @@
+#include "scene/SliceImages.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/Random.h"
+#include "match/MatchVerdict.h"
+#include "similarity/Ncc.h"
+#include "slice/SlicePoseError.h"
+
+namespace fm::app {
+
+namespace {
+
+struct StandardPlane {
+    const char* name;
+    double azimuthDeg, elevationDeg;
+};
+constexpr StandardPlane kPlanes[] = {
+    {"coronal", 0, 0}, {"sagittal", 90, 0}, {"axial", 0, -90}};
+
+double round1(double v) {
+    return std::round(v * 10.0) / 10.0;
+}
+
+// Share of the slice's pixels that cut the foreground (values above the mean).
+double foregroundShare(const LoadedScene& scene, const Pose& pose) {
+    const SampledSlice s = renderAppSlice(scene, pose, 4, 1);
+    double mean = 0.0;
+    for (float v : scene.volume->values) mean += v;
+    mean /= double(std::max<std::size_t>(1, scene.volume->values.size()));
+    std::size_t inside = 0;
+    for (std::size_t i = 0; i < s.image.pixels.size(); ++i)
+        inside += s.mask.inside[i] && s.image.pixels[i] > mean;
+    return double(inside) / double(std::max<std::size_t>(1, s.image.pixels.size()));
+}
+
+}  // namespace
+
+SliceGeometry appSlice(const LoadedScene& scene, const Pose& pose, int downsample) {
+    const SliceGeometry g = sliceGeometry(pose, scene.sliceSetup, scene.center);
+    return downsample > 1 ? g.downsampled(downsample) : g;
+}
+
+SampledSlice renderAppSlice(const LoadedScene& scene, const Pose& pose, int downsample,
+                            int threads) {
+    return sampleSlice(*scene.sliceVolume, appSlice(scene, pose, downsample),
+                       SliceInterpolation::Trilinear, threads);
+}
+
+bool sliceCutsVolume(const LoadedScene& scene, const Pose& pose) {
+    return !renderAppSlice(scene, pose, 8, 1).empty();
+}
+
+ReferenceChoice chooseSliceReference(const LoadedScene& scene, std::uint64_t seed,
+                                     const Pose& current, Difficulty difficulty,
+                                     const Pose* avoid) {
+    const DifficultySpec spec = difficultySpec(difficulty);
+    // A slice shows the anatomy of its own plane only: half the X-ray spreads keep it familiar.
+    const double offset = std::min(0.5 * spec.offsetSpreadMm, scene.translationRangeMm);
+    const double angle = 0.5 * spec.angleSpreadDeg;
+    Rng rng(seed);
+    for (int attempt = 0; attempt < 200; ++attempt) {
+        const StandardPlane& plane = kPlanes[static_cast<int>(rng.uniform(0, 3)) % 3];
+        Pose p;
+        p.offset = {round1(rng.uniform(-offset, offset)), round1(rng.uniform(-offset, offset)),
+                    round1(rng.uniform(-offset, offset))};
+        p.azimuthDeg = round1(plane.azimuthDeg + rng.uniform(-angle, angle));
+        p.elevationDeg = round1(std::clamp(plane.elevationDeg + rng.uniform(-angle, angle), -90.0, 90.0));
+        p.rotationDeg = round1(rng.uniform(-angle, angle));
+        if (judgeMatch(p, current, 0.0).match) continue;
+        if (avoid && avoid->toArray() == p.toArray()) continue;
+        if (foregroundShare(scene, p) < 0.3) continue;
+        return {p, std::string("random ") + plane.name + " slice (" + difficultyName(difficulty) +
+                       ")"};
+    }
+    Pose plain;  // a volume too small or too empty for a random slice
+    plain.azimuthDeg = judgeMatch(plain, current, 0.0).match ? 90.0 : 0.0;
+    return {plain, "plain coronal or sagittal slice"};
+}
+
+double sliceMtre(const LoadedScene& scene, const Pose& reference, const Pose& candidate) {
+    if (scene.foregroundPoints.empty()) return 0.0;
+    return sliceTargetError(reference, candidate, scene.sliceSetup, scene.center,
+                            scene.foregroundPoints)
+        .meanMm;
+}
+
+MatchOutcome evaluateSliceMatch(const LoadedScene& scene, const Pose& user, const Pose& reference,
+                                const SampledSlice& userSlice, const SampledSlice& referenceSlice) {
+    MatchOutcome m;
+    m.poseErrorMm = sliceMtre(scene, reference, user);
+    m.judged = judgeMatch(reference, user, m.poseErrorMm);
+    m.matched = m.judged.match;
+    const Mask both = intersect(userSlice.mask, referenceSlice.mask);
+    m.ncc = ncc(referenceSlice.image, userSlice.image, &both);  // 0 when nothing overlaps
+    for (int p = 0; p < kParameterCount; ++p) {
+        const ParameterHint& h = m.judged.hints[p];
+        m.error[p] = h.error;
+        m.direction[p] = h.status == ParameterStatus::TooHigh  ? +1
+                         : h.status == ParameterStatus::TooLow ? -1
+                                                               : 0;
+    }
+    m.furthestParameter = m.matched ? -1 : m.judged.worstParameter;
+    return m;
+}
+
+SliceRegistrationSettings appSliceSolveSettings(SearchMethod method, int threads) {
+    SliceRegistrationSettings s;
+    s.method = method;
+    // The hidden reference is a slice of the same volume: NCC is exact for it (MI, the CLI's
+    // default for other contrasts, is biased by its histogram).
+    s.similarity = SimilarityMeasure::Ncc;
+    s.seed = 1;
+    s.threads = threads;
+    return s;
+}
+
+}  // namespace fm::app

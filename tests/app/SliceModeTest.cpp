@@ -1,0 +1,136 @@
+// The MRI slice mode of the app (docs/mri.md), driven through the real UI: the mode switch,
+// the panes showing slices, Match and its hints, Solve, the plane missing the volume, and an
+// MRI file opening in the slice mode by itself.
+#include <chrono>
+#include <thread>
+
+#include "AppFixture.h"
+#include "common/TestData.h"
+#include "scene/SliceImages.h"
+#include "slice/SlicePoseError.h"
+
+namespace fm::test {
+namespace {
+
+class SliceModeUi : public HeadlessApp {
+  protected:
+    void switchToSlices() {
+        script->clickWidget("radio:mode-slice");
+        script->idle(2);
+        ASSERT_EQ(app->state().mode, app::ImagingMode::Slice);
+    }
+    SampledSlice slice(const Pose& pose) const {
+        return app::renderAppSlice(*app->scene(), pose, 1, kTestDrrThreads);
+    }
+    double mtre(const Pose& pose) const {
+        const app::LoadedScene& s = *app->scene();
+        return sliceTargetError(app->state().referencePose, pose, s.sliceSetup, s.center,
+                                s.foregroundPoints)
+            .meanMm;
+    }
+};
+
+TEST_F(SliceModeUi, TheSwitchTurnsBothPanesIntoSlices) {
+    ASSERT_EQ(app->state().mode, app::ImagingMode::Xray);  // the knee phantom is a CT
+    const Image drr = app->userDrr();
+    switchToSlices();
+    // A new hidden reference of the new kind; both panes hold the engine's slices exactly.
+    EXPECT_EQ(app->referenceDrr().pixels, slice(app->state().referencePose).image.pixels);
+    EXPECT_EQ(app->userDrr().pixels, slice(app->state().userPose).image.pixels);
+    EXPECT_NE(app->userDrr().pixels, drr.pixels);
+    EXPECT_FALSE(app->state().userSliceEmpty);
+    script->clickWidget("radio:mode-xray");
+    script->idle(2);
+    EXPECT_EQ(app->state().mode, app::ImagingMode::Xray);
+    EXPECT_EQ(app->userDrr().pixels, drr.pixels);
+}
+
+TEST_F(SliceModeUi, MatchJudgesSlicesWithTheSameHints) {
+    switchToSlices();
+    const Pose reference = app->state().referencePose;
+    app->state().userPose = reference;
+    script->clickWidget("button:match");
+    script->idle(1);
+    ASSERT_TRUE(app->state().match.has_value());
+    EXPECT_TRUE(app->state().match->matched);
+    EXPECT_NEAR(app->state().match->poseErrorMm, 0.0, 1e-9);
+    EXPECT_NEAR(app->state().match->ncc, 1.0, 1e-6);  // the same slice
+    // 8 mm too far along x: the hint names x, too high, and the slice mTRE is 8 mm.
+    Pose off = reference;
+    off.offset.x += 8.0;
+    app->state().userPose = off;
+    script->clickWidget("button:match");
+    script->idle(1);
+    const app::MatchOutcome& m = *app->state().match;
+    EXPECT_FALSE(m.matched);
+    EXPECT_EQ(m.furthestParameter, app::kOffsetX);
+    EXPECT_EQ(m.direction[app::kOffsetX], +1);
+    EXPECT_NEAR(m.poseErrorMm, 8.0, 1e-9);
+    EXPECT_EQ(app->state().attempts, 2);
+}
+
+TEST_F(SliceModeUi, SolveFindsTheHiddenSlice) {
+    switchToSlices();
+    std::array<double, 6> start = app->state().referencePose.toArray();
+    for (int k = 0; k < 6; ++k) start[k] += k % 2 ? -3.0 : 3.0;
+    app->state().userPose = Pose::fromArray(start);
+    ASSERT_GT(mtre(app->state().userPose), 3.0);
+    script->clickWidget("tab:solve");
+    script->idle(1);
+    script->clickWidget("button:solve");
+    for (int f = 0; f < 20000 && !app->state().solve.finished; ++f) {
+        script->idle(1);
+        std::this_thread::sleep_for(std::chrono::milliseconds(2));
+        ASSERT_TRUE(app->state().solve.error.empty()) << app->state().solve.error;
+    }
+    ASSERT_TRUE(app->state().solve.finished);
+    EXPECT_LT(app->state().solve.poseErrorMm, 1.0)
+        << "reference " << formatPose(app->state().referencePose) << " found "
+        << formatPose(app->state().solve.bestPose);
+    EXPECT_NEAR(app->state().solve.poseErrorMm, mtre(app->state().solve.bestPose), 1e-9);
+    // Solve never moves the user's pose by itself.
+    EXPECT_EQ(app->state().userPose.toArray(), start);
+}
+
+TEST_F(SliceModeUi, APlaneMissingTheVolumeShowsNoDataAndSaysSo) {
+    switchToSlices();
+    // The knee box is 220 mm wide: a plane at the slider's end of the x range, turned to
+    // sagittal, lies beyond it.
+    Pose p;
+    p.azimuthDeg = 90.0;
+    p.offset.x = app->state().translationRangeMm;
+    app->state().userPose = p;
+    script->idle(2);
+    ASSERT_TRUE(slice(p).empty());
+    EXPECT_TRUE(app->state().userSliceEmpty);
+    for (float v : app->userDrr().pixels) ASSERT_EQ(v, 0.0f);
+    script->clickWidget("button:match");  // judged by the parameters, not NaN
+    script->idle(1);
+    ASSERT_TRUE(app->state().match.has_value());
+    EXPECT_FALSE(app->state().match->matched);
+    EXPECT_EQ(app->state().match->ncc, 0.0);
+    EXPECT_TRUE(std::isfinite(app->state().match->poseErrorMm));
+}
+
+// One App per test: the fixture opens the MRI instead of the knee.
+class MriFileUi : public SliceModeUi {
+  protected:
+    void SetUp() override {
+        FM_REQUIRE_SHARED_DATA("mricron-ch2/ch2bet.nii.gz");
+        app::AppOptions options = testAppOptions();
+        options.volumeSpec = (sharedDataDir() / "mricron-ch2/ch2bet.nii.gz").string();
+        options.referencePose.reset();
+        start(options);
+    }
+};
+
+TEST_F(MriFileUi, AnMriFileOpensInTheSliceMode) {
+    EXPECT_TRUE(app->scene()->looksLikeMri);
+    EXPECT_EQ(app->state().mode, app::ImagingMode::Slice);
+    EXPECT_EQ(app->referenceDrr().pixels, slice(app->state().referencePose).image.pixels);
+    EXPECT_GT(app->scene()->foregroundPoints.size(), 1000u);
+    EXPECT_GT(app->state().bone.triangles, 10000u);  // the brain's surface
+}
+
+}  // namespace
+}  // namespace fm::test
