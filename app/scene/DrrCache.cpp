@@ -18,7 +18,7 @@ DrrRender DrrCache::get(const LoadedScene& scene, const Pose& pose, int downsamp
     auto hit =
         std::find_if(entries_.begin(), entries_.end(), [&](const auto& e) { return e.key == key; });
     if (hit != entries_.end()) {
-        DrrRender out{hit->image, hit->milliseconds, true};
+        DrrRender out{hit->image, hit->dataMask, hit->milliseconds, true};
         std::rotate(entries_.begin(), hit, hit + 1);  // most recent first
         return out;
     }
@@ -29,15 +29,21 @@ DrrRender DrrCache::get(const LoadedScene& scene, const Pose& pose, int downsamp
     const Volume& v = *scene.volume;
     options.approxStepMm = std::min({v.spacing.x, v.spacing.y, v.spacing.z}) * double(downsample);
     const auto start = std::chrono::steady_clock::now();
-    Image image = mode == ImagingMode::Slice
-                      ? renderAppSlice(scene, pose, downsample, threads).image
-                      : renderDrr(*scene.drrVolume, appGeometry(scene, pose, downsample), options);
+    Image image;
+    Mask dataMask;
+    if (mode == ImagingMode::Slice) {
+        SampledSlice slice = renderAppSlice(scene, pose, downsample, threads);
+        image = std::move(slice.image);
+        dataMask = std::move(slice.mask);
+    } else {
+        image = renderDrr(*scene.drrVolume, appGeometry(scene, pose, downsample), options);
+    }
     const double ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     ++renders_;
-    entries_.push_front({key, image, ms});
+    entries_.push_front({key, image, dataMask, ms});
     if (entries_.size() > capacity_) entries_.pop_back();
-    return {std::move(image), ms, false};
+    return {std::move(image), std::move(dataMask), ms, false};
 }
 
 }  // namespace fm::app

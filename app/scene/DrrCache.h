@@ -9,6 +9,7 @@
 #include "drr/Drr.h"
 #include "geometry/Pose.h"
 #include "scene/LoadedScene.h"
+#include "similarity/Mask.h"
 #include "state/AppState.h"
 
 namespace fm::app {
@@ -24,6 +25,9 @@ struct DrrKey {
 
 struct DrrRender {
     Image image;
+    // Slice mode: the pixels that hold data (the plane inside the volume's box). Empty for a
+    // DRR, where every pixel does.
+    Mask dataMask;
     double milliseconds = 0.0;  // time the render took (also when served from the cache)
     bool fromCache = false;
 };
@@ -43,6 +47,7 @@ class DrrCache {
     struct Entry {
         DrrKey key;
         Image image;
+        Mask dataMask;
         double milliseconds;
     };
     std::deque<Entry> entries_;  // most recent first

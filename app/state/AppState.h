@@ -54,6 +54,7 @@ struct PixelReadout {
     std::string pane;  // "image:reference", "image:user"
     int col = 0, row = 0;
     float value = 0.0f;
+    bool hasData = true;  // false: a slice pixel outside the volume (value meaningless)
 };
 
 struct DisplaySettings {

@@ -317,6 +317,16 @@ void App::refreshMatchTexts() {
                     state_.match->matched || state_.referenceRevealed);
 }
 
+ImageEdgeLetters App::edgeLetters(const Pose& pose) const {
+    // A slice's columns and rows run along its own axes; a DRR's along the film's.
+    if (state_.mode == ImagingMode::Slice) {
+        const SliceGeometry slice = appSlice(*scene_, pose);
+        return imageEdgeLetters(slice.u, slice.v);
+    }
+    const ProjectionGeometry drr = appGeometry(*scene_, pose);
+    return imageEdgeLetters(drr.detector.u, drr.detector.v);
+}
+
 void App::updateImages() {
     if (!scene_) return;
     const int threads = options_.drrThreads;
@@ -327,10 +337,11 @@ void App::updateImages() {
         DrrRender r =
             referenceCache_.get(*scene_, state_.referencePose, 1, DrrTrace::Exact, threads, mode);
         referenceDrr_ = std::move(r.image);
+        referenceDataMask_ = std::move(r.dataMask);
         state_.timings.referenceDrrMs = r.milliseconds;
         referenceKey_ = referenceKey;
         ++referenceVersion_;
-        state_.referenceEdges = imageEdgeLetters(appGeometry(*scene_, state_.referencePose));
+        state_.referenceEdges = edgeLetters(state_.referencePose);
     }
 
     // While a slider is dragged: a coarser film and sampled rays; exact again on release.
@@ -342,13 +353,14 @@ void App::updateImages() {
     if (userKey_ != userKey) {
         DrrRender r = userCache_.get(*scene_, userPose, factor, trace, threads, mode);
         userDrr_ = std::move(r.image);
+        userDataMask_ = std::move(r.dataMask);
         state_.timings.userDrrMs = r.milliseconds;
         state_.timings.userDrrCoarse = coarse;
         (coarse ? state_.timings.lastCoarseMs : state_.timings.lastExactMs) = r.milliseconds;
         if (!r.fromCache) ++(coarse ? coarseUserRenders_ : exactUserRenders_);
         userKey_ = userKey;
         ++userVersion_;
-        state_.userEdges = imageEdgeLetters(appGeometry(*scene_, userPose));
+        state_.userEdges = edgeLetters(userPose);
         state_.userSliceEmpty = mode == ImagingMode::Slice && !sliceCutsVolume(*scene_, userPose);
     }
 
@@ -416,6 +428,8 @@ void App::frame() {
     textures.scene3d = sceneRenderer_->texture();
     textures.referenceImage = referenceDrr_.width > 0 ? &referenceDrr_ : nullptr;
     textures.userImage = userDrr_.width > 0 ? &userDrr_ : nullptr;
+    textures.referenceDataMask = referenceDataMask_.width > 0 ? &referenceDataMask_ : nullptr;
+    textures.userDataMask = userDataMask_.width > 0 ? &userDataMask_ : nullptr;
     refreshMatchTexts();  // the hint mode or Reveal may have changed since
     ui_.draw(state_, textures);
 

@@ -73,6 +73,7 @@ class App {
     void processRequests();
     void refreshMatchTexts();
     void updateImages();
+    ImageEdgeLetters edgeLetters(const Pose& pose) const;  // of the image at `pose` (mode's)
     void newReference();
     void startSolve();
     void startXraySolve(int method);
@@ -93,6 +94,7 @@ class App {
     int remeshes_ = 0;
     DrrCache referenceCache_{2}, userCache_{6};
     Image referenceDrr_, userDrr_;
+    Mask referenceDataMask_, userDataMask_;  // slice mode: pixels with data; empty for DRRs
     std::uint64_t referenceVersion_ = 0, userVersion_ = 0;
     std::optional<DrrKey> referenceKey_, userKey_;  // what referenceDrr_ / userDrr_ hold
     std::uint64_t nextSeed_ = 1;

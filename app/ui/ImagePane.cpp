@@ -35,7 +35,7 @@ void edgeLetter(ImDrawList* list, ImVec2 at, const std::string& text, ImVec2 ali
 }  // namespace
 
 void Ui::imageWidget(AppState& state, const std::string& id, unsigned texture, const Image* image,
-                     const ImageEdgeLetters& edges, float side) {
+                     const Mask* dataMask, const ImageEdgeLetters& edges, float side) {
     const ImVec2 origin = ImGui::GetCursorScreenPos();
     ImGui::InvisibleButton(id.c_str(), ImVec2(side, side),
                            ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
@@ -84,7 +84,9 @@ void Ui::imageWidget(AppState& state, const std::string& id, unsigned texture, c
         const ImVec2 uv = toUv(io.MousePos);
         const int col = std::clamp(int(std::floor(uv.x * image->width)), 0, image->width - 1);
         const int row = std::clamp(int(std::floor(uv.y * image->height)), 0, image->height - 1);
-        state.readout = {true, id, col, row, image->at(col, row)};
+        const bool hasData = !dataMask || dataMask->width != image->width ||
+                             dataMask->height != image->height || dataMask->at(col, row);
+        state.readout = {true, id, col, row, image->at(col, row), hasData};
     }
 }
 
@@ -97,7 +99,8 @@ void Ui::enlargedCompare(AppState& state, unsigned texture) {
     if (ImGui::Begin("Compare (enlarged)", &state.compareEnlarged,
                      ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse |
                          ImGuiWindowFlags_NoMove | ImGuiWindowFlags_AlwaysAutoResize)) {
-        imageWidget(state, "image:compare-large", texture, nullptr, state.userEdges, side);
+        imageWidget(state, "image:compare-large", texture, nullptr, nullptr, state.userEdges,
+                    side);
         if (ImGui::Button("Close")) state.compareEnlarged = false;
         record("button:close-compare");
         ImGui::SameLine();

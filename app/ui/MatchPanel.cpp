@@ -80,8 +80,9 @@ void Ui::matchTab(AppState& state) {
         ImGui::SetTooltip("Show the hidden parameters and the exact errors");
 
     if (!state.match) {
-        ImGui::TextWrapped(
-            "Move the six parameters until your DRR matches the reference, then press Match.");
+        ImGui::TextWrapped("Move the six parameters until your %s matches the reference, then "
+                           "press Match.",
+                           state.mode == ImagingMode::Slice ? "slice" : "DRR");
         dimWrapped("A match: every offset within %.3g mm and every angle within %.3g deg of the "
                    "hidden pose.",
                    state.toleranceOffsetMm, state.toleranceAngleDeg);

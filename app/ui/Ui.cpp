@@ -28,8 +28,12 @@ float squareSide(float reserveBelow) {
 // The caption under a 2D image: the pixel under the mouse while there is one.
 bool readoutLine(const AppState& state, const std::string& pane) {
     if (!state.readout.valid || state.readout.pane != pane) return false;
-    ImGui::TextColored(kSelected, "pixel (%d, %d)  value %.4g  zoom %.1fx", state.readout.col,
-                       state.readout.row, state.readout.value, state.imageView.zoom);
+    if (state.readout.hasData)
+        ImGui::TextColored(kSelected, "pixel (%d, %d)  value %.4g  zoom %.1fx", state.readout.col,
+                           state.readout.row, state.readout.value, state.imageView.zoom);
+    else  // outside the volume's box: no value at all (shown black, but not a 0)
+        ImGui::TextColored(kSelected, "pixel (%d, %d)  no data  zoom %.1fx", state.readout.col,
+                           state.readout.row, state.imageView.zoom);
     return true;
 }
 
@@ -67,8 +71,8 @@ void Ui::draw(AppState& state, const UiTextures& textures) {
 void Ui::referencePane(AppState& state, const Pane& pane, unsigned texture) {
     beginPane("Reference image", pane);
     const float side = squareSide(ImGui::GetTextLineHeightWithSpacing());
-    imageWidget(state, "image:reference", texture, textures_.referenceImage, state.referenceEdges,
-                side);
+    imageWidget(state, "image:reference", texture, textures_.referenceImage,
+                textures_.referenceDataMask, state.referenceEdges, side);
     if (readoutLine(state, "image:reference")) {
     } else if (state.referenceRevealed) {
         poseLine(state.referencePose);
@@ -82,7 +86,8 @@ void Ui::userPane(AppState& state, const Pane& pane, unsigned texture) {
     // One window id whatever the title says (the mode renames it).
     beginPane(state.mode == ImagingMode::Slice ? "Your slice###user" : "Your DRR###user", pane);
     const float side = squareSide(ImGui::GetTextLineHeightWithSpacing());
-    imageWidget(state, "image:user", texture, textures_.userImage, state.userEdges, side);
+    imageWidget(state, "image:user", texture, textures_.userImage, textures_.userDataMask,
+                state.userEdges, side);
     if (readoutLine(state, "image:user")) {
     } else if (state.solve.running) {  // the image follows the computer's best pose meanwhile
         ImGui::TextColored(kWarn, "solving:");
@@ -308,7 +313,7 @@ void Ui::comparePane(AppState& state, const Pane& pane, unsigned texture) {
     const float controlsWidth = ImGui::GetContentRegionAvail().x * 0.42f;
     const ImVec2 avail = ImGui::GetContentRegionAvail();
     const float side = std::max(16.0f, std::min(avail.x - controlsWidth - 8.0f, avail.y));
-    imageWidget(state, "image:compare", texture, nullptr, state.userEdges, side);
+    imageWidget(state, "image:compare", texture, nullptr, nullptr, state.userEdges, side);
     ImGui::SameLine();
     ImGui::BeginGroup();
     const char* legend = state.display.compare == CompareMode::Difference
@@ -330,17 +335,19 @@ void Ui::comparePane(AppState& state, const Pane& pane, unsigned texture) {
                          "%.3g", ImGuiSliderFlags_AlwaysClamp))
         state.display.autoWindow = false;
     record("slider:window");
+    // A DRR holds line integrals; a slice the volume's own values (HU, or an MRI's units).
+    const char* units = state.mode == ImagingMode::Slice ? "the volume's values" : "line integral";
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Width of the grey range, in the DRR's units (line integral). Or "
-                          "drag left/right on an image");
+        ImGui::SetTooltip("Width of the grey range, in the images' units (%s). Or drag "
+                          "left/right on an image", units);
     ImGui::SetNextItemWidth(controlsWidth - ImGui::CalcTextSize("Window").x - 8.0f);
     if (ImGui::DragFloat("Level", &state.display.level, range * 2e-3f, -range * 0.5f, range,
                          "%.3g"))
         state.display.autoWindow = false;
     record("slider:level");
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Centre of the grey range, in the DRR's units. Or drag up/down on an "
-                          "image");
+        ImGui::SetTooltip("Centre of the grey range, in the images' units (%s). Or drag up/down "
+                          "on an image", units);
     if (ImGui::SmallButton("Enlarge")) state.compareEnlarged = true;
     record("button:enlarge-compare");
     const Timings& t = state.timings;
@@ -350,7 +357,8 @@ void Ui::comparePane(AppState& state, const Pane& pane, unsigned texture) {
         ImGui::End();
         return;
     }
-    ImGui::TextColored(kDim, "user DRR %.1f ms %s", t.userDrrMs,
+    ImGui::TextColored(kDim, "user %s %.1f ms %s",
+                       state.mode == ImagingMode::Slice ? "slice" : "DRR", t.userDrrMs,
                        t.userDrrCoarse ? "(coarse)" : "(exact)");
     ImGui::TextColored(kDim, "exact %.1f ms\ncoarse/%d %.1f ms", t.lastExactMs, t.coarseFactor,
                        t.lastCoarseMs);

@@ -9,6 +9,7 @@
 #include <glm/glm.hpp>
 
 #include "core/Image.h"
+#include "similarity/Mask.h"
 #include "state/AppState.h"
 #include "ui/Layout.h"
 
@@ -22,6 +23,9 @@ struct UiTextures {
     // The images behind the first two (for the pixel readout); null when none yet.
     const Image* referenceImage = nullptr;
     const Image* userImage = nullptr;
+    // Slice mode: the pixels of those images that hold data (null: every pixel does).
+    const Mask* referenceDataMask = nullptr;
+    const Mask* userDataMask = nullptr;
 };
 
 // A widget's screen rectangle (pixels, top-left origin), for scripted tests.
@@ -59,8 +63,10 @@ class Ui {
     void keyboard(AppState& state);      // KeyboardNudge.cpp: arrows, Enter, Escape
     // ImagePane.cpp: a square 2D image with zoom (wheel), pan (right or middle drag),
     // window/level (left drag), pixel readout and orientation letters.
+    // `dataMask` (may be null) marks the pixels that hold data; the readout says "no data"
+    // elsewhere.
     void imageWidget(AppState& state, const std::string& id, unsigned texture, const Image* image,
-                     const ImageEdgeLetters& edges, float side);
+                     const Mask* dataMask, const ImageEdgeLetters& edges, float side);
     void enlargedCompare(AppState& state, unsigned texture);
 
     std::map<std::string, WidgetRect> rects_;

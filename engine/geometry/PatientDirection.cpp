@@ -21,8 +21,12 @@ std::string patientDirectionLetters(const glm::dvec3& lps) {
 }
 
 ImageEdgeLetters imageEdgeLetters(const ProjectionGeometry& g) {
-    return {patientDirectionLetters(-g.detector.u), patientDirectionLetters(g.detector.u),
-            patientDirectionLetters(-g.detector.v), patientDirectionLetters(g.detector.v)};
+    return imageEdgeLetters(g.detector.u, g.detector.v);
+}
+
+ImageEdgeLetters imageEdgeLetters(const glm::dvec3& u, const glm::dvec3& v) {
+    return {patientDirectionLetters(-u), patientDirectionLetters(u), patientDirectionLetters(-v),
+            patientDirectionLetters(v)};
 }
 
 }  // namespace fm

@@ -20,5 +20,7 @@ struct ImageEdgeLetters {
     std::string left, right, top, bottom;
 };
 ImageEdgeLetters imageEdgeLetters(const ProjectionGeometry& geometry);
+// The same for any image whose columns run along `u` and rows along `v` (an MRI slice).
+ImageEdgeLetters imageEdgeLetters(const glm::dvec3& u, const glm::dvec3& v);
 
 }  // namespace fm

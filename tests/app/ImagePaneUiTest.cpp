@@ -34,6 +34,7 @@ TEST_F(ImagePaneUi, ReadoutGivesThePixelAndItsValue) {
     const Image drr = renderDrr(*app->scene()->drrVolume,
                                 app::appGeometry(*app->scene(), app->state().userPose), options);
     EXPECT_EQ(p.value, drr.at(p.col, p.row));
+    EXPECT_TRUE(p.hasData) << "every DRR pixel holds a line integral";
     script->moveTo({-100.0f, -100.0f});
     EXPECT_FALSE(app->state().readout.valid) << "no pixel under the mouse";
 }

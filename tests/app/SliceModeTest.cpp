@@ -112,6 +112,65 @@ TEST_F(SliceModeUi, APlaneMissingTheVolumeShowsNoDataAndSaysSo) {
     EXPECT_TRUE(std::isfinite(app->state().match->poseErrorMm));
 }
 
+TEST_F(SliceModeUi, OrientationLettersFollowTheSlicePlane) {
+    switchToSlices();
+    // The zero pose is a coronal slice seen from the front (docs/mri.md): columns towards the
+    // patient's left, rows towards the feet.
+    app->state().userPose = Pose{};
+    script->idle(2);
+    EXPECT_EQ(app->state().userEdges.left, "R");
+    EXPECT_EQ(app->state().userEdges.right, "L");
+    EXPECT_EQ(app->state().userEdges.top, "S");
+    EXPECT_EQ(app->state().userEdges.bottom, "I");
+    // Sagittal (azimuth 90): anterior and posterior at the sides, superior still at the top.
+    app->state().userPose.azimuthDeg = 90.0;
+    script->idle(2);
+    const std::string sides = app->state().userEdges.left + app->state().userEdges.right;
+    EXPECT_TRUE(sides == "AP" || sides == "PA") << sides;
+    EXPECT_EQ(app->state().userEdges.top, "S");
+    // Axial (elevation 90): the image's rows run front to back, its columns right to left.
+    app->state().userPose = Pose::fromArray({0, 0, 0, 0, 90, 0});
+    script->idle(2);
+    const std::string rows = app->state().userEdges.top + app->state().userEdges.bottom;
+    const std::string columns = app->state().userEdges.left + app->state().userEdges.right;
+    EXPECT_TRUE(rows == "AP" || rows == "PA") << rows;
+    EXPECT_TRUE(columns == "RL" || columns == "LR") << columns;
+}
+
+TEST_F(SliceModeUi, ReadoutSaysNoDataOutsideTheVolume) {
+    switchToSlices();
+    // A plane 40 mm off the centre, turned 30 deg: part of its grid lies outside the box.
+    const Pose pose = Pose::fromArray({40, 0, 0, 30, 0, 0});
+    app->state().userPose = pose;
+    script->idle(2);
+    const SampledSlice s = slice(pose);
+    ASSERT_GT(s.dataPixels(), 0u);
+    ASSERT_LT(s.dataPixels(), s.mask.inside.size());
+    const app::WidgetRect r = script->widget("image:user");
+    const auto centreOf = [&](int col, int row) {
+        return glm::vec2(r.min.x + (col + 0.5f) / s.image.width * (r.max.x - r.min.x),
+                         r.min.y + (row + 0.5f) / s.image.height * (r.max.y - r.min.y));
+    };
+    // The first pixel with data and the first without, along the middle row.
+    const int row = s.image.height / 2;
+    int with = -1, without = -1;
+    for (int c = 0; c < s.image.width; ++c) {
+        if (s.mask.at(c, row) && with < 0) with = c;
+        if (!s.mask.at(c, row) && without < 0) without = c;
+    }
+    ASSERT_GE(with, 0);
+    ASSERT_GE(without, 0);
+    script->moveTo(centreOf(with, row));
+    ASSERT_TRUE(app->state().readout.valid);
+    EXPECT_EQ(app->state().readout.col, with);
+    EXPECT_TRUE(app->state().readout.hasData);
+    EXPECT_EQ(app->state().readout.value, s.image.at(with, row));
+    script->moveTo(centreOf(without, row));
+    ASSERT_TRUE(app->state().readout.valid);
+    EXPECT_EQ(app->state().readout.col, without);
+    EXPECT_FALSE(app->state().readout.hasData) << "outside the box: no data, not a 0";
+}
+
 // One App per test: the fixture opens the MRI instead of the knee.
 class MriFileUi : public SliceModeUi {
   protected:

@@ -38,4 +38,18 @@ TEST(PatientDirection, EdgesOfTheSceneViews) {
     EXPECT_EQ(pa.right, ap.left);
 }
 
+TEST(PatientDirection, EdgesOfAnImageFromItsAxes) {
+    // Columns towards the patient's left, rows towards the feet: a coronal image from the front.
+    const auto e = fm::imageEdgeLetters(glm::dvec3{1, 0, 0}, glm::dvec3{0, 0, -1});
+    EXPECT_EQ(e.left, "R");
+    EXPECT_EQ(e.right, "L");
+    EXPECT_EQ(e.top, "S");
+    EXPECT_EQ(e.bottom, "I");
+    // An axial image with rows running posterior: anterior at the top.
+    const auto a = fm::imageEdgeLetters(glm::dvec3{-1, 0, 0}, glm::dvec3{0, 1, 0});
+    EXPECT_EQ(a.top, "A");
+    EXPECT_EQ(a.bottom, "P");
+    EXPECT_EQ(a.left, "L");
+}
+
 }  // namespace
