@@ -4,7 +4,9 @@
 #  2. slice writes the PNG, raw values and mask, the same bytes on a second run;
 #  3. a plane that misses the volume gives an empty slice and a message (exit 0), not NaN;
 #  4. register --slice finds a hidden slice pose (mTRE below 1 mm);
-#  5. nonsensical slice options are refused, naming the option.
+#  5. nonsensical slice options are refused, naming the option;
+#  6. evaluate --slice runs the van de Kraats protocol: one row per start, each start's initial
+#     mTRE inside its bin, the same registrations on a second run.
 set -uo pipefail
 FM=$1
 OUT=$(mktemp -d)
@@ -65,4 +67,24 @@ msg=$("$FM" geometry --slice --center 0,0,0 --film 100x100 2>&1)
 msg=$("$FM" register --reference-pose 0,0,0,0,0,0 --thickness 3 2>&1)
 [ $? -ne 0 ] && grep -q -- "--slice" <<<"$msg" || fail "--thickness without --slice not refused: $msg"
 [ ! -e "$OUT/t.png" ] || fail "a PNG was written for refused options"
+# 6. The slice evaluation (tiny: 1 start per bin, a coarse grid, a small budget).
+for run in a b; do
+    "$FM" evaluate --slice --volume phantom:knee --truth 3,-2,4,20,10,5 --methods cmaes \
+        --starts 1 --size 48x48 --spacing 5 --threads 2 --budget 150 --levels 2,1 \
+        --csv "$OUT/ev-$run.csv" > "$OUT/ev-$run.txt" 2>&1 || fail "evaluate --slice exited $?"
+done
+grep -q "capture range" "$OUT/ev-a.txt" || fail "no capture range: $(cat "$OUT/ev-a.txt")"
+python3 - "$OUT/ev-a.csv" "$OUT/ev-b.csv" <<'PY' || fail "evaluate --slice CSV"
+import csv, sys
+runs = [list(csv.DictReader(open(p))) for p in sys.argv[1:]]
+a, b = runs
+assert len(a) == 4, f"{len(a)} rows, expected one per bin (0-2, 2-5, 5-10, 10-20 mm)"
+for r in a:
+    lo, hi, start = float(r["bin_low_mm"]), float(r["bin_high_mm"]), float(r["start_mtre_mm"])
+    assert lo <= start <= hi, f"start mTRE {start} outside its bin {lo}-{hi}"
+    assert r["success"] == ("1" if float(r["final_mtre_mm"]) < 1.0 else "0"), r
+timeless = lambda rows: [{k: v for k, v in r.items() if "seconds" not in k} for r in rows]
+assert timeless(a) == timeless(b), "two runs with one seed differ"
+PY
+
 echo PASS
