@@ -10,6 +10,6 @@ out vec3 vWorldNormal;
 void main() {
     vec4 world = uModel * vec4(aPosition, 1.0);
     vWorldPosition = world.xyz;
-    vWorldNormal = mat3(uModel) * aNormal;  // the model matrix is a translation (+ uniform scale)
+    vWorldNormal = mat3(uModel) * aNormal;  // the model matrix is rigid (+ uniform scale)
     gl_Position = uViewProjection * world;
 }

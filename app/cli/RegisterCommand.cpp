@@ -10,6 +10,7 @@
 #include <sstream>
 #include <string>
 
+#include "bones/BoneMotion.h"
 #include "bones/BoneRegistration.h"
 #include "bones/BoneScene.h"
 #include "bones/BoneVolume.h"
@@ -102,10 +103,7 @@ void runRegisterBone(const RegisterArgs& a) {
     // The truth: the bone turned about its own centre (world x, then y, then z), then shifted.
     const std::array<double, 6> m = parseSix(a.boneMotion, "--bone-motion");
     const glm::dvec3 centre = fm::boneCentroid(labels.labels, bone);
-    const fm::RigidTransform truth = fm::RigidTransform::translate({m[0], m[1], m[2]}) *
-                                     fm::rotationAbout({0, 0, 1}, m[5], centre) *
-                                     fm::rotationAbout({0, 1, 0}, m[4], centre) *
-                                     fm::rotationAbout({1, 0, 0}, m[3], centre);
+    const fm::RigidTransform truth = fm::boneMotionTransform(m, centre);
     fm::Scene moved = scene;
     moved.object(bone.name).worldFromObject = truth;
     std::vector<fm::Image> references;

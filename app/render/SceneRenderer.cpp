@@ -24,7 +24,6 @@ const glm::vec4 kAxisColors[3] = {
 const glm::vec4 kConeColor{1.00f, 0.85f, 0.30f, 0.85f};
 const glm::vec4 kConeFaceColor{1.00f, 0.85f, 0.30f, 0.07f};
 const glm::vec4 kFilmFrameColor{0.60f, 0.80f, 1.00f, 1.0f};
-const glm::vec3 kBoneColor{0.93f, 0.89f, 0.80f};
 const glm::vec3 kSourceColor{1.00f, 0.80f, 0.20f};
 
 void line(std::vector<LineVertex>& out, glm::vec3 a, glm::vec3 b, glm::vec4 color) {
@@ -108,10 +107,6 @@ SceneRenderer::SceneRenderer()
     : meshShader_("mesh.vert.glsl", "mesh.frag.glsl"),
       lineShader_("line.vert.glsl", "line.frag.glsl"),
       filmShader_("film.vert.glsl", "film.frag.glsl") {
-    glGenVertexArrays(1, &meshVao_);
-    glGenBuffers(1, &meshVbo_);
-    glGenBuffers(1, &meshEbo_);
-
     std::vector<glm::vec3> sphere;
     std::vector<glm::uvec3> sphereTriangles;
     makeSphere(sphere, sphereTriangles);
@@ -153,10 +148,15 @@ SceneRenderer::SceneRenderer()
 }
 
 SceneRenderer::~SceneRenderer() {
-    const GLuint buffers[] = {meshVbo_, meshEbo_, sphereVbo_, sphereEbo_, lineVbo_, filmVbo_};
-    glDeleteBuffers(6, buffers);
-    const GLuint arrays[] = {meshVao_, sphereVao_, lineVao_, filmVao_};
-    glDeleteVertexArrays(4, arrays);
+    for (const GpuMesh& m : meshes_) {
+        const GLuint buffers[] = {m.vbo, m.ebo};
+        glDeleteBuffers(2, buffers);
+        glDeleteVertexArrays(1, &m.vao);
+    }
+    const GLuint buffers[] = {sphereVbo_, sphereEbo_, lineVbo_, filmVbo_};
+    glDeleteBuffers(4, buffers);
+    const GLuint arrays[] = {sphereVao_, lineVao_, filmVao_};
+    glDeleteVertexArrays(3, arrays);
     if (msFbo_) glDeleteFramebuffers(1, &msFbo_);
     if (resolveFbo_) glDeleteFramebuffers(1, &resolveFbo_);
     if (msColor_) glDeleteRenderbuffers(1, &msColor_);
@@ -197,17 +197,26 @@ void SceneRenderer::resize(glm::ivec2 size) {
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
-void SceneRenderer::uploadMesh(const Mesh& mesh, std::uint64_t generation) {
-    if (generation == meshGeneration_) return;
-    meshGeneration_ = generation;
+const SceneRenderer::GpuMesh& SceneRenderer::uploadMesh(std::size_t slot, const Mesh& mesh,
+                                                        std::uint64_t generation) {
+    while (meshes_.size() <= slot) {
+        GpuMesh m;
+        glGenVertexArrays(1, &m.vao);
+        glGenBuffers(1, &m.vbo);
+        glGenBuffers(1, &m.ebo);
+        meshes_.push_back(m);
+    }
+    GpuMesh& gpu = meshes_[slot];
+    if (generation == gpu.generation) return gpu;
+    gpu.generation = generation;
     std::vector<glm::vec3> interleaved;
     interleaved.reserve(mesh.positions.size() * 2);
     for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
         interleaved.push_back(mesh.positions[i]);
         interleaved.push_back(i < mesh.normals.size() ? mesh.normals[i] : glm::vec3(0, 0, 1));
     }
-    glBindVertexArray(meshVao_);
-    glBindBuffer(GL_ARRAY_BUFFER, meshVbo_);
+    glBindVertexArray(gpu.vao);
+    glBindBuffer(GL_ARRAY_BUFFER, gpu.vbo);
     glBufferData(GL_ARRAY_BUFFER, interleaved.size() * sizeof(glm::vec3), interleaved.data(),
                  GL_STATIC_DRAW);
     glEnableVertexAttribArray(0);
@@ -215,16 +224,17 @@ void SceneRenderer::uploadMesh(const Mesh& mesh, std::uint64_t generation) {
     glEnableVertexAttribArray(1);
     glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 2 * sizeof(glm::vec3),
                           reinterpret_cast<void*>(sizeof(glm::vec3)));
-    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, meshEbo_);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, gpu.ebo);
     glBufferData(GL_ELEMENT_ARRAY_BUFFER, mesh.triangles.size() * sizeof(glm::uvec3),
                  mesh.triangles.data(), GL_STATIC_DRAW);
-    meshIndexCount_ = GLsizei(mesh.triangles.size() * 3);
+    gpu.indexCount = GLsizei(mesh.triangles.size() * 3);
     glBindVertexArray(0);
+    return gpu;
 }
 
-void SceneRenderer::draw(const app::LoadedScene* scene, const Mesh* bone,
-                         std::uint64_t boneGeneration, const Pose& pose, const app::View3d& view,
-                         GLuint filmTexture, glm::ivec2 size, bool multisample, bool slicePlane) {
+void SceneRenderer::draw(const app::LoadedScene* scene, const std::vector<SurfaceItem>& surfaces,
+                         const Pose& pose, const app::View3d& view, GLuint filmTexture,
+                         glm::ivec2 size, bool multisample, bool slicePlane) {
     size = glm::max(size, glm::ivec2(16));
     resize(size);
     labels_.clear();
@@ -303,24 +313,28 @@ void SceneRenderer::draw(const app::LoadedScene* scene, const Mesh* bone,
             }
             meshShader_.use();
         }
-        if (view.showBone && bone) {
-            uploadMesh(*bone, boneGeneration);
-            if (slicePlane) {  // translucent, so the plane inside shows through it
-                meshShader_.set("uAlpha", 0.3f);
-                glEnable(GL_BLEND);
-                glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-                glDepthMask(GL_FALSE);
-            }
-            meshShader_.set("uModel", glm::translate(glm::mat4(1.0f), glm::vec3(shift)));
-            meshShader_.set("uColor", kBoneColor);
+        if (slicePlane) {  // translucent, so the plane inside shows through it
+            meshShader_.set("uAlpha", 0.3f);
+            glEnable(GL_BLEND);
+            glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+            glDepthMask(GL_FALSE);
+        }
+        for (std::size_t i = 0; view.showBone && i < surfaces.size(); ++i) {
+            const SurfaceItem& item = surfaces[i];
+            if (!item.mesh) continue;
+            const GpuMesh& gpu = uploadMesh(i, *item.mesh, item.generation);
+            // Isocenter frame of the CT world: shifted; each bone first moved by its pose.
+            const glm::dmat4 model = glm::translate(glm::dmat4(1.0), shift) * item.worldFromObject;
+            meshShader_.set("uModel", glm::mat4(model));
+            meshShader_.set("uColor", item.color);
             meshShader_.set("uAmbient", 0.25f);
-            glBindVertexArray(meshVao_);
-            glDrawElements(GL_TRIANGLES, meshIndexCount_, GL_UNSIGNED_INT, nullptr);
-            if (slicePlane) {
-                meshShader_.set("uAlpha", 1.0f);
-                glDepthMask(GL_TRUE);
-                glDisable(GL_BLEND);
-            }
+            glBindVertexArray(gpu.vao);
+            glDrawElements(GL_TRIANGLES, gpu.indexCount, GL_UNSIGNED_INT, nullptr);
+        }
+        if (slicePlane) {
+            meshShader_.set("uAlpha", 1.0f);
+            glDepthMask(GL_TRUE);
+            glDisable(GL_BLEND);
         }
         const bool apparatus = view.showApparatus && !slicePlane;
         if (apparatus) {

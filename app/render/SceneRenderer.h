@@ -15,6 +15,7 @@
 #include "mesh/Mesh.h"
 #include "platform/Gl.h"
 #include "render/Shader.h"
+#include "render/SurfaceItem.h"
 #include "state/AppState.h"
 
 namespace fm::app {
@@ -39,12 +40,11 @@ class SceneRenderer {
     // Draws into the offscreen texture of the given size (re-created when the size changes).
     // `filmTexture` is the user's DRR (0: a blank film). Restores the default framebuffer.
     // `multisample` false draws straight into the shown texture (fast while interacting).
-    // `bone` (may be null) is the surface to show; it is uploaded again only when
-    // `boneGeneration` changes.
+    // `surfaces` are the bone surfaces to show (one, or one per bone, each in its colour).
     // `slicePlane` (the MRI slice mode): instead of source, film and rays, the slice plane of
     // `pose` where it cuts the volume's box, textured with the user's slice, and the surface
     // translucent so the plane shows through it.
-    void draw(const app::LoadedScene* scene, const Mesh* bone, std::uint64_t boneGeneration,
+    void draw(const app::LoadedScene* scene, const std::vector<SurfaceItem>& surfaces,
               const Pose& pose, const app::View3d& view, GLuint filmTexture, glm::ivec2 size,
               bool multisample = true, bool slicePlane = false);
 
@@ -57,8 +57,13 @@ class SceneRenderer {
 
   private:
     void resize(glm::ivec2 size);
-
-    void uploadMesh(const Mesh& mesh, std::uint64_t generation);
+    struct GpuMesh {
+        GLuint vao = 0, vbo = 0, ebo = 0;
+        GLsizei indexCount = 0;
+        std::uint64_t generation = 0;
+    };
+    // The GPU copy of surface `slot`, uploaded when its generation changed.
+    const GpuMesh& uploadMesh(std::size_t slot, const Mesh& mesh, std::uint64_t generation);
 
     ShaderProgram meshShader_, lineShader_, filmShader_;
     glm::ivec2 size_{0};
@@ -66,9 +71,7 @@ class SceneRenderer {
     GLuint msFbo_ = 0, msColor_ = 0, msDepth_ = 0;  // multisampled target
     GLuint resolveFbo_ = 0, resolveTexture_ = 0;    // what the UI shows
     GLuint resolveDepth_ = 0;                       // for single-sample drawing
-    GLuint meshVao_ = 0, meshVbo_ = 0, meshEbo_ = 0;
-    GLsizei meshIndexCount_ = 0;
-    std::uint64_t meshGeneration_ = 0;
+    std::vector<GpuMesh> meshes_;
     GLuint sphereVao_ = 0, sphereVbo_ = 0, sphereEbo_ = 0;
     GLsizei sphereIndexCount_ = 0;
     GLuint lineVao_ = 0, lineVbo_ = 0;

@@ -13,8 +13,8 @@ ProjectionGeometry appGeometry(const LoadedScene& scene, const Pose& pose, int d
 }
 
 DrrRender DrrCache::get(const LoadedScene& scene, const Pose& pose, int downsample, DrrTrace trace,
-                        int threads, ImagingMode mode) {
-    const DrrKey key{scene.generation, pose.toArray(), downsample, trace, mode};
+                        int threads, ImagingMode mode, const ObjectStates& objects) {
+    const DrrKey key{scene.generation, pose.toArray(), downsample, trace, mode, objects};
     auto hit =
         std::find_if(entries_.begin(), entries_.end(), [&](const auto& e) { return e.key == key; });
     if (hit != entries_.end()) {
@@ -35,8 +35,15 @@ DrrRender DrrCache::get(const LoadedScene& scene, const Pose& pose, int downsamp
         SampledSlice slice = renderAppSlice(scene, pose, downsample, threads);
         image = std::move(slice.image);
         dataMask = std::move(slice.mask);
-    } else {
+    } else if (objects.empty() || !scene.bones) {
         image = renderDrr(*scene.drrVolume, appGeometry(scene, pose, downsample), options);
+    } else {
+        XrayRenderSettings settings;
+        settings.threads = threads;
+        settings.trace = trace;
+        settings.approxStepMm = options.approxStepMm;
+        image = renderObjects(*scene.bones, objects, appGeometry(scene, pose, downsample),
+                              settings);
     }
     const double ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();

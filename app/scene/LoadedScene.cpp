@@ -87,13 +87,15 @@ std::shared_ptr<LoadedScene> buildScene(const std::string& spec, const SceneProg
     } catch (const Error&) {
         scene->bonePoints.clear();  // no voxel reaches the bone level: no mTRE, no random pose
     }
-    progress("preparing slices", 0.97f);
+    progress("preparing slices", 0.96f);
     scene->sliceSetup = defaultSliceSetup(*volume);
     try {
         scene->foregroundPoints = foregroundTargetPoints(*volume);
     } catch (const Error&) {
         scene->foregroundPoints.clear();  // a constant volume: no slice mTRE
     }
+    progress("cutting the bones apart", 0.97f);
+    scene->bones = buildSceneBones(spec, *volume, appDrrValueOptions(*volume), scene->isoValue);
     progress("done", 1.0f);
 
     const auto range = std::minmax_element(volume->values.begin(), volume->values.end());

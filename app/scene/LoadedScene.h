@@ -13,6 +13,7 @@
 #include "mesh/Mesh.h"
 #include "slice/SliceGeometry.h"
 #include "slice/SliceSampler.h"
+#include "scene/SceneBones.h"
 #include "volume/Volume.h"
 
 namespace fm::app {
@@ -30,6 +31,7 @@ struct LoadedScene {
     std::array<glm::dvec3, 8> boxCorners{};  // voxel-box corners, world mm (bit i: +i axis)
     double translationRangeMm = 100.0;       // slider range for the offsets
     std::vector<glm::dvec3> bonePoints;      // mTRE targets (engine/match); empty if no bone
+    std::shared_ptr<const SceneBones> bones;  // its bones as objects (the knee phantom), or null
     double loadSeconds = 0.0, prepareSeconds = 0.0, meshSeconds = 0.0;
     std::string summary;  // one line for the UI: size and spacing
     // The MRI slice mode (scene/SliceImages.h): the volume for trilinear slicing, the slice

@@ -75,11 +75,17 @@ double sceneMtre(const LoadedScene& scene, const Pose& reference, const Pose& ca
 
 MatchOutcome evaluateMatch(const LoadedScene& scene, const Pose& user, const Pose& reference,
                            const Image& userDrr, const Image& referenceDrr) {
-    MatchOutcome m;
-    m.poseErrorMm = sceneMtre(scene, reference, user);
-    m.judged = judgeMatch(reference, user, m.poseErrorMm);
-    m.matched = m.judged.match;
+    const double mtre = sceneMtre(scene, reference, user);
+    MatchOutcome m = outcomeOf(judgeMatch(reference, user, mtre));
     m.ncc = imageAgreement(referenceDrr, userDrr);
+    return m;
+}
+
+MatchOutcome outcomeOf(const MatchVerdict& verdict) {
+    MatchOutcome m;
+    m.judged = verdict;
+    m.poseErrorMm = verdict.mtreMm;
+    m.matched = m.judged.match;
     for (int p = 0; p < kParameterCount; ++p) {
         const ParameterHint& h = m.judged.hints[p];
         m.error[p] = h.error;

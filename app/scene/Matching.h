@@ -33,6 +33,9 @@ MatchTolerancesView matchTolerances();
 MatchOutcome evaluateMatch(const LoadedScene& scene, const Pose& user, const Pose& reference,
                            const Image& userDrr, const Image& referenceDrr);
 
+// The outcome of a verdict (errors, directions, the furthest parameter); texts by wordOutcome.
+MatchOutcome outcomeOf(const MatchVerdict& verdict);
+
 // mTRE of `candidate` against `reference` over the scene's bone points (0 without any).
 double sceneMtre(const LoadedScene& scene, const Pose& reference, const Pose& candidate);
 

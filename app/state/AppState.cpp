@@ -16,6 +16,15 @@ std::array<ParameterSpec, kParameterCount> parameterSpecs(double translationRang
              {"rotation", "deg", -90.0, 90.0}}};
 }
 
+std::array<ParameterSpec, kParameterCount> boneMotionSpecs() {
+    return {{{"x shift", "mm", -50.0, 50.0},
+             {"y shift", "mm", -50.0, 50.0},
+             {"z shift", "mm", -50.0, 50.0},
+             {"turn x", "deg", -120.0, 120.0},
+             {"turn y", "deg", -90.0, 90.0},
+             {"turn z", "deg", -90.0, 90.0}}};
+}
+
 void checkPoseWithinSliders(const Pose& pose, double translationRangeMm, const std::string& what) {
     const auto specs = parameterSpecs(translationRangeMm);
     const auto values = pose.toArray();

@@ -164,6 +164,9 @@ struct Requests {
     bool remesh = false;  // rebuild the bone surface at BoneSurface::level
     std::optional<std::string> loadVolume;
     std::optional<ImagingMode> mode;  // switch X-ray / MRI slice (a new reference in that mode)
+    bool newFlex = false;    // start the flex game, or draw another hidden flexion
+    bool checkFlex = false;  // judge the tibia's motion against the hidden one
+    bool endFlex = false;
 };
 
 // The bone surface of the 3D view: the level the user asks for, and what is shown.
@@ -173,6 +176,54 @@ struct BoneSurface {
     double shownLevel = 0.0;                 // the level of the surface drawn
     std::size_t triangles = 0;               // ... and its size
 };
+
+// One bone of the scene in the bone list (app/scene/SceneBones: the articulated knee).
+struct BoneView {
+    std::string name;
+    std::array<float, 3> color{};  // its surface's colour in the 3D view, and its list swatch
+    bool visible = true;           // shown in both DRRs and in the 3D view
+    // Its motion from where the CT has it (engine/bones BoneMotion: tx, ty, tz mm; turns about
+    // world x, y, z deg through the bone's pivot), edited by the sliders when it is their target.
+    std::array<double, 6> motion{};
+};
+
+// The flex game: the hidden reference moves the tibia relative to the femur (the knee flexed);
+// the user moves the tibia to find that motion, judged on the Grood-Suntay angles.
+struct FlexGame {
+    bool active = false;
+    Difficulty difficulty = Difficulty::Easy;
+    std::array<double, 6> hiddenMotion{};  // the reference tibia's motion (BoneMotion)
+    // The reference knee's angles (engine kneeAngleArray order: 3 mm, then 3 deg).
+    std::array<double, 6> referenceAngles{};
+    bool revealed = false;
+    int attempts = 0;
+    std::optional<MatchOutcome> outcome;  // the last Check, worded like the camera game's
+    bool outcomeIsStale = false;          // the tibia moved since
+    std::array<double, 6> tibiaAtCheck{};  // ... from this motion
+};
+
+struct BonesState {
+    std::vector<BoneView> list;  // empty: the CT is one object
+    bool restVisible = true;     // everything that is not one of the bones (soft tissue)
+    int sliderTarget = -1;       // -1: the camera (the 2011 parameters); else a bone of `list`
+    bool isKnee = false;         // femur and tibia with anatomical frames: joint angles
+    bool anglesValid = false;
+    // The user's knee, live (kneeAngleArray order: medial shift, anterior drawer, distraction
+    // mm; flexion, varus, internal rotation deg).
+    std::array<double, 6> angles{};
+    FlexGame flex;
+};
+
+// Bone surfaces and swatches, in the order of the bones.
+inline constexpr std::array<std::array<float, 3>, 6> kBoneColors{{{0.93f, 0.89f, 0.80f},
+                                                                   {0.55f, 0.75f, 0.98f},
+                                                                   {0.98f, 0.62f, 0.42f},
+                                                                   {0.60f, 0.90f, 0.55f},
+                                                                   {0.85f, 0.62f, 0.92f},
+                                                                   {0.95f, 0.85f, 0.40f}}};
+
+// The slider ranges of a bone's motion (shifts along and turns about the world axes).
+std::array<ParameterSpec, kParameterCount> boneMotionSpecs();
 
 struct AppState {
     // Chosen on load (slices for an MRI file, X-rays otherwise) and by the user.
@@ -208,6 +259,7 @@ struct AppState {
     LoadStatus load;
     Timings timings;
     SolveStatus solve;
+    BonesState bones;
 
     bool interacting = false;         // a parameter slider is being dragged: coarse preview
     bool coarseWhileDragging = true;  // off: exact DRRs even while dragging (for measuring)

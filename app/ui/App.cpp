@@ -94,6 +94,7 @@ void App::installLoadResult(SceneLoader::Result result) {
     state_.bone.maxLevel = std::max(scene_->maxValue, scene_->minValue + 1.0f);
     state_.bone.level = static_cast<float>(scene_->isoValue);
     showBone(scene_->mesh, scene_->isoValue);
+    installBones();
     state_.timings.meshMs = scene_->meshSeconds * 1000.0;
     for (int a = 0; a < 3; ++a)
         state_.userPose.offset[a] = std::clamp(
@@ -122,7 +123,11 @@ void App::showBone(std::shared_ptr<const Mesh> mesh, double level) {
     bone_ = std::move(mesh);
     ++boneGeneration_;
     state_.bone.shownLevel = level;
-    state_.bone.triangles = bone_ ? bone_->triangleCount() : 0;
+    state_.bone.triangles = 0;
+    if (scene_ && scene_->bones)
+        for (const auto& b : boneSurfaces_) state_.bone.triangles += b ? b->triangleCount() : 0;
+    else
+        state_.bone.triangles = bone_ ? bone_->triangleCount() : 0;
 }
 
 void App::remesh() {
@@ -133,8 +138,15 @@ void App::remesh() {
     options.threads = options_.drrThreads;
     const auto start = std::chrono::steady_clock::now();
     std::shared_ptr<const Mesh> mesh;
+    std::vector<std::shared_ptr<const Mesh>> boneSurfaces;
     try {
-        mesh = std::make_shared<const Mesh>(marchingCubes(*scene_->volume, options));
+        // With bones, each bone's own surface (its volume alone); otherwise the CT's.
+        if (scene_->bones)
+            for (const SceneBone& b : scene_->bones->bones)
+                boneSurfaces.push_back(
+                    std::make_shared<const Mesh>(marchingCubes(*b.volume, options)));
+        else
+            mesh = std::make_shared<const Mesh>(marchingCubes(*scene_->volume, options));
     } catch (const Error& e) {  // e.g. more vertices than 32-bit indices hold: keep the old one
         state_.load.error = e.what();
         state_.bone.level = static_cast<float>(state_.bone.shownLevel);
@@ -143,6 +155,7 @@ void App::remesh() {
     state_.timings.meshMs =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     ++remeshes_;
+    if (scene_->bones) boneSurfaces_ = std::move(boneSurfaces);
     showBone(std::move(mesh), options.isoValue);
 }
 
@@ -288,17 +301,23 @@ void App::processRequests() {
         recordAttempt(std::move(outcome));
     } else if (requests.match && scene_) {
         // Judge the exact images, whatever the preview showed.
-        const Image user =
-            userCache_.get(*scene_, state_.userPose, 1, DrrTrace::Exact, options_.drrThreads).image;
-        const Image reference =
-            referenceCache_
-                .get(*scene_, state_.referencePose, 1, DrrTrace::Exact, options_.drrThreads)
-                .image;
+        const Image user = userCache_
+                               .get(*scene_, state_.userPose, 1, DrrTrace::Exact,
+                                    options_.drrThreads, ImagingMode::Xray, userObjects())
+                               .image;
+        const Image reference = referenceCache_
+                                    .get(*scene_, state_.referencePose, 1, DrrTrace::Exact,
+                                         options_.drrThreads, ImagingMode::Xray,
+                                         referenceObjects())
+                                    .image;
         ++state_.attempts;
         MatchOutcome outcome =
             evaluateMatch(*scene_, state_.userPose, state_.referencePose, user, reference);
         recordAttempt(std::move(outcome));
     }
+    if (requests.endFlex) state_.bones.flex = FlexGame{};
+    if (requests.newFlex) newFlex();
+    if (requests.checkFlex) checkFlex();
     refreshMatchTexts();
 }
 
@@ -315,6 +334,10 @@ void App::refreshMatchTexts() {
     if (state_.match)
         wordOutcome(*state_.match, state_.hintWording,
                     state_.match->matched || state_.referenceRevealed);
+    const FlexGame& flex = state_.bones.flex;
+    if (flex.outcome)
+        wordOutcome(*state_.bones.flex.outcome, state_.hintWording,
+                    flex.outcome->matched || flex.revealed);
 }
 
 ImageEdgeLetters App::edgeLetters(const Pose& pose) const {
@@ -331,17 +354,19 @@ void App::updateImages() {
     if (!scene_) return;
     const int threads = options_.drrThreads;
     const ImagingMode mode = state_.mode;
-    const DrrKey referenceKey{scene_->generation, state_.referencePose.toArray(), 1,
-                              DrrTrace::Exact, mode};
+    const Pose& referencePose = referenceCamera();
+    const ObjectStates referenceObjectStates = referenceObjects();
+    const DrrKey referenceKey{scene_->generation, referencePose.toArray(), 1, DrrTrace::Exact,
+                              mode, referenceObjectStates};
     if (referenceKey_ != referenceKey) {
-        DrrRender r =
-            referenceCache_.get(*scene_, state_.referencePose, 1, DrrTrace::Exact, threads, mode);
+        DrrRender r = referenceCache_.get(*scene_, referencePose, 1, DrrTrace::Exact, threads,
+                                          mode, referenceObjectStates);
         referenceDrr_ = std::move(r.image);
         referenceDataMask_ = std::move(r.dataMask);
         state_.timings.referenceDrrMs = r.milliseconds;
         referenceKey_ = referenceKey;
         ++referenceVersion_;
-        state_.referenceEdges = edgeLetters(state_.referencePose);
+        state_.referenceEdges = edgeLetters(referencePose);
     }
 
     // While a slider is dragged: a coarser film and sampled rays; exact again on release.
@@ -349,9 +374,12 @@ void App::updateImages() {
     const int factor = coarse ? state_.timings.coarseFactor : 1;
     const DrrTrace trace = DrrTrace::Exact;
     const Pose& userPose = shownUserPose();
-    const DrrKey userKey{scene_->generation, userPose.toArray(), factor, trace, mode};
+    const ObjectStates userObjectStates = userObjects();
+    const DrrKey userKey{scene_->generation, userPose.toArray(), factor, trace, mode,
+                         userObjectStates};
     if (userKey_ != userKey) {
-        DrrRender r = userCache_.get(*scene_, userPose, factor, trace, threads, mode);
+        DrrRender r =
+            userCache_.get(*scene_, userPose, factor, trace, threads, mode, userObjectStates);
         userDrr_ = std::move(r.image);
         userDataMask_ = std::move(r.dataMask);
         state_.timings.userDrrMs = r.milliseconds;
@@ -383,7 +411,8 @@ void App::updateImages() {
         userDrr_.width == referenceDrr_.width
             ? referenceDrr_
             : referenceCache_
-                  .get(*scene_, state_.referencePose, factor, DrrTrace::Exact, threads, mode)
+                  .get(*scene_, referencePose, factor, DrrTrace::Exact, threads, mode,
+                       referenceObjectStates)
                   .image;
     std::vector<std::uint8_t> rgba;
     switch (state_.display.compare) {
@@ -434,6 +463,7 @@ void App::frame() {
     ui_.draw(state_, textures);
 
     processRequests();
+    updateBones();
     updateImages();
 
     // The 3D view is redrawn only when something it shows changed; while the user drags a
@@ -455,11 +485,12 @@ void App::frame() {
                             shownKey_.window,
                             shownKey_.level,
                             fast,
-                            state_.mode};
+                            state_.mode,
+                            userObjects()};
     if (sceneKey != sceneKey_) {
-        sceneRenderer_->draw(scene_.get(), bone_.get(), boneGeneration_, state_.userPose,
-                             state_.view, userTexture_->empty() ? 0 : userTexture_->id(),
-                             ui_.sceneViewSize(), !fast, state_.mode == ImagingMode::Slice);
+        sceneRenderer_->draw(scene_.get(), surfaces(), state_.userPose, state_.view,
+                             userTexture_->empty() ? 0 : userTexture_->id(), ui_.sceneViewSize(),
+                             !fast, state_.mode == ImagingMode::Slice);
         sceneKey_ = sceneKey;
         ++sceneDraws_;
     }

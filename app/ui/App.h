@@ -12,6 +12,7 @@
 #include "platform/RenderBackend.h"
 #include "render/ImageDisplay.h"
 #include "render/Screenshot.h"
+#include "render/SurfaceItem.h"
 #include "scene/DrrCache.h"
 #include "scene/SceneLoader.h"
 #include "scene/Solver.h"
@@ -60,7 +61,11 @@ class App {
     int exactUserRenders() const { return exactUserRenders_; }
     int coarseUserRenders() const { return coarseUserRenders_; }
     int sceneDraws() const { return sceneDraws_; }  // how often the 3D view was redrawn
-    const Mesh* boneMesh() const { return bone_.get(); }
+    const Mesh* boneMesh() const { return bone_.get(); }  // null when the scene has bones
+    // With bones: each bone's surface (the order of the bone list).
+    const std::vector<std::shared_ptr<const Mesh>>& boneSurfaces() const { return boneSurfaces_; }
+    // The surfaces the 3D view draws (one per shown bone, or the CT's one surface).
+    std::vector<render::SurfaceItem> surfaces() const;
     int remeshes() const { return remeshes_; }  // surfaces built for a new bone level
     const Solver& solver() const { return solver_; }
     // The pose whose DRR the user pane shows: the solver's best so far while it runs.
@@ -81,6 +86,14 @@ class App {
     void pollSolver();
     void showBone(std::shared_ptr<const Mesh> mesh, double level);
     void remesh();
+    // AppBones.cpp: the bones of the scene (shown, moved), the joint angles and the flex game.
+    void installBones();
+    ObjectStates userObjects() const;       // the user's DRR: the list's visibility and motions
+    ObjectStates referenceObjects() const;  // the reference: unmoved, or the hidden flexion
+    const Pose& referenceCamera() const;    // the flex game's reference follows the user's camera
+    void updateBones();                     // live joint angles, once per frame
+    void newFlex();
+    void checkFlex();
 
     RenderBackend& backend_;
     AppOptions options_;
@@ -90,6 +103,8 @@ class App {
     std::shared_ptr<LoadedScene> scene_;
     // The bone surface shown: the scene's until the user picks another level.
     std::shared_ptr<const Mesh> bone_;
+    // With bones: their surfaces (the scene's until the user picks another level), same order.
+    std::vector<std::shared_ptr<const Mesh>> boneSurfaces_;
     std::uint64_t boneGeneration_ = 0;  // changes with every new surface (GPU upload key)
     int remeshes_ = 0;
     DrrCache referenceCache_{2}, userCache_{6};
@@ -119,6 +134,7 @@ class App {
         float window = 0, level = 0;
         bool fast = false;
         ImagingMode mode = ImagingMode::Xray;
+        ObjectStates objects;  // the bones shown and their poses
         bool operator==(const SceneKey&) const = default;
     } sceneKey_;
     int sceneDraws_ = 0;

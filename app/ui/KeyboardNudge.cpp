@@ -36,8 +36,8 @@ void Ui::keyboard(AppState& state) {
     const int direction = (pressed(ImGuiKey_RightArrow) ? 1 : 0) -
                           (pressed(ImGuiKey_LeftArrow) ? 1 : 0);
     if (direction == 0) return;
-    const auto specs = parameterSpecs(state.translationRangeMm);
-    double& value = widgets::poseValue(state.userPose, selected);
+    const auto specs = widgets::sliderSpecs(state);
+    double& value = widgets::sliderValue(state, selected);
     const double step = io.KeyShift ? kFineStep : kStep;
     // On the 0.1 grid, so that nudges add up exactly as shown.
     const double nudged = std::round((value + direction * step) * 10.0) / 10.0;

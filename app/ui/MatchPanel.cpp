@@ -25,6 +25,12 @@ void Ui::matchPane(AppState& state, const Pane& pane) {
             solveSection(state);
             ImGui::EndTabItem();
         }
+        const bool bones = ImGui::BeginTabItem("Bones");
+        record("tab:bones");
+        if (bones) {
+            bonesTab(state);
+            ImGui::EndTabItem();
+        }
         ImGui::EndTabBar();
     }
     ImGui::End();

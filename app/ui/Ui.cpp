@@ -193,7 +193,9 @@ void Ui::drawSceneLabels(const std::vector<std::pair<glm::vec2, std::string>>& l
 
 void Ui::parameterPane(AppState& state, const Pane& pane) {
     beginPane("Parameters", pane);
-    const auto specs = parameterSpecs(state.translationRangeMm);
+    const auto specs = sliderSpecs(state);
+    const int target = state.bones.sliderTarget;
+    const bool movingBone = target >= 0 && target < int(state.bones.list.size());
     const float labelWidth = ImGui::CalcTextSize("elevation ").x;
     const float inputWidth =
         ImGui::CalcTextSize("-0000.00").x + 2 * ImGui::GetStyle().FramePadding.x;
@@ -204,7 +206,7 @@ void Ui::parameterPane(AppState& state, const Pane& pane) {
     for (int p = 0; p < kParameterCount; ++p) {
         const ParameterSpec& spec = specs[p];
         const std::string id = idName(spec.name);
-        double& value = poseValue(state.userPose, p);
+        double& value = sliderValue(state, p);
         const double before = value;
         ImGui::PushID(p);
         ImGui::AlignTextToFramePadding();
@@ -242,13 +244,29 @@ void Ui::parameterPane(AppState& state, const Pane& pane) {
         value = std::clamp(value, spec.min, spec.max);
         if (value != before) state.matchIsStale = true;
     }
-    if (ImGui::Button("Centre pose")) {
-        state.userPose = Pose{};
-        state.matchIsStale = true;
+    if (movingBone) {
+        // The sliders move one bone: name it, and give the knee's angles live while it moves.
+        if (ImGui::Button("Rest")) state.bones.list[target].motion = {};
+        record("button:bone-rest");
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("Put the bone back where the CT has it");
+        ImGui::SameLine();
+        const auto& c = state.bones.list[target].color;
+        ImGui::TextColored(ImVec4(c[0], c[1], c[2], 1.0f), "moving: %s",
+                           state.bones.list[target].name.c_str());
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("Shifts along and turns about the LPS axes, through the bone's "
+                              "pivot (femur, tibia: the knee's flexion axis). Bones tab: the "
+                              "camera again");
+        kneeAnglesLine(state);
+    } else {
+        if (ImGui::Button("Centre pose")) {
+            state.userPose = Pose{};
+            state.matchIsStale = true;
+        }
+        record("button:centre-pose");
+        ImGui::SameLine();
+        ImGui::TextColored(kDim, "frame: LPS mm");
     }
-    record("button:centre-pose");
-    ImGui::SameLine();
-    ImGui::TextColored(kDim, "frame: LPS mm");
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Offsets in the patient frame LPS: +x Left, +y Posterior, +z "
                           "Superior (DICOM, ITK).\n3D Slicer's RAS is the same with x and y "

@@ -57,7 +57,9 @@ class Ui {
     void comparePane(AppState& state, const Pane& pane, unsigned texture);
     void matchPane(AppState& state, const Pane& pane);
     void matchTab(AppState& state);      // MatchPanel.cpp: the user's attempts ...
-    void solveSection(AppState& state);  // SolvePanel.cpp: ... and the computer's
+    void solveSection(AppState& state);  // SolvePanel.cpp
+    void bonesTab(AppState& state);      // BonesPanel.cpp: the bone list and the flex game
+    void kneeAnglesLine(const AppState& state);  // BonesPanel.cpp: Grood-Suntay, live: ... and the computer's
     void helpWindow(AppState& state);    // HelpWindow.cpp
     void modeSwitch(AppState& state);    // ModeSwitch.cpp: X-ray / MRI slice
     void keyboard(AppState& state);      // KeyboardNudge.cpp: arrows, Enter, Escape

@@ -17,6 +17,19 @@ void poseLine(const Pose& pose) {
                 pose.offset.z, pose.azimuthDeg, pose.elevationDeg, pose.rotationDeg);
 }
 
+std::array<ParameterSpec, kParameterCount> sliderSpecs(const AppState& state) {
+    const int target = state.bones.sliderTarget;
+    if (target >= 0 && target < int(state.bones.list.size())) return boneMotionSpecs();
+    return parameterSpecs(state.translationRangeMm);
+}
+
+double& sliderValue(AppState& state, int parameter) {
+    const int target = state.bones.sliderTarget;
+    if (target >= 0 && target < int(state.bones.list.size()))
+        return state.bones.list[target].motion[parameter];
+    return poseValue(state.userPose, parameter);
+}
+
 double& poseValue(Pose& pose, int parameter) {
     switch (parameter) {
         case 0:

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "geometry/Pose.h"
+#include "state/AppState.h"
 #include "ui/Layout.h"
 
 namespace fm::app::widgets {
@@ -30,6 +31,10 @@ bool beginPane(const char* title, const Pane& pane);
 void poseLine(const Pose& pose);
 // The parameter (Pose::toArray() order) as a reference into the pose.
 double& poseValue(Pose& pose, int parameter);
+// The six slider rows: the camera's parameters, or the motion of the bone they target.
+std::array<ParameterSpec, kParameterCount> sliderSpecs(const AppState& state);
+// The value slider `parameter` edits: the user's pose, or the target bone's motion.
+double& sliderValue(AppState& state, int parameter);
 // A bullet whose text wraps at the window edge (BulletText does not wrap).
 void bulletWrapped(const char* format, ...) IM_FMTARGS(1);
 // Dimmed text that wraps.

@@ -31,6 +31,7 @@ class HeadlessApp : public ::testing::Test {
     void start(const app::AppOptions& options, glm::ivec2 size = {960, 600}) {
         script.reset();
         app.reset();
+        backend.reset();  // its destructor releases the current context: before the new one
         backend = app::createOsmesaBackend(size);
         app = std::make_unique<app::App>(*backend, options);
         app->waitForLoad();

@@ -37,7 +37,17 @@ TEST_F(GoldenUi, HelpWindow) {
     EXPECT_TRUE(matchesGolden(app->capture(), "ui_help"));
 }
 
-// The 3D view alone (bone, CT box and axes, source, film, cone) from two camera angles.
+// One bone hidden: the Bones tab with the femur unticked, both DRRs and the 3D view without it.
+TEST_F(GoldenUi, BonesTabWithTheFemurHidden) {
+    script->clickWidget("tab:bones");
+    script->clickWidget("checkbox:bone-femur");
+    script->idle(1);
+    ASSERT_FALSE(app->state().bones.list.at(0).visible);
+    EXPECT_TRUE(matchesGolden(app->capture(), "ui_bones_femur_hidden"));
+}
+
+// The 3D view alone (bones in their colours, CT box and axes, source, film, cone) from two
+// camera angles.
 void expectSceneGolden(app::App& app, const app::View3d& view, const std::string& name) {
     app.state().view = view;
     app.frame();

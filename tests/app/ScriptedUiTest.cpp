@@ -72,9 +72,15 @@ double grabTolerance(const app::WidgetRect& rect) {
 using ScriptedUi = HeadlessApp;
 
 TEST_F(ScriptedUi, DraggingTheBoneLevelRebuildsTheSurfaceOnceOnRelease) {
-    const Mesh* before = app->boneMesh();
-    ASSERT_NE(before, nullptr);
-    EXPECT_EQ(before->triangleCount(), app->scene()->mesh->triangleCount());
+    // The knee phantom's bones have a surface each (their own volumes, docs/bones.md).
+    const auto& bones = app->scene()->bones->bones;
+    ASSERT_EQ(app->boneSurfaces().size(), bones.size());
+    std::size_t before = 0;
+    for (std::size_t i = 0; i < bones.size(); ++i) {
+        EXPECT_EQ(app->boneSurfaces()[i], bones[i].mesh);
+        before += bones[i].mesh->triangleCount();
+    }
+    EXPECT_EQ(app->state().bone.triangles, before);
     EXPECT_EQ(app->state().bone.shownLevel, 300.0);
     const int drawsBefore = app->sceneDraws();
     // Drag the level to the right: 5 units per pixel, so 40 px is about +200.
@@ -85,20 +91,35 @@ TEST_F(ScriptedUi, DraggingTheBoneLevelRebuildsTheSurfaceOnceOnRelease) {
     EXPECT_GT(asked, 300.0f + 100.0f);
     EXPECT_EQ(app->remeshes(), 1) << "one surface for the whole drag, built on release";
     EXPECT_EQ(app->state().bone.shownLevel, double(asked));
-    // The shown surface is marching cubes at the new level (independently computed here).
+    // The shown surfaces are marching cubes of each bone at the new level (computed here).
     MarchingCubesOptions options;
     options.isoValue = asked;
-    const Mesh expected = marchingCubes(*app->scene()->volume, options);
-    ASSERT_NE(app->boneMesh(), nullptr);
-    EXPECT_EQ(app->boneMesh()->triangleCount(), expected.triangleCount());
+    std::size_t after = 0;
+    ASSERT_EQ(app->boneSurfaces().size(), bones.size());
+    for (std::size_t i = 0; i < bones.size(); ++i) {
+        const Mesh expected = marchingCubes(*bones[i].volume, options);
+        EXPECT_EQ(app->boneSurfaces()[i]->triangleCount(), expected.triangleCount());
+        after += expected.triangleCount();
+    }
     // At ~500 the phantom's cortex (1000+) is a shell around the softer marrow: another surface.
-    EXPECT_NE(expected.triangleCount(), before->triangleCount());
-    EXPECT_EQ(app->state().bone.triangles, expected.triangleCount());
+    EXPECT_NE(after, before);
+    EXPECT_EQ(app->state().bone.triangles, after);
     EXPECT_GT(app->sceneDraws(), drawsBefore) << "the 3D view shows the new surface";
     // Asking again for the level already shown costs nothing.
     app->state().requests.remesh = true;
     script->idle(1);
     EXPECT_EQ(app->remeshes(), 1);
+}
+
+TEST_F(ScriptedUi, ACtWithoutBonesShowsItsOneSurface) {
+    app->state().requests.loadVolume = std::string("phantom:sphere,radius=20");
+    app->waitForLoad();
+    script->idle(1);
+    ASSERT_EQ(app->scene()->bones, nullptr) << "only the knee phantom is cut into bones";
+    ASSERT_NE(app->boneMesh(), nullptr);
+    EXPECT_EQ(app->boneMesh(), app->scene()->mesh.get());
+    EXPECT_EQ(app->state().bone.triangles, app->scene()->mesh->triangleCount());
+    EXPECT_TRUE(app->state().bones.list.empty());
 }
 
 TEST_F(ScriptedUi, DraggingTheAzimuthSliderChangesItAndRerendersTheUserDrr) {

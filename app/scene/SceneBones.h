@@ -1,0 +1,75 @@
+#pragma once
+// The bones of a loaded scene, each its own object (engine/bones): for the knee phantom the
+// articulated knee (femur, tibia with fibula, patella; the soft tissue as "rest") with the
+// anatomical frames of femur and tibia. Built with the scene, then shared read-only; what the
+// user does with them (shown, moved) is plain data in AppState::bones.
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "bones/BoneMotion.h"
+#include "bones/KneeMotionGame.h"
+#include "core/Image.h"
+#include "mesh/Mesh.h"
+#include "scene/Scene.h"
+#include "state/AppState.h"
+#include "volume/Volume.h"
+
+namespace fm::app {
+
+struct SceneBone {
+    std::string name;
+    std::shared_ptr<const Volume> volume;  // the bone alone: CT cropped, air around
+    std::shared_ptr<const Mesh> mesh;      // its surface at the scene's level (world mm at rest)
+    glm::dvec3 pivot{0.0};                 // where the sliders' turns are centred
+    std::vector<glm::dvec3> targets;       // mTRE points, in its own frame
+};
+
+struct SceneBones {
+    std::vector<SceneBone> bones;
+    Scene scene;  // one object per bone (the same order), then "rest"
+    std::optional<KneeJoint> knee;
+    int femur = -1, tibia = -1;  // indices into bones (knee)
+};
+
+// The articulated knee of the phantom named `spec` ("phantom:knee[,options]"), or null for any
+// other volume. `ct` is that phantom; `iso` the surface level.
+std::shared_ptr<const SceneBones> buildSceneBones(const std::string& spec, const Volume& ct,
+                                                  const DrrValueOptions& values, double iso);
+
+// The list the UI shows for these bones (names, colours; all shown, none moved).
+std::vector<BoneView> boneViews(const SceneBones& bones);
+
+// Each object's state (shown, worldFromObject), as the DRR cache key and the render's input:
+// per object 13 numbers (1 if shown, then the 3x4 matrix row by row). Empty when every object is
+// shown and unmoved: the DRR of the CT as loaded is then the same image (line integrals add),
+// traced as one volume.
+using ObjectStates = std::vector<std::array<double, 13>>;
+// `overrideTibiaMotion`: the motion of bones.tibia instead of the list's (the hidden reference).
+ObjectStates objectStates(const SceneBones& bones, const std::vector<BoneView>& list,
+                          bool restVisible,
+                          const std::optional<BoneMotion>& overrideTibiaMotion = std::nullopt);
+
+// worldFromObject of bone `index` moved by `motion`.
+RigidTransform bonePose(const SceneBones& bones, int index, const BoneMotion& motion);
+
+// The DRR of the bones' scene with these states in `camera` (world frame).
+Image renderObjects(const SceneBones& bones, const ObjectStates& states,
+                    const ProjectionGeometry& camera, const XrayRenderSettings& settings);
+
+// The knee's Grood-Suntay angles for the list's motions (kneeAngleArray order); nullopt when
+// these bones are no knee (or at the gimbal lock).
+std::optional<std::array<double, 6>> kneeAngles(const SceneBones& bones,
+                                                const std::vector<BoneView>& list,
+                                                const std::optional<BoneMotion>& tibiaMotion =
+                                                    std::nullopt);
+
+// Mean distance (mm) of the tibia's points, in the femur's frame, between the knee of the
+// list's motions and the reference knee (femur where the CT has it, tibia at `referenceTibia`).
+double kneeMotionError(const SceneBones& bones, const std::vector<BoneView>& list,
+                       const BoneMotion& referenceTibia);
+
+}  // namespace fm::app

@@ -1,0 +1,132 @@
+// The App's part for the bones of a scene: which are shown and where (AppState::bones, edited by
+// the bone list and the sliders), the knee's joint angles, and the flex game, whose hidden
+// reference moves the tibia relative to the femur. Every number comes from engine/bones.
+#include <algorithm>
+
+#include "bones/KneeMotionGame.h"
+#include "scene/Matching.h"
+#include "ui/App.h"
+
+namespace fm::app {
+namespace {
+
+// The bone list with every bone where the CT has it (the reference's bones).
+std::vector<BoneView> unmoved(std::vector<BoneView> list) {
+    for (BoneView& b : list) b.motion = {};
+    return list;
+}
+
+}  // namespace
+
+void App::installBones() {
+    // A new scene: its bones, all shown and unmoved; the camera is the sliders' target again.
+    state_.bones = BonesState{};
+    boneSurfaces_.clear();
+    if (!scene_ || !scene_->bones) return;
+    state_.bones.list = boneViews(*scene_->bones);
+    state_.bones.isKnee = scene_->bones->knee.has_value();
+    for (const SceneBone& b : scene_->bones->bones) boneSurfaces_.push_back(b.mesh);
+    showBone(nullptr, scene_->isoValue);  // per-bone surfaces instead of the CT's one
+}
+
+ObjectStates App::userObjects() const {
+    // Slices cut the whole volume: bones are an X-ray matter.
+    if (!scene_ || !scene_->bones || state_.mode == ImagingMode::Slice) return {};
+    return objectStates(*scene_->bones, state_.bones.list, state_.bones.restVisible);
+}
+
+ObjectStates App::referenceObjects() const {
+    if (!scene_ || !scene_->bones || state_.mode == ImagingMode::Slice) return {};
+    const FlexGame& flex = state_.bones.flex;
+    return objectStates(*scene_->bones, unmoved(state_.bones.list), state_.bones.restVisible,
+                        flex.active ? std::optional<BoneMotion>(flex.hiddenMotion)
+                                    : std::nullopt);
+}
+
+const Pose& App::referenceCamera() const {
+    // In the flex game the camera is no part of the puzzle: the reference is seen as the user
+    // looks, so that any view (lateral for flexion, AP for varus) can help.
+    return state_.bones.flex.active && state_.mode == ImagingMode::Xray ? state_.userPose
+                                                                        : state_.referencePose;
+}
+
+void App::updateBones() {
+    BonesState& bones = state_.bones;
+    bones.anglesValid = false;
+    if (!scene_ || !scene_->bones || !bones.isKnee) return;
+    if (const auto angles = kneeAngles(*scene_->bones, bones.list)) {
+        bones.angles = *angles;
+        bones.anglesValid = true;
+    }
+    FlexGame& flex = bones.flex;
+    if (flex.outcome && flex.tibiaAtCheck != bones.list[scene_->bones->tibia].motion)
+        flex.outcomeIsStale = true;
+}
+
+void App::newFlex() {
+    if (!scene_ || !scene_->bones || !state_.bones.isKnee) return;
+    BonesState& bones = state_.bones;
+    const SceneBones& sb = *scene_->bones;
+    FlexGame& flex = bones.flex;
+    const Difficulty difficulty = flex.difficulty;
+    flex = FlexGame{};
+    flex.active = true;
+    flex.difficulty = difficulty;
+    flex.hiddenMotion = drawKneeMotion(nextSeed_++, difficulty);
+    const auto reference = kneeAngles(sb, unmoved(bones.list), flex.hiddenMotion);
+    if (reference) flex.referenceAngles = *reference;
+    // The user starts from the straight knee, moving the tibia.
+    bones.list[sb.tibia].motion = {};
+    bones.list[sb.tibia].visible = true;
+    bones.sliderTarget = sb.tibia;
+}
+
+void App::checkFlex() {
+    BonesState& bones = state_.bones;
+    FlexGame& flex = bones.flex;
+    if (!scene_ || !scene_->bones || !flex.active || !bones.anglesValid) return;
+    const SceneBones& sb = *scene_->bones;
+    auto toAngles = [](const std::array<double, 6>& a) {
+        KneeAngles k;
+        k.medialShiftMm = a[0];
+        k.anteriorDrawerMm = a[1];
+        k.distractionMm = a[2];
+        k.flexionDeg = a[3];
+        k.varusDeg = a[4];
+        k.internalRotationDeg = a[5];
+        return k;
+    };
+    ++flex.attempts;
+    const double mtre = kneeMotionError(sb, bones.list, flex.hiddenMotion);
+    MatchOutcome m =
+        outcomeOf(judgeKneeMotion(toAngles(flex.referenceAngles), toAngles(bones.angles), mtre));
+    m.attempt = flex.attempts;
+    flex.outcome = std::move(m);
+    flex.outcomeIsStale = false;
+    flex.tibiaAtCheck = bones.list[sb.tibia].motion;
+}
+
+std::vector<render::SurfaceItem> App::surfaces() const {
+    std::vector<render::SurfaceItem> out;
+    if (!scene_) return out;
+    if (!scene_->bones) {
+        out.push_back({bone_.get(), boneGeneration_, glm::dmat4(1.0), glm::vec3(kBoneColors[0][0], kBoneColors[0][1], kBoneColors[0][2])});
+        return out;
+    }
+    const auto& list = state_.bones.list;
+    for (std::size_t i = 0; i < boneSurfaces_.size() && i < list.size(); ++i) {
+        render::SurfaceItem item;
+        // Hidden bones keep their slot (and their uploaded mesh); they are just not drawn.
+        item.mesh = list[i].visible ? boneSurfaces_[i].get() : nullptr;
+        item.generation = boneGeneration_;
+        const RigidTransform pose = bonePose(*scene_->bones, int(i), list[i].motion);
+        glm::dmat4 m(pose.rotation);
+        m[3] = glm::dvec4(pose.translation, 1.0);
+        item.worldFromObject = m;
+        item.color = {list[i].color[0], list[i].color[1], list[i].color[2]};
+        out.push_back(item);
+    }
+    return out;
+}
+
+}  // namespace fm::app

@@ -1,0 +1,162 @@
+// The Bones tab: the bone list (colour as in the 3D view, shown or hidden in both DRRs and the
+// 3D view, which one the sliders move), the knee's Grood-Suntay angles live, and the flex game:
+// the hidden reference flexes the knee, the user moves the tibia to find that motion.
+#include <imgui.h>
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+
+#include "bones/KneeMotionGame.h"
+#include "ui/Ui.h"
+#include "ui/UiWidgets.h"
+
+namespace fm::app {
+
+using namespace widgets;
+
+void Ui::kneeAnglesLine(const AppState& state) {
+    const BonesState& bones = state.bones;
+    if (!bones.isKnee) return;
+    if (!bones.anglesValid) {
+        ImGui::TextColored(kWarn, "knee angles: none (not a knee pose)");
+        return;
+    }
+    std::array<double, 6> a = bones.angles;  // kneeAngleArray order: 3 mm, then 3 deg
+    for (double& v : a) v = std::abs(v) < 0.05 ? 0.0 : v;  // no "-0.0"
+    ImGui::TextColored(kSelected, "flexion %.1f  varus %.1f  int.rot %.1f deg", a[3], a[4], a[5]);
+    record("text:knee-angles");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("The knee's Grood-Suntay angles, tibia relative to femur "
+                          "(docs/bones.md):\nflexion about the femur's x axis, varus about the "
+                          "floating axis, internal rotation about the tibia's long axis");
+    ImGui::TextColored(kDim, "shift %.1f  drawer %.1f  distr. %.1f mm", a[0], a[1], a[2]);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("The tibia's origin in the femur's frame, along e1, e2, e3: medial "
+                          "shift, anterior drawer, distraction");
+}
+
+void Ui::bonesTab(AppState& state) {
+    BonesState& bones = state.bones;
+    if (bones.list.empty()) {
+        dimWrapped("This CT is one object. The knee phantom (Knee) has its femur, tibia and "
+                   "patella as bones of their own.");
+        return;
+    }
+    int& target = bones.sliderTarget;
+    if (ImGui::BeginTable("bones", 3, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
+        ImGui::TableSetupColumn("bone", ImGuiTableColumnFlags_WidthStretch, 2.0f);
+        ImGui::TableSetupColumn("sliders", ImGuiTableColumnFlags_WidthStretch, 1.0f);
+        ImGui::TableSetupColumn("view", ImGuiTableColumnFlags_WidthStretch, 1.2f);
+        ImGui::TableHeadersRow();
+        for (int i = 0; i < int(bones.list.size()); ++i) {
+            BoneView& b = bones.list[i];
+            ImGui::PushID(i);
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn();
+            ImGui::ColorButton("##colour", ImVec4(b.color[0], b.color[1], b.color[2], 1.0f),
+                               ImGuiColorEditFlags_NoTooltip | ImGuiColorEditFlags_NoPicker);
+            record("swatch:" + b.name);
+            ImGui::SameLine();
+            ImGui::Checkbox(b.name.c_str(), &b.visible);
+            record("checkbox:bone-" + b.name);
+            ImGui::TableNextColumn();
+            if (ImGui::RadioButton("moves", target == i)) target = i;
+            record("radio:moves-" + b.name);
+            ImGui::TableNextColumn();
+            if (ImGui::SmallButton("only")) {
+                for (BoneView& other : bones.list) other.visible = &other == &b;
+                bones.restVisible = false;
+            }
+            record("button:only-" + b.name);
+            if (ImGui::IsItemHovered())
+                ImGui::SetTooltip("Show %s alone (no soft tissue)", b.name.c_str());
+            ImGui::PopID();
+        }
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        ImGui::Checkbox("soft tissue", &bones.restVisible);
+        record("checkbox:bone-rest");
+        ImGui::TableNextColumn();
+        if (ImGui::RadioButton("camera", target < 0)) target = -1;
+        record("radio:moves-camera");
+        ImGui::TableNextColumn();
+        if (ImGui::SmallButton("all")) {
+            for (BoneView& b : bones.list) b.visible = true;
+            bones.restVisible = true;
+        }
+        record("button:show-all");
+        ImGui::EndTable();
+    }
+    kneeAnglesLine(state);
+    if (!bones.isKnee) return;
+
+    ImGui::Separator();
+    FlexGame& flex = bones.flex;
+    if (ImGui::Button(flex.active ? "New flexion" : "Flex game")) state.requests.newFlex = true;
+    record("button:new-flex");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("The reference knee is flexed by a hidden motion of the tibia: move the "
+                          "tibia to find it");
+    ImGui::SameLine();
+    static const char* kDifficulties[] = {"easy", "medium", "hard"};
+    int difficulty = static_cast<int>(flex.difficulty);
+    ImGui::SetNextItemWidth(ImGui::CalcTextSize("medium").x + ImGui::GetFrameHeight() +
+                            2 * ImGui::GetStyle().FramePadding.x);
+    if (ImGui::Combo("##flex-difficulty", &difficulty, kDifficulties, kDifficultyCount))
+        flex.difficulty = static_cast<Difficulty>(difficulty);
+    record("combo:flex-difficulty");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("easy: flexion only; medium: also varus and rotation; hard: also "
+                          "shifts, and deeper flexion");
+    if (!flex.active) return;
+    ImGui::SameLine();
+    if (ImGui::Button("Check")) state.requests.checkFlex = true;
+    record("button:check-flex");
+    ImGui::SameLine();
+    ImGui::Checkbox("Reveal##flex", &flex.revealed);
+    record("checkbox:reveal-flex");
+    ImGui::SameLine();
+    if (ImGui::Button("End")) state.requests.endFlex = true;
+    record("button:end-flex");
+
+    if (!flex.outcome) {
+        dimWrapped("The reference knee is flexed: move the tibia (its sliders) until your DRR "
+                   "matches, then Check. Within %.3g deg and %.3g mm per joint angle.",
+                   state.toleranceAngleDeg, state.toleranceOffsetMm);
+        if (flex.revealed)
+            ImGui::Text("reference: flexion %.1f  varus %.1f  int. rot. %.1f deg",
+                        flex.referenceAngles[3], flex.referenceAngles[4], flex.referenceAngles[5]);
+        return;
+    }
+    const MatchOutcome& m = *flex.outcome;
+    coloredWrapped(m.matched ? kGood : kWarn, m.verdict);
+    record("text:flex-verdict");
+    ImGui::Text("attempt %d%s", m.attempt, flex.outcomeIsStale ? ", tibia moved since" : "");
+    const int columns = flex.revealed ? 3 : 2;
+    if (ImGui::BeginTable("flex-hints", columns,
+                          ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
+        ImGui::TableSetupColumn("joint angle", ImGuiTableColumnFlags_WidthStretch, 1.6f);
+        ImGui::TableSetupColumn("hint", ImGuiTableColumnFlags_WidthStretch, 2.0f);
+        if (flex.revealed)
+            ImGui::TableSetupColumn("reference", ImGuiTableColumnFlags_WidthStretch, 0.9f);
+        ImGui::TableHeadersRow();
+        for (int p = 0; p < kParameterCount; ++p) {
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn();
+            if (p == m.furthestParameter)
+                ImGui::TextColored(kWarn, "%s (furthest)", kneeComponentName(p));
+            else
+                ImGui::TextUnformatted(kneeComponentName(p));
+            ImGui::TableNextColumn();
+            ImGui::TextColored(m.direction[p] == 0 ? kGood : kWarn, "%s", m.hintCells[p].c_str());
+            if (flex.revealed) {
+                ImGui::TableNextColumn();
+                ImGui::Text("%.1f", flex.referenceAngles[p]);
+            }
+        }
+        ImGui::EndTable();
+    }
+}
+
+}  // namespace fm::app

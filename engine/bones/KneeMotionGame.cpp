@@ -1,0 +1,70 @@
+#include "bones/KneeMotionGame.h"
+
+#include <cmath>
+#include <string>
+
+#include "core/Error.h"
+#include "core/Random.h"
+
+namespace fm {
+
+KneeAngles kneeAnglesOf(const KneeJoint& joint, const RigidTransform& worldFromFemur,
+                        const RigidTransform& worldFromTibia) {
+    const RigidTransform femurAnatomicalFromTibiaAnatomical =
+        (worldFromFemur * joint.femurFromAnatomical).inverse() * worldFromTibia *
+        joint.tibiaFromAnatomical;
+    return groodSuntayAngles(femurAnatomicalFromTibiaAnatomical, joint.side);
+}
+
+std::array<double, 6> kneeAngleArray(const KneeAngles& a) {
+    return {a.medialShiftMm, a.anteriorDrawerMm, a.distractionMm,
+            a.flexionDeg,    a.varusDeg,         a.internalRotationDeg};
+}
+
+const char* kneeComponentName(int index) {
+    static const char* kNames[] = {"medial shift", "anterior drawer", "distraction",
+                                   "flexion",      "varus",           "internal rotation"};
+    if (index < 0 || index >= 6) throw Error("knee: no component " + std::to_string(index));
+    return kNames[index];
+}
+
+BoneMotion drawKneeMotion(std::uint64_t seed, Difficulty difficulty) {
+    Rng rng(seed);
+    BoneMotion m{};
+    switch (difficulty) {
+        case Difficulty::Easy:
+            m[3] = rng.uniform(10.0, 60.0);
+            break;
+        case Difficulty::Medium:
+            m[3] = rng.uniform(10.0, 60.0);
+            m[4] = rng.uniform(-5.0, 5.0);
+            m[5] = rng.uniform(-10.0, 10.0);
+            break;
+        case Difficulty::Hard:
+            m[3] = rng.uniform(5.0, 90.0);
+            m[4] = rng.uniform(-8.0, 8.0);
+            m[5] = rng.uniform(-15.0, 15.0);
+            for (int a = 0; a < 3; ++a) m[a] = rng.uniform(-4.0, 4.0);
+            break;
+    }
+    // On the sliders' 0.1 grid, so that the answer can be typed exactly.
+    for (double& v : m) v = std::round(v * 10.0) / 10.0;
+    return m;
+}
+
+MatchVerdict judgeKneeMotion(const KneeAngles& reference, const KneeAngles& user,
+                             double tibiaMtreMm, const MatchTolerances& tolerances) {
+    // The 2011 rule on six numbers (three mm, three deg, angle errors wrapped), renamed.
+    MatchVerdict v = judgeMatch(Pose::fromArray(kneeAngleArray(reference)),
+                                Pose::fromArray(kneeAngleArray(user)), tibiaMtreMm, tolerances);
+    for (int i = 0; i < 6; ++i) {
+        const ParameterHint& h = v.hints[i];
+        const char* word = h.status == ParameterStatus::TooHigh  ? "too high"
+                           : h.status == ParameterStatus::TooLow ? "too low"
+                                                                 : "OK";
+        v.hints[i].text = std::string(kneeComponentName(i)) + " " + word;
+    }
+    return v;
+}
+
+}  // namespace fm

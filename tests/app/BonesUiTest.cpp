@@ -1,0 +1,247 @@
+// The Bones tab, driven like a user: the bone list (colours of the 3D view's surfaces, hiding a
+// bone in both DRRs and the 3D view), the sliders moving one bone with the knee's joint angles
+// live, and the flex game. Checked against the engine's articulated knee built here, apart from
+// the app, and against what line integrals and the phantom's flexion must give.
+#include <imgui.h>
+
+#include <cmath>
+
+#include "AppFixture.h"
+#include "bones/BoneMotion.h"
+#include "core/Error.h"
+#include "bones/KneeMotionGame.h"
+#include "phantom/ArticulatedKnee.h"
+#include "render/SceneRenderer.h"
+#include "scene/DrrCache.h"
+
+namespace fm::test {
+namespace {
+
+using BonesUi = HeadlessApp;
+
+// The articulated knee as the engine makes it (values as the app's DRRs).
+Scene engineKnee(const app::App& app) {
+    BoneSceneOptions options;
+    options.values = app::appDrrValueOptions(*app.scene()->volume);
+    return makeArticulatedKnee(KneePhantomParams{}, options);
+}
+
+Image engineView(const app::App& app, const Scene& scene, const Pose& camera) {
+    XrayRenderSettings settings;
+    settings.threads = kTestDrrThreads;
+    return renderView(scene, app::appGeometry(*app.scene(), camera), settings);
+}
+
+double maxAbsDifference(const Image& a, const Image& b) {
+    if (a.width != b.width || a.height != b.height) return INFINITY;
+    double d = 0.0;
+    for (std::size_t i = 0; i < a.pixels.size(); ++i)
+        d = std::max(d, double(std::abs(a.pixels[i] - b.pixels[i])));
+    return d;
+}
+
+double peak(const Image& a) {
+    double p = 0.0;
+    for (float v : a.pixels) p = std::max(p, double(v));
+    return p;
+}
+
+// Pixels of the 3D view (alone, no box or apparatus) whose blue clearly dominates: the tibia's
+// surface colour (kBoneColors[1]); the femur's ivory and the patella's orange never are.
+int bluePixels(const app::App& app) {
+    const auto& r = app.sceneRenderer();
+    const std::vector<std::uint8_t> px = r.readPixels();
+    int n = 0;
+    for (std::size_t i = 0; i < px.size(); i += 4)
+        if (int(px[i + 2]) > int(px[i]) + 40 && int(px[i + 2]) > int(px[i + 1]) + 10) ++n;
+    return n;
+}
+
+TEST_F(BonesUi, TheListNamesTheKneesBonesInTheColoursOfTheirSurfaces) {
+    script->clickWidget("tab:bones");
+    const auto& list = app->state().bones.list;
+    ASSERT_EQ(list.size(), 3u);
+    EXPECT_EQ(list[0].name, kKneeFemur);
+    EXPECT_EQ(list[1].name, kKneeTibia);
+    EXPECT_EQ(list[2].name, kKneePatella);
+    EXPECT_TRUE(app->state().bones.isKnee);
+    const auto surfaces = app->surfaces();
+    ASSERT_EQ(surfaces.size(), 3u);
+    const render::RgbaImage frame = app->capture();
+    for (std::size_t i = 0; i < list.size(); ++i) {
+        // The 3D view draws the bone in the colour of its swatch ...
+        EXPECT_EQ(surfaces[i].color, glm::vec3(list[i].color[0], list[i].color[1], list[i].color[2]));
+        EXPECT_EQ(surfaces[i].mesh, app->scene()->bones->bones[i].mesh.get());
+        // ... and the swatch shows that colour (its centre pixel, as drawn).
+        const glm::vec2 c = script->widget("swatch:" + list[i].name).center();
+        const std::uint8_t* p = &frame.pixels[(std::size_t(c.y) * frame.width + std::size_t(c.x)) * 4];
+        for (int ch = 0; ch < 3; ++ch) EXPECT_NEAR(p[ch], list[i].color[ch] * 255.0f, 2.0) << list[i].name;
+    }
+    // No two bones share a colour.
+    EXPECT_NE(list[0].color, list[1].color);
+    EXPECT_NE(list[1].color, list[2].color);
+    EXPECT_NE(list[0].color, list[2].color);
+}
+
+TEST_F(BonesUi, HidingABoneRemovesItFromBothDrrsAndThe3dView) {
+    script->clickWidget("tab:bones");
+    app->state().view.showBox = false;
+    app->state().view.showApparatus = false;  // the 3D view shows the bones alone
+    script->idle(1);
+    const Image whole = app->userDrr();
+    const int tibiaPixels = bluePixels(*app);
+    EXPECT_GT(tibiaPixels, 200) << "the tibia is drawn in its colour";
+
+    script->clickWidget("checkbox:bone-femur");
+    script->idle(1);
+    EXPECT_FALSE(app->state().bones.list[0].visible);
+    // Your DRR and the reference: the engine's knee without the femur, each in its camera.
+    Scene knee = engineKnee(*app);
+    knee.object(kKneeFemur).visible = false;
+    const Image noFemur = engineView(*app, knee, app->state().userPose);
+    ASSERT_EQ(app->userDrr().width, noFemur.width);
+    EXPECT_EQ(app->userDrr().pixels, noFemur.pixels);
+    EXPECT_EQ(app->referenceDrr().pixels, engineView(*app, knee, app->state().referencePose).pixels);
+    // Line integrals add: the femur alone plus the rest is the whole CT's DRR (float rounding).
+    Scene femurOnly = engineKnee(*app);
+    for (auto& o : femurOnly.objects) o.visible = o.name == kKneeFemur;
+    const Image femur = engineView(*app, femurOnly, app->state().userPose);
+    Image sum = noFemur;
+    for (std::size_t i = 0; i < sum.pixels.size(); ++i) sum.pixels[i] += femur.pixels[i];
+    EXPECT_LT(maxAbsDifference(sum, whole), 1e-5 * peak(whole));
+
+    // The tibia hidden too: gone from the 3D view.
+    script->clickWidget("checkbox:bone-tibia");
+    script->idle(1);
+    EXPECT_EQ(bluePixels(*app), 0);
+    // "only" and "all".
+    script->clickWidget("button:only-patella");
+    script->idle(1);
+    EXPECT_FALSE(app->state().bones.restVisible);
+    Scene patella = engineKnee(*app);
+    for (auto& o : patella.objects) o.visible = o.name == kKneePatella;
+    EXPECT_EQ(app->userDrr().pixels, engineView(*app, patella, app->state().userPose).pixels);
+    script->clickWidget("button:show-all");
+    script->idle(1);
+    EXPECT_EQ(app->userDrr().pixels, whole.pixels) << "all shown: the CT's own DRR again";
+    EXPECT_EQ(bluePixels(*app), tibiaPixels);
+}
+
+TEST_F(BonesUi, TheSlidersMoveTheChosenBoneAndTheJointAnglesFollowLive) {
+    script->clickWidget("tab:bones");
+    script->clickWidget("radio:moves-tibia");
+    ASSERT_EQ(app->state().bones.sliderTarget, 1);
+    script->idle(1);
+    // The parameter pane now moves the tibia: shifts and turns about the LPS axes.
+    const app::WidgetRect slider = script->widget("slider:turn-x");
+    EXPECT_NO_THROW(script->widget("text:knee-angles"));
+    const Pose camera = app->state().userPose;
+
+    // Drag the turn about x: the knee's flexion follows the slider in every frame of the drag.
+    const glm::vec2 from = slider.center();
+    const glm::vec2 to(slider.min.x + 0.6f * (slider.max.x - slider.min.x), from.y);
+    script->moveTo(from);
+    app::FrameInput press;
+    press.mousePos = from;
+    press.mouseDown[0] = true;
+    backend->setFrameInput(press);
+    app->frame();
+    int frames = 0;
+    for (int step = 1; step <= 6; ++step) {
+        press.mousePos = from + (to - from) * (step / 6.0f);
+        backend->setFrameInput(press);
+        app->frame();
+        const auto& b = app->state().bones;
+        ASSERT_TRUE(b.anglesValid);
+        // About the flexion axis, a turn about x is the phantom's flexion: Grood-Suntay gives
+        // that angle as flexion, no varus, no rotation (femur unmoved).
+        EXPECT_NEAR(b.angles[3], b.list[1].motion[3], 1e-9);
+        EXPECT_NEAR(b.angles[4], 0.0, 1e-9);
+        EXPECT_NEAR(b.angles[5], 0.0, 1e-9);
+        frames += b.list[1].motion[3] != 0.0;
+    }
+    press.mouseDown[0] = false;
+    backend->setFrameInput(press);
+    app->frame();
+    EXPECT_GE(frames, 5) << "the angle changed while dragging";
+    EXPECT_EQ(app->state().userPose.toArray(), camera.toArray()) << "the camera did not move";
+
+    // Typed: 25 deg. The user DRR is the knee flexed to 25 deg as the phantom generator flexes
+    // it (kneeBonePoses), traced by the engine.
+    script->clickWidget("input:turn-x");
+    script->type("25");
+    script->pressKey(ImGuiKey_Enter);
+    script->idle(1);
+    EXPECT_DOUBLE_EQ(app->state().bones.list[1].motion[3], 25.0);
+    EXPECT_NEAR(app->state().bones.angles[3], 25.0, 1e-9);
+    Scene knee = engineKnee(*app);
+    knee.object(kKneeTibia).worldFromObject = kneeBonePoses(KneePhantomParams{}, 25.0).tibia;
+    const Image flexed = engineView(*app, knee, camera);
+    ASSERT_EQ(app->userDrr().width, flexed.width);
+    EXPECT_LT(maxAbsDifference(app->userDrr(), flexed), 1e-6 * peak(flexed));
+    // The 3D view draws the tibia at that pose.
+    EXPECT_EQ(app->surfaces()[1].worldFromObject[3][1],
+              kneeBonePoses(KneePhantomParams{}, 25.0).tibia.translation.y);
+
+    // Back to the camera: the sliders are the 2011 parameters again.
+    script->clickWidget("radio:moves-camera");
+    script->idle(1);
+    EXPECT_NO_THROW(script->widget("slider:azimuth"));
+    EXPECT_THROW(script->widget("slider:turn-x"), Error);
+}
+
+TEST_F(BonesUi, TheFlexGameHidesAFlexionThatTheTibiaMustFind) {
+    start(testAppOptions(), {1280, 800});  // room for the game's hints under the bone list
+    script->clickWidget("tab:bones");
+    script->clickWidget("button:new-flex");  // easy: a flexion only
+    const app::FlexGame& flex = app->state().bones.flex;
+    ASSERT_TRUE(flex.active);
+    EXPECT_EQ(app->state().bones.sliderTarget, 1) << "the sliders move the tibia";
+    const double hidden = flex.hiddenMotion[3];
+    EXPECT_GE(hidden, 10.0);
+    EXPECT_LE(hidden, 60.0);
+    for (int k : {0, 1, 2, 4, 5}) EXPECT_EQ(flex.hiddenMotion[k], 0.0);
+    script->idle(1);
+    // The reference: the knee flexed by the hidden angle as the generator flexes it, seen from
+    // the user's camera.
+    Scene knee = engineKnee(*app);
+    knee.object(kKneeTibia).worldFromObject = kneeBonePoses(KneePhantomParams{}, hidden).tibia;
+    const Image reference = engineView(*app, knee, app->state().userPose);
+    EXPECT_LT(maxAbsDifference(app->referenceDrr(), reference), 1e-6 * peak(reference));
+    EXPECT_NEAR(flex.referenceAngles[3], hidden, 1e-9);
+
+    // Check at the straight knee: flexion too low, no number before a match or Reveal.
+    script->clickWidget("button:check-flex");
+    ASSERT_TRUE(flex.outcome.has_value());
+    EXPECT_FALSE(flex.outcome->matched);
+    EXPECT_EQ(flex.outcome->hintCells[3], "too low");
+    EXPECT_EQ(flex.outcome->furthestParameter, 3);
+    EXPECT_NE(flex.outcome->verdict.find("flexion too low"), std::string::npos)
+        << flex.outcome->verdict;
+    EXPECT_EQ(flex.outcome->verdict.find_first_of("0123456789"), std::string::npos);
+
+    // Reveal: the signed error, from the engine's joint angles.
+    script->clickWidget("checkbox:reveal-flex");
+    char expected[48];
+    std::snprintf(expected, sizeof(expected), "too low (%+.1f deg)", -hidden);
+    EXPECT_EQ(flex.outcome->hintCells[3], expected);
+    script->clickWidget("checkbox:reveal-flex");
+
+    // Within a degree of the hidden flexion: a match.
+    script->clickWidget("input:turn-x");
+    char typed[16];
+    std::snprintf(typed, sizeof(typed), "%.1f", hidden + 0.8);
+    script->type(typed);
+    script->pressKey(ImGuiKey_Enter);
+    script->clickWidget("button:check-flex");
+    EXPECT_TRUE(flex.outcome->matched) << flex.outcome->verdict;
+    EXPECT_EQ(flex.attempts, 2);
+    EXPECT_EQ(flex.outcome->hintCells[3], "ok (+0.8 deg)");
+    EXPECT_EQ(app->userDrr().width, app->referenceDrr().width);
+
+    script->clickWidget("button:end-flex");
+    EXPECT_FALSE(app->state().bones.flex.active);
+}
+
+}  // namespace
+}  // namespace fm::test
