@@ -1,6 +1,8 @@
 // `fluoromatch register`: automatic pose search of a CT against one reference image, either a
 // DRR rendered at a known pose (--reference-pose: the truth is known and the error reported) or
-// an image file with its projection geometry (--reference IMG --geometry g.json).
+// an image file with its projection geometry (--reference IMG --geometry g.json). With
+// --camera and --model it registers implant or bone models in a real radiograph instead
+// (cli/RegisterXray.h).
 #include <unistd.h>
 #include <chrono>
 #include <cmath>
@@ -16,6 +18,7 @@
 #include "bones/BoneVolume.h"
 #include "cli/BoneOptions.h"
 #include "cli/CommandRegistry.h"
+#include "cli/RegisterXray.h"
 #include "cli/SearchCli.h"
 #include "cli/SliceCli.h"
 #include "cli/TrialRegister.h"
@@ -34,7 +37,7 @@ struct RegisterArgs {
     std::string referencePose;
     std::string reference;
     std::string geometry;
-    std::string start;
+    std::vector<std::string> start;  // one (2011 pose), or one per --model
     std::string truth;
     std::string pose;
     fm::cli::SearchArgs search;
@@ -46,7 +49,15 @@ struct RegisterArgs {
     bool biplane = false;
     bool noRest = false;
     double marginMm = 20.0;
+    fm::cli::XrayRegisterArgs xray;
 };
+
+// The one --start of the modes that take a single pose ("" = not given).
+std::string singleStart(const RegisterArgs& a) {
+    if (a.start.size() > 1)
+        throw fm::Error("--start: give one pose (several --start are for several --model)");
+    return a.start.empty() ? std::string() : a.start[0];
+}
 
 std::array<double, 6> parseSix(const std::string& text, const std::string& option) {
     std::array<double, 6> v{};
@@ -144,7 +155,20 @@ void printPoseRow(const char* label, const std::array<double, 6>& v) {
                 v[5]);
 }
 
-void runRegister(const RegisterArgs& a, bool similarityGiven) {
+void runRegister(const RegisterArgs& a, bool similarityGiven, int frame) {
+    if (!a.xray.models.empty() || !a.xray.camera.empty()) {
+        if (a.slice || !a.referencePose.empty() || !a.geometry.empty() || !a.truth.empty() ||
+            !a.bones.bone.empty() || !a.bones.labels.empty())
+            throw fm::Error("--camera/--model register models in a real radiograph: they do not go "
+                            "with --slice, --reference-pose, --geometry, --truth or --bone");
+        if (a.xray.models.empty()) throw fm::Error("--camera needs --model MODEL");
+        fm::cli::XrayRegisterArgs xray = a.xray;
+        xray.frame = frame;
+        fm::cli::runXrayRegister(a.reference, xray, a.start, a.search, similarityGiven);
+        return;
+    }
+    if (!a.xray.outs.empty() || !a.xray.masks.empty())
+        throw fm::Error("--out and --mask need --camera and --model (real X-ray registration)");
     if (a.slice) {
         if (!a.geometry.empty())
             throw fm::Error("--slice: --geometry is the X-ray projection geometry; a slice "
@@ -153,7 +177,7 @@ void runRegister(const RegisterArgs& a, bool similarityGiven) {
         s.volume = a.volume;
         s.referencePose = a.referencePose;
         s.reference = a.reference;
-        s.start = a.start;
+        s.start = singleStart(a);
         s.truth = a.truth;
         s.similarityGiven = similarityGiven;
         s.grid = a.grid;
@@ -198,7 +222,8 @@ void runRegister(const RegisterArgs& a, bool similarityGiven) {
     }
     fm::Pose start;
     try {
-        if (!a.start.empty()) start = fm::parsePose(a.start);
+        const std::string given = singleStart(a);
+        if (!given.empty()) start = fm::parsePose(given);
     } catch (const fm::Error& e) {
         throw fm::Error(std::string("--start: ") + e.what());
     }
@@ -261,7 +286,10 @@ FM_REGISTER_COMMAND("register", 40, [](CLI::App& app) {
                                 "integral, bright = more attenuation)");
     refPose->excludes(ref);
     cmd->add_option("--geometry", a->geometry, "Projection geometry JSON of --reference");
-    cmd->add_option("--start", a->start, "Start pose x,y,z,az,el,rot (default 0,0,0,0,0,0)");
+    cmd->add_option("--start", a->start,
+                    "Start pose x,y,z,az,el,rot (default 0,0,0,0,0,0); with --model: a .jts or "
+                    ".tra file (row --frame) or x,y,z,zrot,xrot,yrot, one per --model (or one "
+                    ".tra for all)");
     cmd->add_option("--truth", a->truth, "True pose of --reference, if known (errors reported)");
     fm::cli::addSearchOptions(cmd, a->search);
     fm::cli::addBoneOptions(cmd, a->bones);
@@ -282,6 +310,7 @@ FM_REGISTER_COMMAND("register", 40, [](CLI::App& app) {
     cmd->add_option("--interpolation", a->interpolation,
                     "With --slice: cubic (B-spline, default) or linear")
         ->capture_default_str();
+    fm::cli::addXrayRegisterOptions(cmd, a->xray);
     auto trial = std::make_shared<fm::cli::TrialRegisterArgs>();
     fm::cli::addTrialRegisterOptions(cmd, *trial);
     cmd->callback([a, trial, cmd] {
@@ -291,7 +320,9 @@ FM_REGISTER_COMMAND("register", 40, [](CLI::App& app) {
             trial->threads = a->search.threads;
             fm::cli::runTrialRegister(*trial);
         } else {
-            runRegister(*a, cmd->get_option("--similarity")->count() > 0);
+            // --frame is shared: the trial's frame, or the row of --start/--out pose files.
+            runRegister(*a, cmd->get_option("--similarity")->count() > 0,
+                        cmd->get_option("--frame")->count() > 0 ? trial->frame : 0);
         }
     });
     return cmd;

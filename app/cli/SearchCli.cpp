@@ -65,8 +65,7 @@ void addSearchOptions(CLI::App* cmd, SearchArgs& a, bool withMethod) {
     addValuesOption(cmd, a.values);
 }
 
-RegistrationSettings registrationSettings(const SearchArgs& a) {
-    RegistrationSettings s;
+RegistrationSettings registrationSettings(const SearchArgs& a, RegistrationSettings s) {
     s.method = parseSearchMethod(a.method);
     if (s.method == SearchMethod::NelderMead)
         throw Error(

@@ -31,8 +31,10 @@ struct SearchArgs {
 // --method, --similarity, --seed, --budget, --polish-budget, --levels, --radius, --threads,
 // --values.
 void addSearchOptions(CLI::App* cmd, SearchArgs& args, bool withMethod = true);
-// Throws fm::Error naming the option on a bad value.
-RegistrationSettings registrationSettings(const SearchArgs& args);
+// `base` (the mode's defaults) with what the options set: the similarity, method, seed and
+// threads always, budgets, levels and radius when given. Throws fm::Error naming the option
+// on a bad value.
+RegistrationSettings registrationSettings(const SearchArgs& args, RegistrationSettings base = {});
 std::string describeLevels(const RegistrationSettings& settings);
 
 // "auto": decided by the unit detection (cli/ValuesChoice, printed); "mu": HU converted to

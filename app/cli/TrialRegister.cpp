@@ -12,7 +12,7 @@ namespace fm::cli {
 // --bone is the command's own (BoneOptions); with --trial it names the trial's bone.
 void addTrialRegisterOptions(CLI::App* cmd, TrialRegisterArgs& a) {
     cmd->add_option("--trial", a.trial, "Register a bone in a trial's frame: .cfg or .json");
-    cmd->add_option("--frame", a.frame, "With --trial: the frame (0-based)");
+    cmd->add_option("--frame", a.frame, "With --trial: the frame (0-based); with --model: the row of .jts/.tra --start and --out files (default 0)");
     cmd->add_option("--cameras", a.cameras, "With --trial: cameras to use, e.g. 1 (default: all)");
     cmd->add_option("--start-tra", a.start, "With --trial: .tra holding the start pose at --frame");
     cmd->add_option("--out-tra", a.out, "With --trial: write the result at --frame to this .tra");

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "core/Error.h"
+#include "meshdrr/RasterSilhouette.h"
 
 namespace fm {
 
@@ -28,6 +29,15 @@ Box3 MeshXrayModel::bounds() const { return {mesh_->boundsMin, mesh_->boundsMax}
 
 void MeshXrayModel::addLineIntegrals(const ProjectionGeometry& geometryInObject, Image& image,
                                      const XrayRenderSettings& settings) const {
+    if (settings.footprintOnly && mu_ > 0.0) {
+        if (const std::optional<Mask> silhouette = rasterMeshSilhouette(*mesh_, geometryInObject)) {
+            if (image.width != silhouette->width || image.height != silhouette->height)
+                throw Error("mesh object '" + label_ + "': the image to add into is not the detector's size");
+            for (std::size_t i = 0; i < image.pixels.size(); ++i)
+                if (silhouette->inside[i]) image.pixels[i] += static_cast<float>(mu_);
+            return;
+        }
+    }
     MeshDrrOptions options;
     options.threads = settings.threads;
     addMeshDrr(*mesh_, geometryInObject, mu_, image, options);

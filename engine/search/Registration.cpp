@@ -197,6 +197,8 @@ double Registration::viewCost(const Scene& scene, const View& view, int levelInd
     XrayRenderSettings render;
     render.trace = settings_.trace;
     render.threads = threads;
+    // The edge measure looks only at the footprint's outline.
+    render.footprintOnly = settings_.similarity == SimilarityMeasure::EdgeDistance;
     const Image drr = renderView(scene, g, render);
     Mask mask = footprintMask(drr, 0.0f, settings_.footprintDilation);
     const bool cropped = rect.col0 != level.roi.col0 || rect.row0 != level.roi.row0 ||

@@ -1,0 +1,158 @@
+#include "cli/RegisterXray.h"
+
+#include <cstdio>
+#include <memory>
+
+#include "camera/CameraFile.h"
+#include "core/Error.h"
+#include "meshdrr/MeshDrr.h"
+#include "model/MeshModel.h"
+#include "radiograph/Radiograph.h"
+#include "radiograph/RadiographPreparation.h"
+#include "scene/MeshXrayModel.h"
+#include "scene/ObjectPoseParameterization.h"
+#include "xray/CameraPoseDifference.h"
+#include "xray/ObjectRegistration.h"
+#include "xray/PoseSpec.h"
+
+namespace fm::cli {
+
+namespace {
+
+bool isTra(const std::string& path) {
+    return path.size() > 4 && (path.substr(path.size() - 4) == ".tra" ||
+                               path.substr(path.size() - 4) == ".TRA");
+}
+
+// The file for model k of a list that holds one per model or a single .tra for all.
+const std::string& perModel(const std::vector<std::string>& list, std::size_t k,
+                            std::size_t models, const char* option) {
+    if (list.size() == models) return list[k];
+    if (list.size() == 1 && isTra(list[0])) return list[0];
+    throw Error(std::string(option) + ": give one per --model (" + std::to_string(models) +
+                ") or a single .tra for all");
+}
+
+Mask readLabelMask(const std::string& path, glm::ivec2 size) {
+    const RadiographFile file = readRadiograph(path);
+    if (file.image.width != size.x || file.image.height != size.y)
+        throw Error(path + ": the mask is " + std::to_string(file.image.width) + "x" +
+                    std::to_string(file.image.height) + " but the radiograph is " +
+                    std::to_string(size.x) + "x" + std::to_string(size.y));
+    Mask m(size.x, size.y, false);
+    const float half = file.bitsPerSample > 8 ? 32767.5f : 127.5f;
+    for (std::size_t i = 0; i < m.inside.size(); ++i) m.inside[i] = file.image.pixels[i] > half;
+    return m;
+}
+
+}  // namespace
+
+void addXrayRegisterOptions(CLI::App* cmd, XrayRegisterArgs& a) {
+    cmd->add_option("--camera", a.camera,
+                    "Calibration of --reference (MayaCam 2.0/1.0, JointTrack JT_INTCALIB or "
+                    "geometry JSON): real X-ray mode, with --model");
+    cmd->add_option("--model", a.models, "Implant or bone model (.stl, .ply, .obj); repeatable");
+    cmd->add_option("--out", a.outs,
+                    "Write the found pose: .jts (one per model) or .tra (one for all)");
+    cmd->add_option("--mask", a.masks,
+                    "Label mask per model (binary image): the silhouette IoU is reported");
+    cmd->add_option("--mu", a.mu, "Model attenuation 1/mm (default 1.2, cobalt-chromium)");
+    cmd->add_option("--page", a.page, "Page of a multi-page TIFF reference (0-based)");
+    addRadiographOptions(cmd, a.prep);
+}
+
+void runXrayRegister(const std::string& reference, const XrayRegisterArgs& a,
+                     const std::vector<std::string>& starts, const SearchArgs& search,
+                     bool similarityGiven) {
+    if (reference.empty()) throw Error("--model needs --reference IMG (the radiograph)");
+    if (a.camera.empty()) throw Error("--model needs --camera CALIB (the radiograph's calibration)");
+    const std::size_t n = a.models.size();
+    if (starts.empty()) throw Error("--model needs --start POSES (a .jts, .tra or six numbers)");
+    if (!a.masks.empty() && a.masks.size() != n)
+        throw Error("--mask: give one per --model (" + std::to_string(n) + ")");
+    if (!(a.mu >= 0.0) || a.mu > 1e3)
+        throw Error("--mu must be 0 (the default) or a positive attenuation in 1/mm");
+    // Everything that can be refused is checked before the search.
+    std::vector<std::string> outPaths;
+    for (std::size_t k = 0; k < n && !a.outs.empty(); ++k) {
+        outPaths.push_back(perModel(a.outs, k, n, "--out"));
+        checkPoseOutput(outPaths.back(), a.frame);
+    }
+
+    const RadiographFile file = readRadiograph(reference, a.page);
+    for (const auto& w : file.warnings)
+        std::fprintf(stderr, "warning: %s: %s\n", reference.c_str(), w.c_str());
+    const glm::ivec2 size(file.image.width, file.image.height);
+    const CameraReadResult cam = readCameraFile(a.camera, size);
+    checkImageSize(cam.camera, a.camera, size.x, size.y, reference);
+    const PreparedRadiograph prepared =
+        prepareRadiograph(file.image, preparationFrom(a.prep, file.bitsPerSample));
+    if (prepared.valid.count() == 0)
+        throw Error(reference + ": no valid pixel is left after the preparation flags");
+
+    std::vector<Mask> labels;
+    for (const std::string& m : a.masks) labels.push_back(readLabelMask(m, size));
+
+    Scene scene;
+    scene.cameras.push_back(toProjectionGeometry(cam.camera));
+    std::vector<RigidTransform> startPoses;
+    for (std::size_t k = 0; k < n; ++k) {
+        const MeshModel model = loadMeshModel(a.models[k]);
+        const double mu = a.mu > 0.0 ? a.mu : kMuCobaltChromePerMm;
+        auto xray = std::make_shared<MeshXrayModel>(prepareMeshDrr(model), mu,
+                                                    std::filesystem::path(a.models[k]).stem().string());
+        const std::string& spec = perModel(starts, k, n, "--start");
+        startPoses.push_back(readPoseSpec(spec, a.frame, starts.size() == n ? 0 : k));
+        scene.objects.push_back({std::filesystem::path(a.models[k]).stem().string(), xray,
+                                 startPoses.back(), true});
+    }
+    SearchArgs given = search;
+    if (!similarityGiven) given.similarity = toString(SimilarityMeasure::EdgeDistance);
+    const RegistrationSettings settings = registrationSettings(given, realXraySettings());
+    std::printf("reference   %s (%s, %d x %d), %zu of %zu pixels valid\n", reference.c_str(),
+                file.format.c_str(), size.x, size.y, prepared.valid.count(),
+                prepared.valid.inside.size());
+    std::printf("camera      %s (%s)\n", a.camera.c_str(), cam.format.c_str());
+    std::printf("search      %s, %s, seed %llu, %s, one model at a time\n",
+                toString(settings.method), toString(settings.similarity),
+                static_cast<unsigned long long>(settings.seed), describeLevels(settings).c_str());
+    const RegistrationView view{0, prepared.image, prepared.valid};
+    double totalSeconds = 0.0;
+    for (std::size_t k = 0; k < n; ++k) {
+        SceneObject& object = scene.objects[k];
+        const ObjectRegistrationResult r =
+            registerObject(scene, k, view, startPoses[k], settings);
+        totalSeconds += r.seconds;
+        object.worldFromObject = r.worldFromObject;
+        const glm::dvec3 pivot = defaultPivot(*object.model);
+        const CameraPoseDifference d =
+            cameraPoseDifference(scene.cameras[0], startPoses[k], r.worldFromObject, pivot);
+        std::printf("\nmodel       %s (%s)\n", a.models[k].c_str(), object.model->describe().c_str());
+        std::printf("start       %s\n", formatPoseSpec(startPoses[k]).c_str());
+        std::printf("final pose  %s\n", formatPoseSpec(r.worldFromObject).c_str());
+        std::printf("moved       in-plane %.3f mm (u %.3f, v %.3f), depth %.3f mm; rotation %.3f deg "
+                    "(about the view %.3f, out of plane %.3f)\n",
+                    d.inPlaneMm, d.translationMm.x, d.translationMm.y, d.depthMm, d.rotationDeg,
+                    d.inPlaneRotationDeg, d.outOfPlaneRotationDeg);
+        std::printf("similarity  %.5f (%s at the finest level)\n", r.similarity,
+                    toString(settings.similarity));
+        if (!a.masks.empty()) {
+            const Mask& label = labels[k];
+            const Mask before = objectSilhouette(
+                {object.name, object.model, startPoses[k], true}, scene.cameras[0], search.threads);
+            const Mask after = objectSilhouette(object, scene.cameras[0], search.threads);
+            std::printf("IoU         %.4f against %s (start %.4f)\n", silhouetteIoU(after, label),
+                        a.masks[k].c_str(), silhouetteIoU(before, label));
+        }
+        std::printf("time        %.3f s (%d evaluations)%s\n", r.seconds, r.evaluations,
+                    r.stopped ? " (stopped)" : "");
+        if (!a.outs.empty()) {
+            const std::string& out = outPaths[k];
+            writePoseSpec(out, a.frame, a.outs.size() == n ? 0 : k, r.worldFromObject);
+            std::printf("wrote       %s (frame %d)\n", out.c_str(), a.frame);
+        }
+    }
+    if (n > 1) std::printf("\ntotal time  %.3f s for %zu models\n", totalSeconds, n);
+}
+
+}  // namespace fm::cli

@@ -1,0 +1,87 @@
+#!/usr/bin/env bash
+# `register --camera --model` on the JTML knee (shared data; skips without it):
+#  1. the femoral component of frame 0160 from a start 2-3 mm, 10 mm deep and 4 deg off the
+#     fem.jts pose: the printed IoU against the label mask is at least 0.95, the written .jts
+#     row is within 1 mm (x, y) and 2 deg of fem.jts, the .tra holds one 4x4 per frame row;
+#  2. both implants at once from fem.jts / tib.jts, written to one .tra (two objects);
+#  3. bad input exits non-zero naming the file and the field, before any search: a .jts row
+#     with five numbers, a singular calibration, a mask of another size, an open mesh, an
+#     --out that is neither .jts nor .tra, a --frame the file does not have.
+set -uo pipefail
+FM=$1
+DATA=${FM_DATA_DIR:-$(dirname "$0")/../../../shared/data}
+D="$DATA/jtml-kneel-tka-fluoro"
+[ -f "$D/fem.jts" ] || { echo "shared data not found: skipped"; exit 77; }
+OUT=$(mktemp -d)
+trap 'rm -rf "$OUT"' EXIT
+fail() { echo "FAIL: $*"; exit 1; }
+IMG="$D/AT_K1_V1_0160.tif"
+CAL="$D/calibration.txt"
+FEM="$D/KR_right_7_fem.stl"
+TIB="$D/KR_right_6_tib.stl"
+MASK="$D/Labels/fem/AT_K1_V1_0160_label_fem.tif"
+
+out=$("$FM" register --reference "$IMG" --camera "$CAL" --model "$FEM" --invert \
+    --start 20,18,-1017,-24,-5,2 --mask "$MASK" --out "$OUT/fem.jts" --threads 2) ||
+    fail "register exited $?: $out"
+grep -q "^final pose" <<<"$out" || fail "no final pose: $out"
+grep -q "^similarity" <<<"$out" || fail "no similarity: $out"
+grep -q "^time" <<<"$out" || fail "no time: $out"
+iou=$(sed -n 's/^IoU *\([0-9.]*\) .*/\1/p' <<<"$out")
+python3 -c "import sys; sys.exit(0 if float('$iou') >= 0.95 else 1)" || fail "IoU $iou < 0.95"
+python3 - "$OUT/fem.jts" "$D/fem.jts" <<'PY' || fail "written pose is not near fem.jts"
+import sys
+def row(p):
+    lines = open(p).read().split("\n")
+    assert lines[0].strip() == "JT_EULER_312", lines[0]
+    return [float(x) for x in lines[2].split(",")]
+a, b = row(sys.argv[1]), row(sys.argv[2])
+assert abs(a[0] - b[0]) < 1 and abs(a[1] - b[1]) < 1, (a, b)
+assert all(abs(a[i] - b[i]) < 2 for i in (3, 4, 5)), (a, b)
+PY
+
+out=$("$FM" register --reference "$D/AT_K1_V1_0170.tif" --camera "$CAL" --model "$FEM" --model "$TIB" \
+    --invert --start "$D/fem.jts" --start "$D/tib.jts" --frame 1 --out "$OUT/both.tra" --threads 2) ||
+    fail "two-model register exited $?: $out"
+grep -q "^total time" <<<"$out" || fail "no total time: $out"
+python3 - "$OUT/both.tra" <<'PY' || fail "both.tra layout"
+import sys
+rows = [l for l in open(sys.argv[1]).read().split("\n") if l]
+assert len(rows) == 2, rows
+assert all(v == "NaN" for v in rows[0].split(",")) and len(rows[0].split(",")) == 32
+vals = [float(v) for v in rows[1].split(",")]
+assert len(vals) == 32 and vals[12:16] == [0, 0, 0, 1] and vals[28:32] == [0, 0, 0, 1], vals
+PY
+
+refuse() {  # refuse WHAT PATTERN args...
+    local what=$1 pattern=$2; shift 2
+    msg=$("$FM" register "$@" 2>&1) && fail "$what accepted"
+    grep -q -- "$pattern" <<<"$msg" || fail "$what: message does not say '$pattern': $msg"
+    grep -q "^final pose" <<<"$msg" && fail "$what: refused only after the search"
+    return 0
+}
+base=(--reference "$IMG" --camera "$CAL" --model "$FEM" --invert)
+printf 'JT_EULER_312\nx,y,z,zr,xr,yr\n1,2,3,4,5\n' > "$OUT/five.jts"
+refuse "a .jts row with five numbers" "five.jts: line 3" "${base[@]}" --start "$OUT/five.jts"
+printf 'JT_INTCALIB\n1198\n0\n0\n0\n' > "$OUT/singular.txt"
+refuse "a zero pixel pitch" "singular.txt" --reference "$IMG" --camera "$OUT/singular.txt" \
+    --model "$FEM" --start "$D/fem.jts"
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\n' > "$OUT/open.obj"
+refuse "an open mesh" "open.obj" --reference "$IMG" --camera "$CAL" --model "$OUT/open.obj" \
+    --start "$D/fem.jts"
+refuse "--out .txt" "must end in .jts or .tra" "${base[@]}" --start "$D/fem.jts" --out "$OUT/p.txt"
+refuse "a frame the file does not have" "frame 5 does not exist" "${base[@]}" --start "$D/fem.jts" --frame 5
+refuse "two starts for one model" "one per --model" "${base[@]}" --start "$D/fem.jts" --start "$D/tib.jts"
+refuse "a mask per model" "--mask" "${base[@]}" --start "$D/fem.jts" --mask "$MASK" --mask "$MASK"
+# A mask of another size: a 16 x 16 PNG (stb reads it), written with python's zlib.
+python3 - "$OUT/small.png" <<'PY'
+import struct, sys, zlib
+w = h = 16
+raw = b"".join(b"\0" + bytes(w) for _ in range(h))
+def chunk(t, d): return struct.pack(">I", len(d)) + t + d + struct.pack(">I", zlib.crc32(t + d) & 0xffffffff)
+open(sys.argv[1], "wb").write(b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", w, h, 8, 0, 0, 0, 0))
+    + chunk(b"IDAT", zlib.compress(raw)) + chunk(b"IEND", b""))
+PY
+refuse "a mask of another size" "small.png" "${base[@]}" --start "$D/fem.jts" --mask "$OUT/small.png"
+refuse "--camera without --model" "needs --model" --reference "$IMG" --camera "$CAL" --start "$D/fem.jts"
+echo "register --camera --model CLI checks passed"

@@ -1,0 +1,126 @@
+// The rasterised silhouette (meshdrr/RasterSilhouette.h) against the ray-traced one, which
+// is exact (MeshDrrImageTest checks its chords): the same pixels for a box, a sphere and a
+// genus-1 frame in random poses of a tilted camera, and for the JTML implants at their .jts
+// poses (where the ray-traced silhouette equals the label masks); no answer when the model
+// reaches behind the source; a scene renders the footprint with footprintOnly.
+#include <gtest/gtest.h>
+
+#include "camera/CameraFile.h"
+#include "common/TestData.h"
+#include "common/TestMeshes.h"
+#include "core/Random.h"
+#include "meshdrr/MeshDrr.h"
+#include "meshdrr/RasterSilhouette.h"
+#include "model/MeshModel.h"
+#include "pose/JointTrackPoses.h"
+#include "scene/MeshXrayModel.h"
+#include "scene/Scene.h"
+
+namespace {
+
+using glm::dvec3;
+
+fm::ProjectionGeometry tiltedCamera() {
+    fm::ProjectionGeometry g;
+    g.source = dvec3(120, -80, 580);
+    const dvec3 view = glm::normalize(-g.source);
+    const dvec3 u = glm::normalize(glm::cross(view, dvec3(0.3, 1, 0.1)));
+    const dvec3 v = glm::cross(view, u);
+    g.detector.size = {120, 100};
+    g.detector.spacing = {0.7, 0.7};
+    g.detector.u = u;
+    g.detector.v = v;
+    const dvec3 center = g.source + (glm::length(g.source) + 400.0) * view;
+    g.detector.origin = center - 0.5 * (120 - 1) * 0.7 * u - 0.5 * (100 - 1) * 0.7 * v;
+    return g;
+}
+
+std::size_t differing(const fm::Mask& a, const fm::Mask& b) {
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < a.inside.size(); ++i) n += (a.inside[i] != 0) != (b.inside[i] != 0);
+    return n;
+}
+
+TEST(RasterSilhouette, SamePixelsAsTheRayTracedSilhouette) {
+    const fm::Mesh meshes[] = {
+        fm::test::boxMesh({-12, -7, -9}, {10, 15, 6}),
+        fm::test::uvSphereMesh({-5, 3, 2}, 14.f, 16, 32),
+        fm::test::squareFrameMesh(6.f, 3.f, 8.f, 12.f),
+    };
+    fm::Rng rng(7);
+    int compared = 0;
+    for (const fm::Mesh& mesh : meshes) {
+        const auto model = fm::prepareMeshDrr(mesh, true);
+        for (int k = 0; k < 8; ++k) {
+            // A random rotation and shift of the model (the camera moved the other way).
+            const fm::RigidTransform pose =
+                fm::RigidTransform::translate({rng.uniform(-10, 10), rng.uniform(-10, 10), rng.uniform(-30, 30)}) *
+                fm::rotationAbout(glm::normalize(dvec3(rng.uniform(-1, 1), rng.uniform(-1, 1), 1.0)),
+                                  rng.uniform(-180, 180), {0, 0, 0});
+            const fm::ProjectionGeometry g = fm::transformGeometry(pose.inverse(), tiltedCamera());
+            const auto raster = fm::rasterMeshSilhouette(*model, g);
+            ASSERT_TRUE(raster);
+            const fm::Mask traced = fm::renderMeshSilhouette(*model, g);
+            ASSERT_GT(traced.count(), 300u);
+            EXPECT_EQ(differing(*raster, traced), 0u) << "mesh " << compared / 8 << " pose " << k;
+            ++compared;
+        }
+    }
+    // And it can fail: the silhouette half a pixel off is different.
+    const auto model = fm::prepareMeshDrr(meshes[0], true);
+    fm::ProjectionGeometry moved = tiltedCamera();
+    moved.detector.origin += 0.35 * moved.detector.u;
+    EXPECT_GT(differing(*fm::rasterMeshSilhouette(*model, moved),
+                        fm::renderMeshSilhouette(*model, tiltedCamera())),
+              20u);
+}
+
+TEST(RasterSilhouette, NoAnswerWhenTheModelReachesBehindTheSource) {
+    const auto model = fm::prepareMeshDrr(fm::test::boxMesh({-10, -10, -10}, {10, 10, 10}), true);
+    fm::ProjectionGeometry g = tiltedCamera();
+    g.source = {0, 0, 0};  // inside the box
+    EXPECT_FALSE(fm::rasterMeshSilhouette(*model, g));
+    // A scene falls back to tracing: the footprint is still there.
+    fm::Scene scene;
+    scene.cameras.push_back(g);
+    scene.objects.push_back({"box", std::make_shared<fm::MeshXrayModel>(model, 0.5), {}, true});
+    fm::XrayRenderSettings settings;
+    settings.footprintOnly = true;
+    const fm::Image image = fm::renderView(scene, 0, settings);
+    const fm::Mask traced = fm::renderMeshSilhouette(*model, g);
+    for (std::size_t i = 0; i < image.pixels.size(); ++i)
+        ASSERT_EQ(image.pixels[i] > 0.0f, traced.inside[i] != 0) << i;
+}
+
+TEST(RasterSilhouette, FootprintOnlySceneIsMuOnTheSilhouette) {
+    const auto model = fm::prepareMeshDrr(fm::test::uvSphereMesh({0, 0, 0}, 12.f, 16, 32), true);
+    fm::Scene scene;
+    scene.cameras.push_back(tiltedCamera());
+    scene.objects.push_back({"sphere", std::make_shared<fm::MeshXrayModel>(model, 0.25), {}, true});
+    fm::XrayRenderSettings settings;
+    settings.footprintOnly = true;
+    const fm::Image image = fm::renderView(scene, 0, settings);
+    const fm::Mask traced = fm::renderMeshSilhouette(*model, tiltedCamera());
+    for (std::size_t i = 0; i < image.pixels.size(); ++i)
+        ASSERT_EQ(image.pixels[i], traced.inside[i] ? 0.25f : 0.0f) << i;
+}
+
+TEST(RasterSilhouette, JtmlImplantsAtTheirJtsPoses) {
+    FM_REQUIRE_SHARED_DATA("jtml-kneel-tka-fluoro/fem.jts");
+    const auto dir = fm::test::sharedDataDir() / "jtml-kneel-tka-fluoro";
+    const fm::ProjectionGeometry camera = fm::toProjectionGeometry(
+        fm::readCameraFile(dir / "calibration.txt", glm::ivec2(1024, 1024)).camera);
+    for (const char* part : {"fem", "tib"}) {
+        const auto model = fm::prepareMeshDrr(fm::loadMeshModel(
+            dir / (std::string(part) == "fem" ? "KR_right_7_fem.stl" : "KR_right_6_tib.stl")));
+        const fm::JointTrackPoses poses = fm::readJointTrackPoses(dir / (std::string(part) + ".jts"));
+        for (int f = 0; f < 3; ++f) {
+            const fm::ProjectionGeometry g =
+                fm::transformGeometry(poses.frames.at(f).cameraFromModel().inverse(), camera);
+            const fm::Mask traced = fm::renderMeshSilhouette(*model, g);
+            EXPECT_EQ(differing(*fm::rasterMeshSilhouette(*model, g), traced), 0u) << part << " " << f;
+        }
+    }
+}
+
+}  // namespace
