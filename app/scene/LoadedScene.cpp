@@ -40,6 +40,10 @@ double foregroundLevel(const Volume& volume) {
 
 }  // namespace
 
+std::uint64_t newSceneGeneration() {
+    return nextGeneration++;
+}
+
 bool looksLikeHounsfield(const Volume& volume) {
     return guessHounsfield(volume).hounsfield;  // the CLI's rule too (engine/volume)
 }

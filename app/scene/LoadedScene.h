@@ -50,6 +50,9 @@ using SceneProgress = std::function<void(const std::string& stage, float fractio
 // reader's fm::Error unchanged when the volume cannot be loaded.
 std::shared_ptr<LoadedScene> buildScene(const std::string& spec, const SceneProgress& progress);
 
+// A generation number no scene has had yet (cache keys): for a scene changed after loading.
+std::uint64_t newSceneGeneration();
+
 // True for HU volumes, and for volumes without units whose 1st percentile is air (<= -900).
 bool looksLikeHounsfield(const Volume& volume);
 

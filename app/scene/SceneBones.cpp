@@ -1,10 +1,12 @@
 #include "scene/SceneBones.h"
 
 #include <algorithm>
+#include <limits>
 
 #include "bones/BoneScene.h"
 #include "bones/BoneVolume.h"
 #include "bones/LabelSource.h"
+#include "bones/RegionGrow.h"
 #include "core/Error.h"
 #include "match/PoseError.h"
 #include "mesh/MarchingCubes.h"
@@ -31,38 +33,87 @@ std::array<double, 13> objectState(const SceneObject& o) {
 
 }  // namespace
 
+namespace {
+
+// One bone per selection: its own volume, surface, targets; pivots at their centroids.
+std::shared_ptr<SceneBones> bonesFromLabels(const Volume& ct, std::shared_ptr<const Volume> labels,
+                                            const std::vector<BoneSelection>& selections,
+                                            const DrrValueOptions& values, double iso) {
+    auto out = std::make_shared<SceneBones>();
+    BoneSceneOptions options;
+    options.values = values;
+    // Outside a bone is "nothing": air for HU volumes (mu 0), 0 for volumes integrated as stored
+    // (-1000 there would subtract 1000 per mm, and bone + rest would not add up to the whole).
+    if (values.values == DrrValues::Raw) options.volume.airValue = 0.0f;
+    out->scene = makeBoneScene(ct, *labels, selections, options);
+    for (const BoneSelection& b : selections) {
+        SceneBone bone;
+        bone.name = b.name;
+        auto volume = std::make_shared<Volume>(boneVolume(ct, *labels, b, options.volume));
+        MarchingCubesOptions mc;
+        mc.isoValue = iso;
+        bone.mesh = std::make_shared<Mesh>(marchingCubes(*volume, mc));
+        try {
+            bone.targets = boneTargetPoints(*volume, std::min(200.0, iso), 1000);
+        } catch (const Error&) {
+            bone.targets.clear();  // nothing that dense: no mTRE for it
+        }
+        bone.pivot = boneCentroid(*labels, b);
+        bone.volume = std::move(volume);
+        out->bones.push_back(std::move(bone));
+    }
+    out->labels = std::move(labels);
+    return out;
+}
+
+}  // namespace
+
 std::shared_ptr<const SceneBones> buildSceneBones(const std::string& spec, const Volume& ct,
                                                   const DrrValueOptions& values, double iso) {
     if (!isKneePhantom(spec)) return nullptr;
     const KneePhantomParams params = kneePhantomParams(spec.substr(std::string("phantom:").size()));
-    const LabelledVolume labels = loadLabels(spec, "", ct);
-    auto out = std::make_shared<SceneBones>();
-    BoneSceneOptions options;
-    options.values = values;
-    const std::vector<BoneSelection> selections = kneeBones();
-    out->scene = makeBoneScene(ct, labels.labels, selections, options);
+    auto labels = std::make_shared<const Volume>(loadLabels(spec, "", ct).labels);
+    auto out = bonesFromLabels(ct, labels, kneeBones(), values, iso);
+    // Femur and tibia turn about the flexion axis (a turn about x there flexes the knee as the
+    // phantom does); the patella about its centre.
     const glm::dvec3 axisPoint = kneeModelToWorld(params, KneeSegment::Femur, kFlexionAxisPoint);
-    for (const BoneSelection& b : selections) {
-        SceneBone bone;
-        bone.name = b.name;
-        auto volume = std::make_shared<Volume>(boneVolume(ct, labels.labels, b, options.volume));
-        MarchingCubesOptions mc;
-        mc.isoValue = iso;
-        bone.mesh = std::make_shared<Mesh>(marchingCubes(*volume, mc));
-        bone.targets = boneTargetPoints(*volume, 200.0, 1000);
-        // Femur and tibia turn about the flexion axis (a turn about x there flexes the knee as
-        // the phantom does); the patella about its centre.
-        bone.pivot = b.name == kKneePatella
-                         ? kneeModelToWorld(params, KneeSegment::Patella, kPatellaCenter)
-                         : axisPoint;
-        bone.volume = std::move(volume);
-        out->bones.push_back(std::move(bone));
-    }
+    for (SceneBone& b : out->bones)
+        b.pivot = b.name == kKneePatella
+                      ? kneeModelToWorld(params, KneeSegment::Patella, kPatellaCenter)
+                      : axisPoint;
     out->femur = 0;
     out->tibia = 1;
     out->knee = KneeJoint{kneeAnatomicalFrame(params, KneeSegment::Femur),
                           kneeAnatomicalFrame(params, KneeSegment::Tibia),
                           params.leftKnee ? BodySide::Left : BodySide::Right};
+    return out;
+}
+
+std::shared_ptr<const SceneBones> growBone(const Volume& ct, const SceneBones* bones,
+                                           const glm::dvec3& from, const glm::dvec3& to,
+                                           double level, const DrrValueOptions& values) {
+    if (bones && !bones->grown)
+        throw Error("region growing: this scene's bones come from its labels; grow bones in a "
+                    "CT opened without them");
+    Volume labels = bones ? *bones->labels : ct;
+    if (!bones) std::fill(labels.values.begin(), labels.values.end(), 0.0f);
+    // The bones already there are not bone any more for the new one: it stops at them.
+    Volume free = ct;
+    for (std::size_t n = 0; n < free.values.size(); ++n)
+        if (labels.values[n] != 0.0f) free.values[n] = std::numeric_limits<float>::lowest();
+    const std::optional<glm::ivec3> seed = firstVoxelAlong(free, from, to, level);
+    if (!seed)
+        throw Error("region growing: no new bone (at or above " + std::to_string(int(level)) +
+                    ") under that pixel");
+    const Volume grown = regionGrow(free, *seed, {level, 1e30});
+    const int label = bones ? int(bones->bones.size()) + 1 : 1;
+    for (std::size_t n = 0; n < labels.values.size(); ++n)
+        if (grown.values[n] != 0.0f) labels.values[n] = float(label);
+    std::vector<BoneSelection> selections;
+    for (int l = 1; l <= label; ++l) selections.push_back({"region " + std::to_string(l), {l}});
+    auto out = bonesFromLabels(ct, std::make_shared<const Volume>(std::move(labels)), selections,
+                               values, level);
+    out->grown = true;
     return out;
 }
 

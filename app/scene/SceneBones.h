@@ -30,15 +30,25 @@ struct SceneBone {
 
 struct SceneBones {
     std::vector<SceneBone> bones;
+    std::shared_ptr<const Volume> labels;  // on the CT's grid; bone i holds label i + 1 when grown
     Scene scene;  // one object per bone (the same order), then "rest"
     std::optional<KneeJoint> knee;
     int femur = -1, tibia = -1;  // indices into bones (knee)
+    bool grown = false;          // made by region growing from clicks (more may be added)
 };
 
 // The articulated knee of the phantom named `spec` ("phantom:knee[,options]"), or null for any
 // other volume. `ct` is that phantom; `iso` the surface level.
 std::shared_ptr<const SceneBones> buildSceneBones(const std::string& spec, const Volume& ct,
                                                   const DrrValueOptions& values, double iso);
+
+// `bones` (may be null: none yet) with one more bone, grown (engine regionGrow, 6-connected,
+// at or above `level`) from the first voxel at or above `level` on the ray from `from` to `to`
+// (world mm: the source and a clicked film pixel). It never takes voxels of the bones already
+// there. Throws fm::Error when the ray meets no new bone, or `bones` are a knee's.
+std::shared_ptr<const SceneBones> growBone(const Volume& ct, const SceneBones* bones,
+                                           const glm::dvec3& from, const glm::dvec3& to,
+                                           double level, const DrrValueOptions& values);
 
 // The list the UI shows for these bones (names, colours; all shown, none moved).
 std::vector<BoneView> boneViews(const SceneBones& bones);

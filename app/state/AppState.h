@@ -167,6 +167,8 @@ struct Requests {
     bool newFlex = false;    // start the flex game, or draw another hidden flexion
     bool checkFlex = false;  // judge the tibia's motion against the hidden one
     bool endFlex = false;
+    // A click on your DRR while growing: column, row and the image's width and height.
+    std::optional<std::array<int, 4>> growAtPixel;
 };
 
 // The bone surface of the 3D view: the level the user asks for, and what is shown.
@@ -212,6 +214,9 @@ struct BonesState {
     // mm; flexion, varus, internal rotation deg).
     std::array<double, 6> angles{};
     FlexGame flex;
+    // Region growing: the next click on your DRR grows a bone from the voxel it hits.
+    bool growArmed = false;
+    std::string growMessage;  // what the last grow did, or why it could not
 };
 
 // Bone surfaces and swatches, in the order of the bones.

@@ -318,6 +318,7 @@ void App::processRequests() {
     if (requests.endFlex) state_.bones.flex = FlexGame{};
     if (requests.newFlex) newFlex();
     if (requests.checkFlex) checkFlex();
+    if (requests.growAtPixel) growAt(*requests.growAtPixel);
     refreshMatchTexts();
 }
 

@@ -94,6 +94,7 @@ class App {
     void updateBones();                     // live joint angles, once per frame
     void newFlex();
     void checkFlex();
+    void growAt(const std::array<int, 4>& pixel);  // region growing from a clicked pixel
 
     RenderBackend& backend_;
     AppOptions options_;

@@ -2,8 +2,10 @@
 // the bone list and the sliders), the knee's joint angles, and the flex game, whose hidden
 // reference moves the tibia relative to the femur. Every number comes from engine/bones.
 #include <algorithm>
+#include <cstdio>
 
 #include "bones/KneeMotionGame.h"
+#include "core/Error.h"
 #include "scene/Matching.h"
 #include "ui/App.h"
 
@@ -104,6 +106,43 @@ void App::checkFlex() {
     flex.outcome = std::move(m);
     flex.outcomeIsStale = false;
     flex.tibiaAtCheck = bones.list[sb.tibia].motion;
+}
+
+void App::growAt(const std::array<int, 4>& pixel) {
+    BonesState& bones = state_.bones;
+    bones.growArmed = false;
+    if (!scene_ || state_.mode == ImagingMode::Slice) return;
+    // The ray of the clicked pixel: from the source to that pixel's centre on the film (the
+    // shown image may be the coarse preview: scaled to the full film).
+    const ProjectionGeometry g = appGeometry(*scene_, state_.userPose);
+    const double col = (pixel[0] + 0.5) * g.detector.size.x / std::max(1, pixel[2]) - 0.5;
+    const double row = (pixel[1] + 0.5) * g.detector.size.y / std::max(1, pixel[3]) - 0.5;
+    std::shared_ptr<const SceneBones> grown;
+    try {
+        grown = growBone(*scene_->volume, scene_->bones.get(), g.source,
+                         g.detector.pixelCenter(col, row), state_.bone.shownLevel,
+                         appDrrValueOptions(*scene_->volume));
+    } catch (const Error& e) {
+        bones.growMessage = e.what();
+        return;
+    }
+    // A new scene (the loaded one stays as it was in the loader's memory): the old bones keep
+    // what the user did with them, the new one is shown.
+    auto scene = std::make_shared<LoadedScene>(*scene_);
+    scene->bones = grown;
+    scene->generation = newSceneGeneration();
+    scene_ = std::move(scene);
+    std::vector<BoneView> list = boneViews(*grown);
+    for (std::size_t i = 0; i < bones.list.size() && i < list.size(); ++i) list[i] = bones.list[i];
+    bones.list = std::move(list);
+    boneSurfaces_.clear();
+    for (const SceneBone& b : grown->bones) boneSurfaces_.push_back(b.mesh);
+    showBone(nullptr, state_.bone.shownLevel);
+    const SceneBone& added = grown->bones.back();
+    char text[160];
+    std::snprintf(text, sizeof(text), "%s: %zu triangles", added.name.c_str(),
+                  added.mesh->triangleCount());
+    bones.growMessage = text;
 }
 
 std::vector<render::SurfaceItem> App::surfaces() const {

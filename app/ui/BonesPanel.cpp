@@ -38,9 +38,20 @@ void Ui::kneeAnglesLine(const AppState& state) {
 
 void Ui::bonesTab(AppState& state) {
     BonesState& bones = state.bones;
+    if (!bones.isKnee) {
+        // Bones of a CT without labels: grown from a click, one at a time.
+        ImGui::Checkbox("Grow a bone: click it in your DRR", &bones.growArmed);
+        record("checkbox:grow");
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("The first voxel at or above the surface level (%.0f) on the ray "
+                              "through the clicked pixel seeds it; it grows over the connected "
+                              "voxels at or above that level, never into another bone",
+                              state.bone.shownLevel);
+        if (!bones.growMessage.empty()) dimWrapped("%s", bones.growMessage.c_str());
+    }
     if (bones.list.empty()) {
-        dimWrapped("This CT is one object. The knee phantom (Knee) has its femur, tibia and "
-                   "patella as bones of their own.");
+        dimWrapped("This CT is one object until you grow a bone. The knee phantom (Knee) has "
+                   "its femur, tibia and patella as bones of their own.");
         return;
     }
     int& target = bones.sliderTarget;

@@ -87,6 +87,10 @@ void Ui::imageWidget(AppState& state, const std::string& id, unsigned texture, c
         const bool hasData = !dataMask || dataMask->width != image->width ||
                              dataMask->height != image->height || dataMask->at(col, row);
         state.readout = {true, id, col, row, image->at(col, row), hasData};
+        // Growing a bone: a click on your DRR names the pixel whose ray seeds it.
+        if (id == "image:user" && state.bones.growArmed &&
+            ImGui::IsMouseClicked(ImGuiMouseButton_Left))
+            state.requests.growAtPixel = {col, row, image->width, image->height};
     }
 }
 

@@ -1,5 +1,6 @@
 #include "bones/RegionGrow.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -44,6 +45,43 @@ glm::ivec3 nearestVoxel(const Volume& volume, const glm::dvec3& world) {
         std::abs(ijk.x) > 1e9 || std::abs(ijk.y) > 1e9 || std::abs(ijk.z) > 1e9)
         throw Error("nearest voxel: the point is not finite or absurdly far");
     return glm::ivec3(ijk);
+}
+
+std::optional<glm::ivec3> firstVoxelAlong(const Volume& volume, const glm::dvec3& from,
+                                          const glm::dvec3& to, double threshold) {
+    volume.validate("volume");
+    // In voxel index space (an affine map of the world), clipped to the voxels' box.
+    const glm::dvec3 a = volume.worldToIndex(from), b = volume.worldToIndex(to);
+    for (int k = 0; k < 3; ++k)
+        if (!std::isfinite(a[k]) || !std::isfinite(b[k]))
+            throw Error("first voxel along a ray: the points are not finite");
+    double t0 = 0.0, t1 = 1.0;
+    for (int k = 0; k < 3; ++k) {
+        const double lo = -0.5, hi = volume.dims[k] - 0.5, d = b[k] - a[k];
+        if (d == 0.0) {
+            if (a[k] < lo || a[k] > hi) return std::nullopt;
+            continue;
+        }
+        double e0 = (lo - a[k]) / d, e1 = (hi - a[k]) / d;
+        if (e0 > e1) std::swap(e0, e1);
+        t0 = std::max(t0, e0);
+        t1 = std::min(t1, e1);
+    }
+    if (t0 > t1) return std::nullopt;
+    // A quarter of a voxel per step through the box (at most a few times its size in voxels).
+    const double voxels = glm::length(b - a) * (t1 - t0);
+    const long steps = long(std::ceil(std::min(4.0 * voxels, 8.0 * (volume.dims.x + volume.dims.y +
+                                                                    volume.dims.z))));
+    for (long n = 0; n <= steps; ++n) {
+        const double t = t0 + (t1 - t0) * (steps > 0 ? double(n) / double(steps) : 0.0);
+        const glm::dvec3 ijk = glm::floor(a + (b - a) * t + 0.5);
+        if (glm::any(glm::lessThan(ijk, glm::dvec3(0.0))) ||
+            glm::any(glm::greaterThanEqual(ijk, glm::dvec3(volume.dims))))
+            continue;
+        const glm::ivec3 v(ijk);
+        if (volume.at(v.x, v.y, v.z) >= threshold) return v;
+    }
+    return std::nullopt;
 }
 
 }  // namespace fm

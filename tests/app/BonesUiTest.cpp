@@ -245,3 +245,56 @@ TEST_F(BonesUi, TheFlexGameHidesAFlexionThatTheTibiaMustFind) {
 
 }  // namespace
 }  // namespace fm::test
+
+namespace fm::test {
+namespace {
+
+TEST_F(BonesUi, AClickOnYourDrrGrowsABoneFromTheVoxelItHits) {
+    app->state().requests.loadVolume = std::string("phantom:sphere,radius=20");
+    app->waitForLoad();
+    script->idle(1);
+    ASSERT_EQ(app->scene()->bones, nullptr);
+    script->clickWidget("tab:bones");
+    script->clickWidget("checkbox:grow");
+    ASSERT_TRUE(app->state().bones.growArmed);
+    const Image whole = app->userDrr();
+    // The centre of your DRR: its ray runs through the sphere's centre.
+    script->click(script->widget("image:user").center());
+    script->idle(1);
+    ASSERT_NE(app->scene()->bones, nullptr) << app->state().bones.growMessage;
+    ASSERT_EQ(app->state().bones.list.size(), 1u);
+    EXPECT_EQ(app->state().bones.list[0].name, "region 1");
+    EXPECT_FALSE(app->state().bones.growArmed) << "one click, one bone";
+    // The region is every voxel at or above the surface level (the sphere is one piece).
+    const Volume& ct = *app->scene()->volume;
+    const double level = app->state().bone.shownLevel;
+    std::size_t expected = 0, labelled = 0;
+    for (float v : ct.values) expected += v >= level;
+    for (float v : app->scene()->bones->labels->values) labelled += v == 1.0f;
+    EXPECT_EQ(labelled, expected);
+    EXPECT_GT(labelled, 1000u);
+    // All shown: the same DRR; the region hidden, the rest alone; both add up to the whole.
+    EXPECT_EQ(app->userDrr().pixels, whole.pixels);
+    script->clickWidget("checkbox:bone-region 1");
+    script->idle(1);
+    const Image rest = app->userDrr();
+    app->state().bones.list[0].visible = true;
+    app->state().bones.restVisible = false;
+    script->idle(1);
+    const Image region = app->userDrr();
+    Image sum = rest;
+    for (std::size_t i = 0; i < sum.pixels.size(); ++i) sum.pixels[i] += region.pixels[i];
+    EXPECT_LT(maxAbsDifference(sum, whole), 1e-5 * peak(whole));
+    EXPECT_GT(peak(region), 0.5 * peak(whole)) << "the region is the dense part";
+    // The same pixel again: its ray meets only the bone already grown, which it never takes.
+    app->state().bones.restVisible = true;
+    script->clickWidget("checkbox:grow");
+    script->click(script->widget("image:user").center());
+    script->idle(1);
+    EXPECT_EQ(app->state().bones.list.size(), 1u);
+    EXPECT_NE(app->state().bones.growMessage.find("no new bone"), std::string::npos)
+        << app->state().bones.growMessage;
+}
+
+}  // namespace
+}  // namespace fm::test

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "bones/ConnectedComponents.h"
 #include "bones/LabelMap.h"
 #include "bones/RegionGrow.h"
@@ -74,6 +76,28 @@ TEST(RegionGrow, GrowsTheClickedPieceOnly) {
     EXPECT_THROW(fm::regionGrow(ct, {16, 0, 0}), fm::Error);   // outside
     EXPECT_THROW(fm::regionGrow(ct, {2, 2, 2}, {.lower = 10.0, .upper = 5.0}), fm::Error);
     EXPECT_EQ(fm::nearestVoxel(ct, {2.4, 1.6, 7.0}), glm::ivec3(2, 2, 7));
+}
+
+TEST(RegionGrow, TheFirstBoneVoxelAlongARayIsWhereItEntersTheBone) {
+    fm::Volume ct = fm::test::grid({16, 10, 10}, {1.0, 1.0, 1.0}, {0.0, 0.0, 0.0}, -1000.0f);
+    fm::test::fillBox(ct, {1, 1, 1}, {3, 3, 3}, 500.0f);
+    fm::test::fillBox(ct, {6, 1, 1}, {12, 4, 4}, 800.0f);
+    // Along +x through row (y, z) = (2, 2): the first box from the left, the second from the
+    // right; voxel centres are at whole mm, a voxel spans +-0.5 mm.
+    EXPECT_EQ(fm::firstVoxelAlong(ct, {-5.0, 2.0, 2.0}, {20.0, 2.0, 2.0}, 300.0),
+              glm::ivec3(1, 2, 2));
+    EXPECT_EQ(fm::firstVoxelAlong(ct, {20.0, 2.0, 2.0}, {-5.0, 2.0, 2.0}, 300.0),
+              glm::ivec3(12, 2, 2));
+    EXPECT_EQ(fm::firstVoxelAlong(ct, {-5.0, 2.0, 2.0}, {20.0, 2.0, 2.0}, 600.0),
+              glm::ivec3(6, 2, 2)) << "the first box is below this level";
+    // Obliquely through both boxes' gap at y = 8 nothing is bone; outside the volume neither.
+    EXPECT_FALSE(fm::firstVoxelAlong(ct, {-5.0, 8.0, 2.0}, {20.0, 8.0, 8.0}, 300.0));
+    EXPECT_FALSE(fm::firstVoxelAlong(ct, {-5.0, 50.0, 2.0}, {20.0, 50.0, 2.0}, 300.0));
+    EXPECT_THROW(fm::firstVoxelAlong(ct, {NAN, 0, 0}, {1, 1, 1}, 300.0), fm::Error);
+    // The seed grows into the whole box.
+    const auto seed = fm::firstVoxelAlong(ct, {2.0, -3.0, 2.0}, {2.0, 20.0, 2.0}, 300.0);
+    ASSERT_TRUE(seed);
+    EXPECT_EQ(fm::labelVoxelCounts(fm::regionGrow(ct, *seed)).at(1), 27u);
 }
 
 }  // namespace
