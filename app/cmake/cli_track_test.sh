@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
 # `fluoromatch track` on the shipped wrist trial: refusals name what is wrong; the .tra is one
 # row per trial frame (16 numbers, NaN where not tracked); a run killed after a frame and
-# resumed gives the same file, byte for byte, as one uninterrupted run.
+# resumed gives the same file, byte for byte, as one uninterrupted run. Bad frames: a camera
+# with a frame missing is refused naming both cameras; an unreadable frame, or one of another
+# size, in the middle of a sequence is reported naming its file and skipped (NaN row), and the
+# frames before and after it are tracked and kept.
 set -euo pipefail
 FM=$1
 SRC=$(cd "$(dirname "$0")/../.." && pwd)
@@ -10,7 +13,7 @@ if [ ! -d "$SRC/../shared/data/autoscoper-bvr" ]; then
     if [ "${CI:-}" = "true" ]; then echo "FAIL: ../shared/data/autoscoper-bvr missing under CI"; exit 1; fi
     echo "SKIP: ../shared/data/autoscoper-bvr not found beside the repository"; exit 77
 fi
-T=$(mktemp -d); trap 'rm -rf "$T"' EXIT
+T=$(mktemp -d); trap '[ -n "${KEEP:-}" ] || rm -rf "$T"' EXIT
 fail() { echo "FAIL: $*"; exit 1; }
 expect_error() {  # expect_error TEXT command...
     local text=$1; shift
@@ -39,4 +42,40 @@ head -1 "$T/whole.csv" | grep -q "cost_cam1,cost_cam2,evaluations,time_ms" || fa
     --out "$T/resumed.tra" >"$T/out" 2>&1 || { cat "$T/out"; fail "resume failed"; }
 grep -q "1 frames of radius already in" "$T/out" || fail "resume did not say what it kept"
 cmp "$T/whole.tra" "$T/resumed.tra" || fail "resumed run differs from the uninterrupted one"
+
+# Bad frames, on a copy of the trial at 110 pixels (short) whose frames are links to the real
+# ones, frame 1 of camera 2 replaced.
+W=$SRC/../shared/data/autoscoper-bvr
+mkframes() {  # mkframes DIR: both cameras' three frames as links
+    mkdir -p "$1/cam01" "$1/cam02"
+    for c in 01 02; do for f in 0002 0099 0158; do
+        ln -s "$W/XMA_UND/xr_data_wrist_cam$c/xr_rad_uln_cam${c}_UND.$f.tif" "$1/cam$c/"; done; done
+}
+mktrial() {  # mktrial DIR: a trial JSON reading DIR/cam01 and DIR/cam02
+    sed -e "s#\.\./\.\./\.\./shared/data/autoscoper-bvr/XMA_UND/xr_data_wrist_#$1/#g" \
+        -e "s#\.\./\.\./\.\./shared/data/autoscoper-bvr#$W#g" \
+        -e 's#"render_resolution": \[512, 512\]#"render_resolution": [110, 110]#' "$TRIAL" > "$1/t.json"
+}
+bad=$T/bad99; mkframes "$bad"; mktrial "$bad"
+B=$bad/cam02/xr_rad_uln_cam02_UND.0099.tif
+rm "$B"; head -c 3000 "$W/XMA_UND/xr_data_wrist_cam02/xr_rad_uln_cam02_UND.0099.tif" > "$B"  # truncated
+"$FM" track --trial "$bad/t.json" --bone radius --start "$T/start.tra" --threads 2 \
+    --out "$T/bad.tra" --csv "$T/bad.csv" >"$T/out" 2>&1 || { cat "$T/out"; fail "a bad frame must not end the run"; }
+grep -q "frame 1 skipped: .*xr_rad_uln_cam02_UND.0099.tif" "$T/out" || { cat "$T/out"; fail "the bad frame's file is not named"; }
+awk -F, 'NR==2 && $1!="NaN" {exit 1} (NR==1 || NR==3) && (NF!=16 || $1=="NaN") {exit 1}' "$T/bad.tra" \
+    || { cat "$T/bad.tra"; fail "frames 0 and 2 must be tracked, frame 1 NaN"; }
+grep -q "^1,radius,bad frame,0,.*xr_rad_uln_cam02_UND.0099.tif" "$T/bad.csv" || { cat "$T/bad.csv"; fail "CSV row of the bad frame"; }
+grep -q "radius: 2 of 3 frames tracked" "$T/out" || fail "the summary must count 2 frames"
+# A frame of another size in the middle (a 64 x 64 TIFF): skipped the same way, naming size and file.
+rm "$B"; "$FM" drr --size 64x64 --out "$B" >/dev/null 2>&1 || fail "could not write a 64 x 64 TIFF"
+"$FM" track --trial "$bad/t.json" --bone radius --start "$T/start.tra" --threads 2 \
+    --out "$T/size.tra" >"$T/out" 2>&1 || { cat "$T/out"; fail "a frame of another size must not end the run"; }
+grep -q "frame 1 skipped: .*64.*xr_rad_uln_cam02_UND.0099.tif\|frame 1 skipped: .*xr_rad_uln_cam02_UND.0099.tif.*64" "$T/out" \
+    || { cat "$T/out"; fail "the frame of another size is not named with its size"; }
+awk -F, 'NR==2 && $1!="NaN" {exit 1} (NR==1 || NR==3) && $1=="NaN" {exit 1}' "$T/size.tra" || fail "frame 1 NaN, 0 and 2 kept"
+# A frame missing from camera 2: refused before any work, naming both cameras and their counts.
+miss=$T/missing; mkframes "$miss"; mktrial "$miss"; rm "$miss/cam02/xr_rad_uln_cam02_UND.0099.tif"
+expect_error "camera cam01 has 3 frames but camera cam02 has 2 (.*missing/cam02.; a frame missing?)" \
+    "$FM" track --trial "$miss/t.json" --bone radius --start "$T/start.tra" --out "$T/miss.tra"
+[ ! -e "$T/miss.tra" ] || fail "a refused trial must not write a .tra"
 echo "track CLI: all checks passed"

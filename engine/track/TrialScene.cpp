@@ -88,7 +88,8 @@ TrialScene loadTrialScene(const Trial& trial, const std::vector<std::string>& bo
         if (t.sequences[c].frameCount() != t.frameCount)
             throw Error(where + ": camera " + trial.cameras[0].name + " has " +
                         std::to_string(t.frameCount) + " frames but camera " + trial.cameras[c].name +
-                        " has " + std::to_string(t.sequences[c].frameCount()));
+                        " has " + std::to_string(t.sequences[c].frameCount()) + " (" +
+                        io::quoted(t.sequences[c].source) + "; a frame missing?)");
         if (t.sequences[c].multiPage || t.sequences[0].multiPage) continue;
         for (int f = 0; f < t.frameCount; ++f) {
             const int a = frameNumberInName(t.sequences[0].frames[f]);
