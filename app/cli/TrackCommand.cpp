@@ -209,11 +209,16 @@ void runTrack(const TrackArgs& a) {
                          b.done.size(), b.name.c_str(), b.out.string().c_str(), b.todo);
         bones.push_back(std::move(b));
     }
+    // Each bone is tracked alone, as Autoscoper does: the other bones have no pose in this
+    // frame yet (they sit at the identity), so they are hidden from its DRRs.
     std::vector<fm::Tracker> trackers;
-    for (const BoneRun& b : bones)
-        trackers.emplace_back(scene.scene, b.name,
+    for (const BoneRun& b : bones) {
+        fm::Scene alone = scene.scene;
+        for (fm::SceneObject& o : alone.objects) o.visible = o.name == b.name;
+        trackers.emplace_back(std::move(alone), b.name,
                               fm::trialFrameViews(scene, fm::defaultTrialPreparation(), cameras),
                               settings);
+    }
 
     const std::size_t frameBytes = fm::frameRecordBytes(scene.cameras.size());
     const std::size_t recordBytes = sizeof(std::int32_t) + longest * frameBytes;

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # `fluoromatch track` on the shipped wrist trial: refusals name what is wrong; the .tra is one
 # row per trial frame (16 numbers, NaN where not tracked); a run killed after a frame and
-# resumed gives the same file, byte for byte, as one uninterrupted run. Bad frames: a camera
+# resumed gives the same file, byte for byte, as one uninterrupted run; `overlay` writes one PNG
+# per camera. Bad frames: a camera
 # with a frame missing is refused naming both cameras; an unreadable frame, or one of another
 # size, in the middle of a sequence is reported naming its file and skipped (NaN row), and the
 # frames before and after it are tracked and kept.
@@ -22,7 +23,7 @@ expect_error() {  # expect_error TEXT command...
 }
 expect_error "radius, ulna, mc3" "$FM" track --trial "$TRIAL" --bone femur --out "$T/x.tra"
 expect_error "frames 0..2" "$FM" track --trial "$TRIAL" --bone radius --frames 0:5 --out "$T/x.tra"
-expect_error "no frame of radius could be tracked" "$FM" track --trial "$TRIAL" --bone radius --frames 0:0 --out "$T/x.tra"
+expect_error "no frame of mc3 could be tracked" "$FM" track --trial "$TRIAL" --bone mc3 --frames 0:0 --out "$T/x.tra"
 printf 'Version 1.1\nmayaCam_csv nothere.txt\nCameraRootDir .\nVolumeFile v.tif\nVoxelSize 1 1 1\n' > "$T/bad.cfg"
 expect_error "nothere.txt" "$FM" track --trial "$T/bad.cfg" --bone v --out "$T/x.tra"
 
@@ -42,6 +43,18 @@ head -1 "$T/whole.csv" | grep -q "cost_cam1,cost_cam2,evaluations,time_ms" || fa
     --out "$T/resumed.tra" >"$T/out" 2>&1 || { cat "$T/out"; fail "resume failed"; }
 grep -q "1 frames of radius already in" "$T/out" || fail "resume did not say what it kept"
 cmp "$T/whole.tra" "$T/resumed.tra" || fail "resumed run differs from the uninterrupted one"
+
+# overlay: one PNG per camera at the trial's tracking size (440 x 440), refusals named.
+"$FM" overlay --trial "$TRIAL" --bone radius --tra "$T/whole.tra" --frame 1 --out "$T/ov.png" >"$T/out" 2>&1 \
+    || { cat "$T/out"; fail "overlay failed"; }
+for c in 1 2; do
+    [ "$(head -c 8 "$T/ov_cam$c.png" | od -An -tx1 | tr -d ' \n')" = "89504e470d0a1a0a" ] || fail "ov_cam$c.png is not a PNG"
+    [ "$(od -An -tu1 -j16 -N8 "$T/ov_cam$c.png" | tr -s ' ' | sed 's/^ //')" = "0 0 1 184 0 0 1 184" ] \
+        || fail "ov_cam$c.png is not 440 x 440"
+done
+expect_error "no pose of radius at frame 2" "$FM" overlay --trial "$TRIAL" --bone radius --tra "$T/whole.tra" --frame 2 --out "$T/o.png"
+expect_error "one --tra per --bone" "$FM" overlay --trial "$TRIAL" --bone radius --bone ulna --tra "$T/whole.tra" --tra "$T/whole.tra" --tra "$T/whole.tra" --out "$T/o.png"
+expect_error "must end in .png" "$FM" overlay --trial "$TRIAL" --bone radius --tra "$T/whole.tra" --out "$T/o.jpg"
 
 # Bad frames, on a copy of the trial at 110 pixels (short) whose frames are links to the real
 # ones, frame 1 of camera 2 replaced.

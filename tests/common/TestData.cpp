@@ -17,6 +17,11 @@ bool underCI() {
     return ci && std::string(ci) == "true";
 }
 
+bool sharedDataBesideRepo() {
+    std::error_code ec;
+    return std::filesystem::equivalent(sharedDataDir(), repoDir().parent_path() / "shared" / "data", ec);
+}
+
 std::filesystem::path scratchDir(const std::string& name) {
     const auto dir = std::filesystem::path(FM_BINARY_DIR) / "test-scratch" / name;
     std::filesystem::remove_all(dir);

@@ -11,6 +11,9 @@ std::filesystem::path repoDir();
 std::filesystem::path sharedDataDir();
 // True when running under CI (CI=true): missing shared data is then a failure, not a skip.
 bool underCI();
+// True when the shared data is the one beside the repository (../shared/data), as the shipped
+// trials (data/trials/) name it.
+bool sharedDataBesideRepo();
 // A fresh scratch folder for one test (under the build tree), emptied on creation.
 std::filesystem::path scratchDir(const std::string& name);
 

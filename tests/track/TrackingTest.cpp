@@ -15,6 +15,7 @@
 #include "io/TiffVolume.h"
 #include "scene/XrayModel.h"
 #include "search/Registration.h"
+#include "track/PoseErrors.h"
 #include "track/Tracker.h"
 #include "scene/ObjectPoseParameterization.h"
 
@@ -98,15 +99,8 @@ struct Wrist {
     }
 };
 
-double centreError(const RigidTransform& a, const RigidTransform& b, const glm::dvec3& c) {
-    return glm::length(a.applyToPoint(c) - b.applyToPoint(c));
-}
-
-double angleErrorDeg(const RigidTransform& a, const RigidTransform& b) {
-    const glm::dmat3 d = a.rotation * glm::transpose(b.rotation);
-    const double cosine = std::clamp((d[0][0] + d[1][1] + d[2][2] - 1.0) / 2.0, -1.0, 1.0);
-    return glm::degrees(std::acos(cosine));
-}
+using fm::test::angleErrorDeg;
+using fm::test::centreError;
 
 TEST(Tracking, RecoversEveryFrameOfABiplaneSequenceThroughTheRealWristCameras) {
     FM_REQUIRE_SHARED_DATA("autoscoper-bvr/Models/rad_dcm_cropped.tif");

@@ -29,12 +29,7 @@ std::string errorOf(const std::function<void()>& f) {
     return "";
 }
 
-// The shipped trials name ../../../shared/data from data/trials: the shared data must be the one
-// beside the repository.
-bool sharedDataBesideRepo() {
-    std::error_code ec;
-    return fs::equivalent(fm::test::sharedDataDir(), fm::test::repoDir() / ".." / "shared" / "data", ec);
-}
+using fm::test::sharedDataBesideRepo;
 
 TEST(WristTrial, ShippedCfgNamesTheRealFilesAndFrames) {
     FM_REQUIRE_SHARED_DATA("autoscoper-bvr");
