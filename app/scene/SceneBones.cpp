@@ -132,9 +132,6 @@ RigidTransform bonePose(const SceneBones& bones, int index, const BoneMotion& mo
     return boneMotionTransform(motion, bones.bones.at(std::size_t(index)).pivot);
 }
 
-namespace {
-
-// The scene with the list's visibility and motions applied.
 Scene posedScene(const SceneBones& bones, const std::vector<BoneView>& list, bool restVisible,
                  const std::optional<BoneMotion>& overrideTibiaMotion) {
     Scene scene = bones.scene;
@@ -147,8 +144,6 @@ Scene posedScene(const SceneBones& bones, const std::vector<BoneView>& list, boo
     if (auto rest = scene.find(kRestObjectName)) scene.objects[*rest].visible = restVisible;
     return scene;
 }
-
-}  // namespace
 
 ObjectStates objectStates(const SceneBones& bones, const std::vector<BoneView>& list,
                           bool restVisible, const std::optional<BoneMotion>& overrideTibiaMotion) {

@@ -66,6 +66,10 @@ ObjectStates objectStates(const SceneBones& bones, const std::vector<BoneView>& 
 // worldFromObject of bone `index` moved by `motion`.
 RigidTransform bonePose(const SceneBones& bones, int index, const BoneMotion& motion);
 
+// The bones' scene with the list's visibility and motions (no cameras).
+Scene posedScene(const SceneBones& bones, const std::vector<BoneView>& list, bool restVisible,
+                 const std::optional<BoneMotion>& overrideTibiaMotion = std::nullopt);
+
 // The DRR of the bones' scene with these states in `camera` (world frame).
 Image renderObjects(const SceneBones& bones, const ObjectStates& states,
                     const ProjectionGeometry& camera, const XrayRenderSettings& settings);

@@ -2,6 +2,7 @@
 
 #include <exception>
 
+#include "bones/BoneRegistration.h"
 #include "core/Error.h"
 #include "scene/VolumeScene.h"
 
@@ -58,6 +59,20 @@ void Solver::start(std::shared_ptr<const LoadedScene> scene, Image reference, co
                    {{0, reference, {}}}, settings);
                prepared(registration.totalBudget(), registration.levelCount());
                return registration.run(start.toArray(), progress, stop);
+           });
+}
+
+void Solver::startBone(Scene scene, std::string bone, Image reference,
+                       RegistrationSettings settings) {
+    const SceneParams start = boneParameterization(scene, bone)->referenceParams();
+    launch(settings.method, Pose::fromArray(start),
+           [scene = std::move(scene), bone = std::move(bone), reference = std::move(reference),
+            settings](const auto& prepared, const RegistrationCallback& progress,
+                      const std::atomic<bool>* stop) {
+               // The budget arrives with the first progress report.
+               prepared(0, int(settings.levelFactors.size()));
+               return registerBone(scene, bone, {reference}, settings, 20.0, progress, stop)
+                   .search;
            });
 }
 

@@ -140,6 +140,10 @@ struct SolveStatus {
     double poseErrorMm = 0.0;
     std::array<double, kParameterCount> error6{};  // solution minus reference, per parameter
     bool applied = false;                          // the user took the solution onto the sliders
+    // A bone registered alone (the flex game's tibia): its index and the motion found; then
+    // error6 is in the knee's joint angles (kneeAngleArray order) and bestPose is unused.
+    int bone = -1;
+    std::array<double, 6> boneMotion{};
 };
 
 // The global search methods offered by the Solve combo (SearchMethod names, engine order).

@@ -191,11 +191,15 @@ void App::startSolve() {
                            state_.userPose,
                            appSliceSolveSettings(parseSearchMethod(kSolveMethods[method]),
                                                  options_.drrThreads));
+    } else if (state_.bones.flex.active && scene_->bones) {
+        startBoneSolve(method);
     } else {
+        solveBone_ = -1;
         startXraySolve(method);
     }
     state_.solve = SolveStatus{method};
     state_.solve.running = true;
+    state_.solve.bone = solveBone_;
     solveJudged_ = false;
     solveShownPose_ = state_.userPose;
     solveShownFrame_ = state_.frame;
@@ -228,12 +232,15 @@ void App::pollSolver() {
     out.bestPose = s.bestPose;
     out.candidate = s.candidate;
     out.elapsedMs = s.elapsedMs;
-    if (s.running && state_.frame >= solveShownFrame_ + kSolveDisplayEveryFrames) {
+    if (s.running && solveBone_ < 0 &&
+        state_.frame >= solveShownFrame_ + kSolveDisplayEveryFrames) {
         solveShownPose_ = s.bestPose;
         solveShownFrame_ = state_.frame;
     }
     if (!s.running) solveShownPose_.reset();
-    if (s.finished && !solveJudged_ && scene_) {
+    if (s.finished && !solveJudged_ && scene_ && solveBone_ >= 0) {
+        judgeBoneSolve();
+    } else if (s.finished && !solveJudged_ && scene_) {
         // Judged like a user's attempt: per-parameter error and mTRE against the reference.
         out.error6 = poseDifference(state_.referencePose, s.bestPose);
         out.poseErrorMm = state_.mode == ImagingMode::Slice
@@ -281,7 +288,14 @@ void App::processRequests() {
         pollSolver();
     }
     if (requests.solve) startSolve();
-    if (requests.applySolution && state_.solve.finished) {
+    if (requests.applySolution && state_.solve.finished && state_.solve.bone >= 0 &&
+        state_.solve.bone < int(state_.bones.list.size())) {
+        const auto specs = boneMotionSpecs();
+        auto& motion = state_.bones.list[state_.solve.bone].motion;
+        for (int k = 0; k < kParameterCount; ++k)
+            motion[k] = std::clamp(state_.solve.boneMotion[k], specs[k].min, specs[k].max);
+        state_.solve.applied = true;
+    } else if (requests.applySolution && state_.solve.finished) {
         // The only way a solve changes the user's pose: the user asked for it.
         Pose p = state_.solve.bestPose;
         const auto specs = parameterSpecs(state_.translationRangeMm);

@@ -14,6 +14,7 @@
 #include "render/Screenshot.h"
 #include "render/SurfaceItem.h"
 #include "scene/DrrCache.h"
+#include "scene/ObjectPoseParameterization.h"
 #include "scene/SceneLoader.h"
 #include "scene/Solver.h"
 #include "state/AppState.h"
@@ -95,6 +96,8 @@ class App {
     void newFlex();
     void checkFlex();
     void growAt(const std::array<int, 4>& pixel);  // region growing from a clicked pixel
+    void startBoneSolve(int method);  // the flex game's Solve: the tibia registered alone
+    void judgeBoneSolve();            // ... its answer judged on the joint angles
 
     RenderBackend& backend_;
     AppOptions options_;
@@ -144,6 +147,9 @@ class App {
     std::uint64_t solveVersion_ = 0;
     bool solveJudged_ = false;            // the finished result's mTRE was computed
     std::optional<Pose> solveShownPose_;  // best-so-far pose on screen while solving
+    // A bone solve: which bone, and the numbers its search moves (to read its answer).
+    int solveBone_ = -1;
+    std::shared_ptr<const ObjectPoseParameterization> solveBoneParameterization_;
     std::uint64_t solveShownFrame_ = 0;
 };
 

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "bones/BoneRegistration.h"
 #include "bones/KneeMotionGame.h"
 #include "core/Error.h"
 #include "scene/Matching.h"
@@ -88,20 +89,11 @@ void App::checkFlex() {
     FlexGame& flex = bones.flex;
     if (!scene_ || !scene_->bones || !flex.active || !bones.anglesValid) return;
     const SceneBones& sb = *scene_->bones;
-    auto toAngles = [](const std::array<double, 6>& a) {
-        KneeAngles k;
-        k.medialShiftMm = a[0];
-        k.anteriorDrawerMm = a[1];
-        k.distractionMm = a[2];
-        k.flexionDeg = a[3];
-        k.varusDeg = a[4];
-        k.internalRotationDeg = a[5];
-        return k;
-    };
     ++flex.attempts;
     const double mtre = kneeMotionError(sb, bones.list, flex.hiddenMotion);
     MatchOutcome m =
-        outcomeOf(judgeKneeMotion(toAngles(flex.referenceAngles), toAngles(bones.angles), mtre));
+        outcomeOf(judgeKneeMotion(kneeAnglesFromArray(flex.referenceAngles),
+                                  kneeAnglesFromArray(bones.angles), mtre));
     m.attempt = flex.attempts;
     flex.outcome = std::move(m);
     flex.outcomeIsStale = false;
@@ -143,6 +135,48 @@ void App::growAt(const std::array<int, 4>& pixel) {
     std::snprintf(text, sizeof(text), "%s: %zu triangles", added.name.c_str(),
                   added.mesh->triangleCount());
     bones.growMessage = text;
+}
+
+void App::startBoneSolve(int method) {
+    // The tibia alone against the flexed reference, seen from the user's camera; the other
+    // bones and the soft tissue stay where the user has them.
+    const SceneBones& sb = *scene_->bones;
+    solveBone_ = sb.tibia;
+    Scene scene = posedScene(sb, state_.bones.list, state_.bones.restVisible);
+    scene.cameras.push_back(appGeometry(*scene_, state_.userPose));
+    const Image reference = referenceCache_
+                                .get(*scene_, referenceCamera(), 1, DrrTrace::Exact,
+                                     options_.drrThreads, ImagingMode::Xray, referenceObjects())
+                                .image;
+    const std::string name = sb.bones[sb.tibia].name;
+    solveBoneParameterization_ = boneParameterization(scene, name);
+    solver_.startBone(std::move(scene), name, reference,
+                      appSolveSettings(parseSearchMethod(kSolveMethods[method]),
+                                       options_.drrThreads));
+}
+
+void App::judgeBoneSolve() {
+    SolveStatus& out = state_.solve;
+    solveJudged_ = true;
+    const SceneBones* sb = scene_->bones.get();
+    const FlexGame& flex = state_.bones.flex;
+    if (!sb || !solveBoneParameterization_ || solveBone_ != sb->tibia) return;
+    const RigidTransform found =
+        solveBoneParameterization_->worldFromObject(out.bestPose.toArray());
+    out.bone = solveBone_;
+    out.boneMotion = boneMotionOf(found, sb->bones[solveBone_].pivot);
+    // Judged like a Check of the user's tibia at that motion (not counted as an attempt).
+    std::vector<BoneView> list = state_.bones.list;
+    list[solveBone_].motion = out.boneMotion;
+    const auto angles = kneeAngles(*sb, list);
+    if (!angles) return;
+    const MatchVerdict v =
+        judgeKneeMotion(kneeAnglesFromArray(flex.referenceAngles), kneeAnglesFromArray(*angles),
+                        kneeMotionError(*sb, list, flex.hiddenMotion));
+    out.matched = v.match;
+    out.closeness = v.closeness;
+    out.poseErrorMm = v.mtreMm;
+    for (int k = 0; k < kParameterCount; ++k) out.error6[k] = v.hints[k].error;
 }
 
 std::vector<render::SurfaceItem> App::surfaces() const {

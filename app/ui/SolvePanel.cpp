@@ -34,7 +34,11 @@ void Ui::solveSection(AppState& state) {
     }
     if (!solve.error.empty()) coloredWrapped(kBad, solve.error);
     if (!solve.running && !solve.finished) {
-        dimWrapped("Solve: the automatic search from your pose, to compare with your attempts.");
+        dimWrapped(state.bones.flex.active
+                       ? "Solve: the tibia registered alone from where you have it, against the "
+                         "flexed reference (the flex game)."
+                       : "Solve: the automatic search from your pose, to compare with your "
+                         "attempts.");
         return;
     }
 
@@ -54,10 +58,14 @@ void Ui::solveSection(AppState& state) {
                          ImVec2(ImGui::GetContentRegionAvail().x, 40.0f));
         record("plot:solve-cost");
     }
+    const bool bone = solve.bone >= 0 && solve.bone < int(state.bones.list.size());
     if (solve.running) {
         ImGui::TextColored(kDim, "candidate");
         ImGui::SameLine();
-        poseLine(solve.candidate);
+        if (bone)  // the bone's search numbers are no 2011 pose
+            ImGui::TextUnformatted(state.bones.list[solve.bone].name.c_str());
+        else
+            poseLine(solve.candidate);
         if (state.showTimings) ImGui::TextColored(kDim, "%.1f s", solve.elapsedMs / 1000.0);
         return;
     }
@@ -75,18 +83,32 @@ void Ui::solveSection(AppState& state) {
     else
         ImGui::TextColored(kDim, "%d evals", solve.evaluations);
     ImGui::SameLine();
-    poseLine(solve.bestPose);
-    if (state.referenceRevealed) {
+    if (bone) {
+        const auto& m = solve.boneMotion;
+        ImGui::Text("%s %.1f, %.1f, %.1f mm | %.1f, %.1f, %.1f deg",
+                    state.bones.list[solve.bone].name.c_str(), m[0], m[1], m[2], m[3], m[4], m[5]);
+        record("text:solve-bone-motion");
+        // Judged on the knee's joint angles; the numbers once the flexion is revealed.
+        if (state.bones.flex.revealed)
+            ImGui::Text("mTRE %.2f mm, knee error %+.1f %+.1f %+.1f mm | %+.1f %+.1f %+.1f deg",
+                        solve.poseErrorMm, solve.error6[0], solve.error6[1], solve.error6[2],
+                        solve.error6[3], solve.error6[4], solve.error6[5]);
+        else
+            dimWrapped("Reveal (Bones tab) shows its error against the hidden flexion.");
+    } else {
+        poseLine(solve.bestPose);
+    }
+    if (!bone && state.referenceRevealed) {
         ImGui::Text("mTRE %.2f mm, error %+.1f %+.1f %+.1f mm | %+.1f %+.1f %+.1f deg",
                     solve.poseErrorMm, solve.error6[0], solve.error6[1], solve.error6[2],
                     solve.error6[3], solve.error6[4], solve.error6[5]);
         if (state.bestUserPoseErrorMm)
             ImGui::Text("you: %d attempt%s, best mTRE %.2f mm", state.attempts,
                         state.attempts == 1 ? "" : "s", *state.bestUserPoseErrorMm);
-    } else {
+    } else if (!bone) {
         dimWrapped("Reveal shows its error against the hidden pose.");
     }
-    if (!state.referenceRevealed || !state.bestUserPoseErrorMm) {
+    if (!bone && (!state.referenceRevealed || !state.bestUserPoseErrorMm)) {
         if (state.attempts > 0)
             ImGui::Text("you: %d attempt%s%s", state.attempts, state.attempts == 1 ? "" : "s",
                         state.match && state.match->matched ? ", matched" : "");

@@ -18,4 +18,8 @@ using BoneMotion = std::array<double, 6>;
 // (world mm). Throws fm::Error if a number is not finite.
 RigidTransform boneMotionTransform(const BoneMotion& motion, const glm::dvec3& pivot);
 
+// The motion whose transform is `worldFromObject` (the inverse of boneMotionTransform; the
+// turn about y in -90..90 deg, exact away from +-90). Throws fm::Error for a non-rigid pose.
+BoneMotion boneMotionOf(const RigidTransform& worldFromObject, const glm::dvec3& pivot);
+
 }  // namespace fm

@@ -21,6 +21,17 @@ std::array<double, 6> kneeAngleArray(const KneeAngles& a) {
             a.flexionDeg,    a.varusDeg,         a.internalRotationDeg};
 }
 
+KneeAngles kneeAnglesFromArray(const std::array<double, 6>& a) {
+    KneeAngles k;
+    k.medialShiftMm = a[0];
+    k.anteriorDrawerMm = a[1];
+    k.distractionMm = a[2];
+    k.flexionDeg = a[3];
+    k.varusDeg = a[4];
+    k.internalRotationDeg = a[5];
+    return k;
+}
+
 const char* kneeComponentName(int index) {
     static const char* kNames[] = {"medial shift", "anterior drawer", "distraction",
                                    "flexion",      "varus",           "internal rotation"};

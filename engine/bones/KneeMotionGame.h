@@ -29,6 +29,7 @@ KneeAngles kneeAnglesOf(const KneeJoint& joint, const RigidTransform& worldFromF
 // mm, then three deg): medial shift, anterior drawer, distraction, flexion, varus, internal
 // rotation.
 std::array<double, 6> kneeAngleArray(const KneeAngles& angles);
+KneeAngles kneeAnglesFromArray(const std::array<double, 6>& array);  // the inverse
 // "medial shift", "anterior drawer", "distraction", "flexion", "varus", "internal rotation".
 const char* kneeComponentName(int index);
 

@@ -298,3 +298,44 @@ TEST_F(BonesUi, AClickOnYourDrrGrowsABoneFromTheVoxelItHits) {
 
 }  // namespace
 }  // namespace fm::test
+
+namespace fm::test {
+namespace {
+
+TEST_F(BonesUi, InTheFlexGameSolveRegistersTheTibiaAloneAndFindsTheFlexion) {
+    start(testAppOptions(), {1280, 800});
+    app->state().userPose = parsePose("0,0,0,90,0,0");  // lateral: the flexion is in the film
+    script->clickWidget("tab:bones");
+    script->clickWidget("button:new-flex");
+    const double hidden = app->state().bones.flex.hiddenMotion[3];
+    // From 6 deg short of it (the search's radius is 10 deg: a start the user got near).
+    const double start = std::round(hidden - 6.0);
+    app->state().bones.list[1].motion[3] = start;
+    script->idle(1);
+    script->clickWidget("tab:solve");
+    script->clickWidget("button:solve");
+    ASSERT_TRUE(app->state().solve.running) << app->state().solve.error;
+    EXPECT_EQ(app->state().solve.bone, 1);
+    for (int frames = 0; app->state().solve.running && frames < 20000; ++frames) {
+        app->frame();
+        EXPECT_EQ(app->state().bones.list[1].motion[3], start) << "the solve moves no slider";
+    }
+    const app::SolveStatus& solve = app->state().solve;
+    ASSERT_TRUE(solve.finished) << solve.error;
+    // The tibia's motion found: the hidden flexion about the flexion axis, nothing else much.
+    EXPECT_NEAR(solve.boneMotion[3], hidden, 1.0);
+    EXPECT_TRUE(solve.matched) << "turn x " << solve.boneMotion[3] << " vs " << hidden;
+    // Judged on the knee's angles: error6 is flexion etc. of the found minus the hidden.
+    EXPECT_NEAR(solve.error6[3], solve.boneMotion[3] - hidden, 0.5);
+    script->idle(1);
+    script->clickWidget("button:apply-solution");
+    EXPECT_EQ(app->state().bones.list[1].motion, solve.boneMotion);
+    script->clickWidget("tab:bones");
+    script->clickWidget("button:check-flex");
+    ASSERT_TRUE(app->state().bones.flex.outcome.has_value());
+    EXPECT_TRUE(app->state().bones.flex.outcome->matched)
+        << app->state().bones.flex.outcome->verdict;
+}
+
+}  // namespace
+}  // namespace fm::test

@@ -35,6 +35,19 @@ TEST(BoneMotion, ATurnAboutXOnTheFlexionAxisIsThePhantomsFlexion) {
                  fm::Error);
 }
 
+TEST(BoneMotion, TheMotionOfAPoseGivesThatPoseBack) {
+    const glm::dvec3 pivot{12.0, -30.0, 45.0};
+    for (const fm::BoneMotion& m : {fm::BoneMotion{1, -2, 3, 10, -20, 30},
+                                    fm::BoneMotion{0, 0, 0, 0, 0, 0},
+                                    fm::BoneMotion{-40, 5, 0.5, -120, 85, -170}}) {
+        const fm::BoneMotion back = fm::boneMotionOf(fm::boneMotionTransform(m, pivot), pivot);
+        for (int k = 0; k < 6; ++k) EXPECT_NEAR(back[k], m[k], 1e-9) << k;
+    }
+    fm::RigidTransform scaled;
+    scaled.rotation *= 2.0;
+    EXPECT_THROW(fm::boneMotionOf(scaled, pivot), fm::Error);
+}
+
 TEST(KneeMotionGame, TheFlexionOfTheTibiaTurnedAboutTheFlexionAxisIsThatAngle) {
     const fm::KneePhantomParams p;
     const fm::KneeJoint joint{fm::kneeAnatomicalFrame(p, fm::KneeSegment::Femur),
@@ -48,6 +61,8 @@ TEST(KneeMotionGame, TheFlexionOfTheTibiaTurnedAboutTheFlexionAxisIsThatAngle) {
     const auto a = fm::kneeAngleArray(k);
     EXPECT_EQ(a[3], k.flexionDeg);
     EXPECT_EQ(a[0], k.medialShiftMm);
+    const fm::KneeAngles back = fm::kneeAnglesFromArray(a);
+    EXPECT_EQ(fm::kneeAngleArray(back), a);
     EXPECT_STREQ(fm::kneeComponentName(3), "flexion");
     EXPECT_THROW(fm::kneeComponentName(6), fm::Error);
 }
