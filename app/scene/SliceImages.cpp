@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/Random.h"
+#include "scene/Matching.h"
 #include "match/MatchVerdict.h"
 #include "similarity/Ncc.h"
 #include "slice/SlicePoseError.h"
@@ -88,20 +89,9 @@ double sliceMtre(const LoadedScene& scene, const Pose& reference, const Pose& ca
 
 MatchOutcome evaluateSliceMatch(const LoadedScene& scene, const Pose& user, const Pose& reference,
                                 const SampledSlice& userSlice, const SampledSlice& referenceSlice) {
-    MatchOutcome m;
-    m.poseErrorMm = sliceMtre(scene, reference, user);
-    m.judged = judgeMatch(reference, user, m.poseErrorMm);
-    m.matched = m.judged.match;
+    MatchOutcome m = outcomeOf(judgeMatch(reference, user, sliceMtre(scene, reference, user)));
     const Mask both = intersect(userSlice.mask, referenceSlice.mask);
     m.ncc = ncc(referenceSlice.image, userSlice.image, &both);  // 0 when nothing overlaps
-    for (int p = 0; p < kParameterCount; ++p) {
-        const ParameterHint& h = m.judged.hints[p];
-        m.error[p] = h.error;
-        m.direction[p] = h.status == ParameterStatus::TooHigh  ? +1
-                         : h.status == ParameterStatus::TooLow ? -1
-                                                               : 0;
-    }
-    m.furthestParameter = m.matched ? -1 : m.judged.worstParameter;
     return m;
 }
 

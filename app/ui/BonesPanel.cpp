@@ -110,12 +110,7 @@ void Ui::bonesTab(AppState& state) {
         ImGui::SetTooltip("The reference knee is flexed by a hidden motion of the tibia: move the "
                           "tibia to find it");
     ImGui::SameLine();
-    static const char* kDifficulties[] = {"easy", "medium", "hard"};
-    int difficulty = static_cast<int>(flex.difficulty);
-    ImGui::SetNextItemWidth(ImGui::CalcTextSize("medium").x + ImGui::GetFrameHeight() +
-                            2 * ImGui::GetStyle().FramePadding.x);
-    if (ImGui::Combo("##flex-difficulty", &difficulty, kDifficulties, kDifficultyCount))
-        flex.difficulty = static_cast<Difficulty>(difficulty);
+    difficultyCombo("##flex-difficulty", flex.difficulty);
     record("combo:flex-difficulty");
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("easy: flexion only; medium: also varus and rotation; hard: also "

@@ -43,12 +43,7 @@ void Ui::matchTab(AppState& state) {
         ImGui::SetTooltip("Another hidden pose, drawn around a clinical view at the difficulty "
                           "beside");
     ImGui::SameLine();
-    static const char* kDifficulties[] = {"easy", "medium", "hard"};
-    int difficulty = static_cast<int>(state.difficulty);
-    ImGui::SetNextItemWidth(ImGui::CalcTextSize("medium").x + ImGui::GetFrameHeight() +
-                            2 * ImGui::GetStyle().FramePadding.x);
-    if (ImGui::Combo("##difficulty", &difficulty, kDifficulties, kDifficultyCount))
-        state.difficulty = static_cast<Difficulty>(difficulty);
+    difficultyCombo("##difficulty", state.difficulty);
     record("combo:difficulty");
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Difficulty of the next reference: easy hides 2 parameters near a "

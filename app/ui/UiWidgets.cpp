@@ -30,6 +30,15 @@ double& sliderValue(AppState& state, int parameter) {
     return poseValue(state.userPose, parameter);
 }
 
+void difficultyCombo(const char* id, Difficulty& difficulty) {
+    static const char* kDifficulties[] = {"easy", "medium", "hard"};
+    int index = static_cast<int>(difficulty);
+    ImGui::SetNextItemWidth(ImGui::CalcTextSize("medium").x + ImGui::GetFrameHeight() +
+                            2 * ImGui::GetStyle().FramePadding.x);
+    if (ImGui::Combo(id, &index, kDifficulties, kDifficultyCount))
+        difficulty = static_cast<Difficulty>(index);
+}
+
 double& poseValue(Pose& pose, int parameter) {
     switch (parameter) {
         case 0:

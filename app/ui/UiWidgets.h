@@ -35,6 +35,8 @@ double& poseValue(Pose& pose, int parameter);
 std::array<ParameterSpec, kParameterCount> sliderSpecs(const AppState& state);
 // The value slider `parameter` edits: the user's pose, or the target bone's motion.
 double& sliderValue(AppState& state, int parameter);
+// The easy / medium / hard combo, just wide enough for "medium".
+void difficultyCombo(const char* id, Difficulty& difficulty);
 // A bullet whose text wraps at the window edge (BulletText does not wrap).
 void bulletWrapped(const char* format, ...) IM_FMTARGS(1);
 // Dimmed text that wraps.
