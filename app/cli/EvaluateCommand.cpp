@@ -143,6 +143,7 @@ void runEvaluate(const EvaluateArgs& a, bool similarityGiven) {
 
     settings.registration.threads =
         fm::distributed::threadsPerRank(transport, settings.registration.threads);
+    if (a.bones.bone.empty()) fm::cli::useWholeCtSpeedups(settings.registration, a.search);
     const Evaluated e = a.bones.bone.empty()
                             ? wholeCt(a, volume, settings.registration.threads)
                             : oneBone(a, volume);
@@ -162,8 +163,11 @@ void runEvaluate(const EvaluateArgs& a, bool similarityGiven) {
             "threads\n",
             a.starts, static_cast<unsigned long long>(settings.seed), settings.successMm,
             threads);
+        // The levels a registration keeps (those finer than the voxels are left out).
+        const fm::Registration probe(scene.scene, scene.parameterization,
+                                     {{0, reference, scene.valid}}, settings.registration);
         std::printf("search     %s, %s\n", fm::toString(settings.registration.similarity),
-                    fm::cli::describeLevels(settings.registration).c_str());
+                    fm::cli::describeLevels(probe.settings()).c_str());
         std::printf("processes  %d (%s), %d thread%s each; %zu registrations, %zu bytes each "
                     "to rank 0\n",
                     transport.size(), transport.name(), threads, threads == 1 ? "" : "s",

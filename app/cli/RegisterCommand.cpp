@@ -4,6 +4,7 @@
 // --camera and --model it registers implant or bone models in a real radiograph instead
 // (cli/RegisterXray.h).
 #include <unistd.h>
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -194,7 +195,8 @@ void runRegister(const RegisterArgs& a, bool similarityGiven, int frame) {
         throw fm::Error("give either --reference-pose POSE or --reference IMG --geometry g.json");
     if (!synthetic && a.geometry.empty())
         throw fm::Error("--reference needs --geometry g.json (the image's projection geometry)");
-    const fm::RegistrationSettings settings = fm::cli::registrationSettings(a.search);
+    fm::RegistrationSettings settings = fm::cli::registrationSettings(a.search);
+    fm::cli::useWholeCtSpeedups(settings, a.search);
 
     const fm::Volume volume = fm::loadVolume(a.volume);
     const fm::DrrVolumePtr prepared = fm::cli::prepareForSearch(volume, a.search.values);
@@ -237,12 +239,16 @@ void runRegister(const RegisterArgs& a, bool similarityGiven, int frame) {
         std::printf("reference   %s (%d x %d), geometry %s\n", a.reference.c_str(), reference.width,
                     reference.height, a.geometry.c_str());
     std::printf("start       %s\n", fm::formatPose(start).c_str());
-    std::printf("search      %s, %s, seed %llu, %s\n", fm::toString(settings.method),
-                fm::toString(settings.similarity), static_cast<unsigned long long>(settings.seed),
-                fm::cli::describeLevels(settings).c_str());
-
     const fm::Registration registration(fm::volumeScene(prepared), parameterization,
                                         {{0, reference, {}}}, settings);
+    // The registration's own settings: levels finer than the voxels are left out.
+    std::printf("search      %s, %s, seed %llu, %s\n", fm::toString(settings.method),
+                fm::toString(settings.similarity), static_cast<unsigned long long>(settings.seed),
+                fm::cli::describeLevels(registration.settings()).c_str());
+    if (registration.levelCount() < static_cast<int>(settings.levelFactors.size()))
+        std::printf("            (finer levels left out: their rays would resample the %.3g mm "
+                    "voxels)\n",
+                    std::min({fm::drrVolumeInfo(*prepared).spacing.x, fm::drrVolumeInfo(*prepared).spacing.y, fm::drrVolumeInfo(*prepared).spacing.z}));
     fm::cli::ProgressBar bar(isatty(fileno(stderr)) != 0);
     const fm::RegistrationResult result = registration.run(
         start.toArray(), [&](const fm::RegistrationProgress& p) { bar.update(p); });

@@ -99,6 +99,11 @@ RegistrationSettings registrationSettings(const SearchArgs& a, RegistrationSetti
     return s;
 }
 
+void useWholeCtSpeedups(RegistrationSettings& settings, const SearchArgs& args) {
+    settings.coarseVolumeRatio = 1.25;
+    settings.dropLevelsFinerThanVoxels = args.levels.empty();
+}
+
 std::string describeLevels(const RegistrationSettings& s) {
     std::string text = "levels";
     for (std::size_t i = 0; i < s.levelFactors.size(); ++i)

@@ -35,6 +35,9 @@ void addSearchOptions(CLI::App* cmd, SearchArgs& args, bool withMethod = true);
 // threads always, budgets, levels and radius when given. Throws fm::Error naming the option
 // on a bad value.
 RegistrationSettings registrationSettings(const SearchArgs& args, RegistrationSettings base = {});
+// The whole-CT scene (register / evaluate without --bone): coarse levels trace block means of
+// the CT, and levels finer than its voxels are left out unless --levels names the levels.
+void useWholeCtSpeedups(RegistrationSettings& settings, const SearchArgs& args);
 std::string describeLevels(const RegistrationSettings& settings);
 
 // "auto": decided by the unit detection (cli/ValuesChoice, printed); "mu": HU converted to

@@ -8,6 +8,7 @@
 // Preparation converts values (HU -> mu, threshold), crops to the non-zero attenuation and
 // builds the empty-space skipping structure; rendering is const and thread-safe.
 // See docs/drr.md for the method, the units and the measured accuracy and speed.
+#include <cstdint>
 #include <memory>
 #include <optional>
 
@@ -79,6 +80,13 @@ using DrrVolumePtr = std::shared_ptr<const DrrVolume>;
 // Throws fm::Error if the volume is unusable (geometry, size) or holds infinite values.
 DrrVolumePtr prepareDrrVolume(const Volume& volume, const DrrValueOptions& options);
 
+// A coarser copy of a prepared volume, for coarse search levels and previews: block means of
+// factor^3 kept voxels (voxels beyond the kept box count as 0, so the mass along every ray
+// direction is kept), in the same frame, with its own brick map. Approximate, like
+// DrrValueOptions::downsample, but made from the prepared volume (no source volume needed).
+// factor 1 returns a copy. Throws fm::Error for a factor outside 1..16.
+DrrVolumePtr coarsenDrrVolume(const DrrVolume& volume, int factor, int threads = 0);
+
 // Renders one DRR; the image has the detector's size and spacing, row 0 first.
 // Throws fm::Error for an unusable geometry (non-finite numbers, empty or absurd detector).
 Image renderDrr(const DrrVolume& volume, const ProjectionGeometry& geometry,
@@ -109,5 +117,9 @@ double drrReferenceLineIntegral(const Volume& volume, const DrrValueOptions& val
 // double (images are float): what renderDrr computes for each pixel.
 double drrLineIntegral(const DrrVolume& volume, const glm::dvec3& source, const glm::dvec3& target,
                        bool skipEmptySpace = true);
+
+// Added: the number of voxel segments the exact traversal of every pixel's ray visits in the
+// kept box (Siddon steps, one per voxel entered), to state speed per step.
+std::uint64_t drrTraversalSteps(const DrrVolume& volume, const ProjectionGeometry& geometry);
 
 }  // namespace fm

@@ -52,4 +52,8 @@ struct DrrVolume {
     }
 };
 
+// Fills brickDims, brickValue and brickMixed from `values` (per brick slab in parallel; the
+// same for any thread count).
+void buildDrrBricks(DrrVolume& v, int threads);
+
 }  // namespace fm

@@ -87,7 +87,9 @@ std::vector<float> convertedValues(const Volume& volume, const DrrValueOptions& 
     return coarse;
 }
 
-void buildBricks(DrrVolume& v, int threads) {
+}  // namespace
+
+void buildDrrBricks(DrrVolume& v, int threads) {
     const int b = v.brickSize;
     v.brickDims = (v.dims + (b - 1)) / b;
     const std::size_t count =
@@ -118,6 +120,8 @@ void buildBricks(DrrVolume& v, int threads) {
         },
         4);
 }
+
+namespace {
 
 // Bounding box [lo, hi] of the non-zero values; hi.x < 0 when there are none. Per slice in
 // parallel (min and max combine in any order), each row scanned from both ends.
@@ -211,7 +215,7 @@ DrrVolumePtr prepareDrrVolume(const Volume& volume, const DrrValueOptions& optio
     v->worldToLocal = glm::inverse(volume.direction);
     v->localShift = v->spacing * (0.5 - glm::dvec3(lo));
     v->invSpacing = 1.0 / v->spacing;
-    buildBricks(*v, threads);
+    buildDrrBricks(*v, threads);
     return v;
 }
 

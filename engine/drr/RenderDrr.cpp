@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <sstream>
 
@@ -326,6 +327,27 @@ double drrLineIntegral(const DrrVolume& v, const glm::dvec3& source, const glm::
     if (v.empty) return 0.0;
     const LocalRay ray = makeRay(v.worldToLocalPoint(source), v.worldToLocalPoint(target));
     return traceExact(v, ray, skipEmptySpace) * glm::length(target - source);
+}
+
+std::uint64_t drrTraversalSteps(const DrrVolume& v, const ProjectionGeometry& g) {
+    if (v.empty) return 0;
+    const glm::dvec3 q0 = v.worldToLocalPoint(g.source);
+    const glm::dvec3 hi = glm::dvec3(v.dims) * v.spacing;
+    std::uint64_t steps = 0;
+    for (int row = 0; row < g.detector.size.y; ++row)
+        for (int col = 0; col < g.detector.size.x; ++col) {
+            const LocalRay ray = makeRay(q0, v.worldToLocalPoint(g.detector.pixelCenter(col, row)));
+            double aMin, aMax;
+            if (!clipRay(ray, glm::dvec3(0.0), hi, aMin, aMax)) continue;
+            steps += 1;  // the first voxel; then one more per plane crossed
+            for (int a = 0; a < 3; ++a) {
+                if (ray.parallel[a]) continue;
+                const int i0 = cellAt(ray, a, aMin, v.invSpacing[a], 0, v.dims[a]);
+                const int i1 = cellAt(ray, a, aMax, v.invSpacing[a], 0, v.dims[a]);
+                steps += static_cast<std::uint64_t>(std::abs(i1 - i0));
+            }
+        }
+    return steps;
 }
 
 namespace {

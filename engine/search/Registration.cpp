@@ -8,6 +8,7 @@
 #include "core/Error.h"
 #include "core/Parallel.h"
 #include "geometry/DetectorCrop.h"
+#include "scene/CoarseVolumes.h"
 #include "search/AxisLineSearch.h"
 #include "similarity/ImagePyramid.h"
 
@@ -100,6 +101,18 @@ Registration::Registration(Scene scene, SceneParameterizationPtr parameterizatio
 
     // Parameterizations move cameras but never resize them: the zero numbers show the sizes.
     const Scene probe = sceneAt(scene_, *parameterization_, SceneParams{});
+    if (settings_.dropLevelsFinerThanVoxels) {
+        const double voxel = smallestVoxelEdge(probe);
+        std::vector<ProjectionGeometry> cameras;
+        for (const RegistrationView& in : views)
+            if (in.camera < probe.cameras.size()) cameras.push_back(probe.cameras[in.camera]);
+        const double spacing = finestRaySpacing(probe, cameras);  // at the full resolution
+        for (std::size_t k = 0; voxel > 0.0 && k + 1 < settings_.levelFactors.size(); ++k)
+            if (spacing * settings_.levelFactors[k] <= voxel) {
+                settings_.levelFactors.resize(k + 1);
+                break;
+            }
+    }
     const int coarsest = settings_.levelFactors.front();
     for (std::size_t v = 0; v < views.size(); ++v) {
         const RegistrationView& in = views[v];
@@ -153,6 +166,26 @@ Registration::Registration(Scene scene, SceneParameterizationPtr parameterizatio
             view.levels.push_back(std::move(level));
         }
         views_.push_back(std::move(view));
+    }
+    if (!(settings_.coarseVolumeRatio >= 0.0) || !std::isfinite(settings_.coarseVolumeRatio))
+        throw Error("registration: the coarse volume ratio must be a number >= 0");
+    // Per view, so that a view's cost does not depend on which other views are registered.
+    for (std::size_t k = 0; k < settings_.levelFactors.size(); ++k) {
+        const bool finest = k + 1 == settings_.levelFactors.size();
+        std::vector<Scene> perView;
+        for (const View& view : views_) {
+            if (finest || settings_.coarseVolumeRatio == 0.0) {
+                perView.push_back(scene_);
+                continue;
+            }
+            const ProjectionGeometry camera =
+                cropDetector(probe.cameras[view.camera], 0, 0, view.usableSize.x,
+                             view.usableSize.y)
+                    .downsampled(settings_.levelFactors[k]);
+            perView.push_back(withCoarseVolumes(scene_, {camera}, settings_.coarseVolumeRatio,
+                                                settings_.threads));
+        }
+        levelScenes_.push_back(std::move(perView));
     }
 }
 
@@ -214,17 +247,18 @@ double Registration::viewCost(const Scene& scene, const View& view, int levelInd
 std::vector<double> Registration::viewCosts(const SceneParams& params, int level) const {
     if (level < 0 || level >= levelCount())
         throw Error("registration: level " + std::to_string(level) + " does not exist");
-    const Scene scene = sceneAt(scene_, *parameterization_, params);
     std::vector<double> costs;
-    for (const View& view : views_) costs.push_back(viewCost(scene, view, level, settings_.threads));
+    for (std::size_t v = 0; v < views_.size(); ++v)
+        costs.push_back(viewCost(sceneAt(levelScenes_[level][v], *parameterization_, params),
+                                 views_[v], level, settings_.threads));
     return costs;
 }
 
 double Registration::levelCost(const SceneParams& params, int level, int threads) const {
-    const Scene scene = sceneAt(scene_, *parameterization_, params);
-    double total = viewCost(scene, views_[0], level, threads);
-    for (std::size_t v = 1; v < views_.size(); ++v)
-        total += viewCost(scene, views_[v], level, threads);
+    double total = 0.0;
+    for (std::size_t v = 0; v < views_.size(); ++v)
+        total += viewCost(sceneAt(levelScenes_[level][v], *parameterization_, params), views_[v],
+                          level, threads);
     return total;
 }
 
@@ -238,14 +272,33 @@ RegistrationResult Registration::run(const SceneParams& start,
                                      const RegistrationCallback& progress,
                                      const std::atomic<bool>* stop) const {
     const auto t0 = std::chrono::steady_clock::now();
+    // The search coordinates of a stage are taken around its anchor: the registration's start
+    // for the global search, the best pose so far for every refinement. So a refinement's
+    // depth is along the viewing direction of the camera as found, not as it started: with
+    // the start camera's axes, a depth step of a start 10 deg off also moves the image
+    // sideways by sin(10 deg) of the step, and the in-plane match then pins the depth.
+    SceneParams anchor = start;
     auto toParams = [&](const Point& p) {
-        return parameterization_->fromSearchPoint(start, {p[0], p[1], p[2], p[3], p[4], p[5]});
+        return parameterization_->fromSearchPoint(anchor, {p[0], p[1], p[2], p[3], p[4], p[5]});
     };
     RegistrationResult result;
     Rng seeds(settings_.seed);
     Point current(6, 0.0);
     int evaluationsBefore = 0;
     const int budget = totalBudget();
+
+    // Hard bounds of the whole search, around the start (search coordinates of the start).
+    Point startLower(6), startUpper(6);
+    for (int d = 0; d < 6; ++d) {
+        startLower[d] = -settings_.boundsFactor * settings_.searchRadius[d];
+        startUpper[d] = settings_.boundsFactor * settings_.searchRadius[d];
+    }
+    Point anchorOffset(6, 0.0);  // the anchor in the start's search coordinates (approximately)
+    auto reanchor = [&]() {
+        anchor = toParams(current);
+        for (int d = 0; d < 6; ++d) anchorOffset[d] += current[d];
+        std::fill(current.begin(), current.end(), 0.0);
+    };
 
     auto runStage = [&](int levelIndex, SearchMethod method, double radiusScale, int maxEvals,
                         const char* stage) {
@@ -267,9 +320,11 @@ RegistrationResult Registration::run(const SceneParams& start,
         Point radius(6), lower(6), upper(6);
         for (int d = 0; d < 6; ++d) {
             radius[d] = settings_.searchRadius[d] * radiusScale;
-            // Bounds stay those of the whole search, around the start.
-            lower[d] = -settings_.boundsFactor * settings_.searchRadius[d];
-            upper[d] = settings_.boundsFactor * settings_.searchRadius[d];
+            // Bounds stay those of the whole search, around the start: shifted by the anchor
+            // (exact for the angles; for the translations the anchor's axes are turned by the
+            // angle changes so far, which the refinements' small radii never reach).
+            lower[d] = std::min(0.0, startLower[d] - anchorOffset[d]);
+            upper[d] = std::max(0.0, startUpper[d] - anchorOffset[d]);
             current[d] = std::clamp(current[d], lower[d], upper[d]);
         }
         const bool depthStage = std::string(stage) == "depth";
@@ -315,8 +370,10 @@ RegistrationResult Registration::run(const SceneParams& start,
 
     const int depthEvaluations = settings_.depthRounds > 0 ? 5 * settings_.depthRounds + 1 : 0;
     auto polish = [&](int level, double scale) {
+        reanchor();
         if (settings_.polishEvaluations > 0 && !result.stopped)
             runStage(level, settings_.polishMethod, scale, settings_.polishEvaluations, "polish");
+        reanchor();
         if (depthEvaluations > 0 && !result.stopped && level == levelCount() - 1)
             runStage(level, settings_.polishMethod, scale, depthEvaluations, "depth");
     };

@@ -75,6 +75,18 @@ struct RegistrationSettings {
     // roiMargin), within the level's region: what a real radiograph needs (it has no zero
     // background to crop to). Off for DRR references (the reference footprint already bounds).
     bool cropToModel = false;
+    // Levels whose rays are further apart than the voxels trace block means of the volumes
+    // (coarsenDrrVolume): the coarsest factor whose voxel edge stays within this many ray
+    // spacings at the volume's centre (each view's camera at the zero numbers). The finest
+    // level always traces the volumes as they are. 0 = off (the default: small bone volumes
+    // lose their shape in block means); `fluoromatch register` / `evaluate` on a CT use 1.25.
+    double coarseVolumeRatio = 0.0;
+    // Leave out levels finer than the volumes can show: once a level's rays are no further
+    // apart (at the volumes' centres) than the smallest voxel edge, finer levels trace the same
+    // voxels again (a 3 mm CT at 2.7 mm rays). settings().levelFactors then lists the levels
+    // kept. Only for scenes of volumes (a mesh has no voxel size). Off by default; on in
+    // `fluoromatch register` / `evaluate` on a CT unless --levels is given.
+    bool dropLevelsFinerThanVoxels = false;
 };
 
 // One image of the registration: which camera of the scene took it, the image, and which of
@@ -152,6 +164,8 @@ class Registration {
     double levelCost(const SceneParams& params, int level, int threads) const;
 
     Scene scene_;
+    // scene_ with the volumes each level traces, per view: levelScenes_[level][view].
+    std::vector<std::vector<Scene>> levelScenes_;
     SceneParameterizationPtr parameterization_;
     RegistrationSettings settings_;
     std::vector<View> views_;

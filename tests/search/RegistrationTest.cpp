@@ -158,6 +158,62 @@ TEST(Registration, RecoversThePhantomPoseFromA5mm5DegStart) {
     }
 }
 
+TEST(Registration, RefinesDepthAlongTheCameraAsFound) {
+    // A start 10 deg off in azimuth: the start camera's depth axis is 10 deg off the true one,
+    // so a depth step along it also moves the image sideways by sin(10 deg) of the step. When
+    // the refinements searched along the start's axes, CMA-ES ended here at 1.79 mm mTRE, 1.79
+    // mm of it along the beam; the refinements now search around the pose found so far.
+    const Pose truth{};
+    const Image reference = render(knee().model(truth));
+    const Pose start = parsePose("10,0,0,10,0,0");
+    const auto targets = registrationTargets(knee().volume);
+    RegistrationSettings s;  // the defaults, full resolution included
+    const RegistrationResult r = knee().registration(reference, s).run(start.toArray());
+    const TargetRegistrationError e =
+        targetRegistrationError(knee().model(truth), knee().model(r.pose()), targets);
+    EXPECT_LT(e.meanMm, kSuccessMtreMm) << formatPose(r.pose());
+    EXPECT_LT(e.meanDepthMm, 0.5) << formatPose(r.pose());
+}
+
+TEST(Registration, CoarseLevelsTraceBlockMeansAndStillPeakAtTheTruth) {
+    const Pose truth = parsePose("0,0,0,10,5,0");
+    const Image reference = render(knee().model(truth));
+    RegistrationSettings s;
+    s.levelFactors = {4, 1};
+    s.coarseVolumeRatio = 1.25;  // what register / evaluate use on a CT
+    const Registration coarse = knee().registration(reference, s);
+    s.coarseVolumeRatio = 0.0;
+    const Registration full = knee().registration(reference, s);
+    const double atTruth = coarse.cost(truth.toArray(), 0);
+    // Level 0 (rays 5.5 mm apart at the knee, voxels 1.7-2 mm) traces 2x2x2 block means: a
+    // different image from the full volume's, at the finest level the same one.
+    EXPECT_NE(atTruth, full.cost(truth.toArray(), 0));
+    EXPECT_EQ(coarse.cost(truth.toArray(), 1), full.cost(truth.toArray(), 1));
+    EXPECT_LT(atTruth, -0.95);
+    for (int p = 0; p < 6; ++p)
+        for (double step : {-3.0, 3.0}) {
+            auto a = truth.toArray();
+            a[p] += step;
+            EXPECT_GT(coarse.cost(a, 0), atTruth) << "parameter " << p;
+        }
+}
+
+TEST(Registration, LeavesOutLevelsFinerThanTheVoxels) {
+    const Image reference = render(knee().model(Pose{}));
+    RegistrationSettings s;  // levels 4, 2, 1: rays 5.5, 2.7 and 1.4 mm apart at the knee
+    s.dropLevelsFinerThanVoxels = true;  // what register / evaluate use on a CT
+    EXPECT_EQ(knee().registration(reference, s).settings().levelFactors,
+              (std::vector<int>{4, 2, 1}));  // 1.72 mm voxels: every level resolves more
+    // The knee in 3.44 x 3.44 x 3.99 mm voxels: 2.7 mm rays already sample every voxel.
+    const Scene coarse = volumeScene(coarsenDrrVolume(*knee().prepared, 2));
+    const Registration dropped(coarse, knee().parameterization, {{0, reference, {}}}, s);
+    EXPECT_EQ(dropped.settings().levelFactors, (std::vector<int>{4, 2}));
+    EXPECT_EQ(dropped.levelCount(), 2);
+    s.dropLevelsFinerThanVoxels = false;
+    const Registration kept(coarse, knee().parameterization, {{0, reference, {}}}, s);
+    EXPECT_EQ(kept.settings().levelFactors, (std::vector<int>{4, 2, 1}));
+}
+
 TEST(Registration, DeterministicForASeedAndStoppable) {
     const Pose truth{};
     const Image reference = render(knee().model(truth));
@@ -195,6 +251,9 @@ TEST(Registration, RejectsBadInput) {
     RegistrationSettings s;
     EXPECT_THROW(knee().registration(Image(), s), Error);
     EXPECT_THROW(knee().registration(Image(100, 100, 1.0f), s), Error);
+    s.coarseVolumeRatio = -1.0;
+    EXPECT_THROW(knee().registration(reference, s), Error);
+    s.coarseVolumeRatio = 1.25;
     s.levelFactors = {2, 4};
     EXPECT_THROW(knee().registration(reference, s), Error);
     s.levelFactors = {3};
