@@ -40,13 +40,13 @@ void Ui::matchTab(AppState& state) {
     if (ImGui::Button("New reference")) state.requests.newReference = true;
     record("button:new-reference");
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Another hidden pose, drawn around a clinical view at the difficulty "
+        tooltip("Another hidden pose, drawn around a clinical view at the difficulty "
                           "beside");
     ImGui::SameLine();
     difficultyCombo("##difficulty", state.difficulty);
     record("combo:difficulty");
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Difficulty of the next reference: easy hides 2 parameters near a "
+        tooltip("Difficulty of the next reference: easy hides 2 parameters near a "
                           "clinical view, medium 4, hard all 6 and further off");
     ImGui::SameLine();
     if (ImGui::Button("Match")) state.requests.match = true;
@@ -65,7 +65,7 @@ void Ui::matchTab(AppState& state) {
     ImGui::RadioButton("bands", &wording, 1);
     record("radio:hints-bands");
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Also say how far: very close (within 3 tolerances), close (within "
+        tooltip("Also say how far: very close (within 3 tolerances), close (within "
                           "10), far");
     state.hintWording = static_cast<HintWording>(wording);
     ImGui::SameLine();
@@ -78,7 +78,7 @@ void Ui::matchTab(AppState& state) {
     }
     record("checkbox:reveal");
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Show the hidden parameters and the exact errors");
+        tooltip("Show the hidden parameters and the exact errors");
 
     if (!state.match) {
         ImGui::TextWrapped("Move the six parameters until your %s matches the reference, then "
@@ -99,7 +99,7 @@ void Ui::matchTab(AppState& state) {
         ImGui::Text("attempt %d: the pose as a whole is %s%s", m.attempt, band,
                     state.matchIsStale ? ", pose moved since" : "");
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Mean distance of the bone points between your pose and the hidden "
+        tooltip("Mean distance of the bone points between your pose and the hidden "
                           "one (mTRE): very close < 3 mm, close < 10 mm, far beyond");
     const auto specs = parameterSpecs(state.translationRangeMm);
     const int columns = state.referenceRevealed ? 3 : 2;

@@ -85,12 +85,12 @@ void Ui::solveSection(AppState& state) {
     ImGui::SameLine();
     if (bone) {
         const auto& m = solve.boneMotion;
-        ImGui::Text("%s %.1f, %.1f, %.1f mm | %.1f, %.1f, %.1f deg",
+        ImGui::TextWrapped("%s %.1f, %.1f, %.1f mm | %.1f, %.1f, %.1f deg",
                     state.bones.list[solve.bone].name.c_str(), m[0], m[1], m[2], m[3], m[4], m[5]);
         record("text:solve-bone-motion");
         // Judged on the knee's joint angles; the numbers once the flexion is revealed.
         if (state.bones.flex.revealed)
-            ImGui::Text("mTRE %.2f mm, knee error %+.1f %+.1f %+.1f mm | %+.1f %+.1f %+.1f deg",
+            ImGui::TextWrapped("mTRE %.2f mm, knee error %+.1f %+.1f %+.1f mm | %+.1f %+.1f %+.1f deg",
                         solve.poseErrorMm, solve.error6[0], solve.error6[1], solve.error6[2],
                         solve.error6[3], solve.error6[4], solve.error6[5]);
         else
@@ -99,7 +99,7 @@ void Ui::solveSection(AppState& state) {
         poseLine(solve.bestPose);
     }
     if (!bone && state.referenceRevealed) {
-        ImGui::Text("mTRE %.2f mm, error %+.1f %+.1f %+.1f mm | %+.1f %+.1f %+.1f deg",
+        ImGui::TextWrapped("mTRE %.2f mm, error %+.1f %+.1f %+.1f mm | %+.1f %+.1f %+.1f deg",
                     solve.poseErrorMm, solve.error6[0], solve.error6[1], solve.error6[2],
                     solve.error6[3], solve.error6[4], solve.error6[5]);
         if (state.bestUserPoseErrorMm)

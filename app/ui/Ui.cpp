@@ -66,6 +66,7 @@ void Ui::draw(AppState& state, const UiTextures& textures) {
     if (state.compareEnlarged) enlargedCompare(state, textures.compare);
     if (state.showHelp) helpWindow(state);
     keyboard(state);
+    drawTooltip();  // last: it knows where the progress bar is
 }
 
 void Ui::referencePane(AppState& state, const Pane& pane, unsigned texture) {
@@ -165,7 +166,7 @@ void Ui::scenePane(AppState& state, const Pane& pane, unsigned texture) {
     // Rebuilt once the drag (or typed value) is done, not at every step of it.
     if (ImGui::IsItemDeactivatedAfterEdit()) state.requests.remesh = true;
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip(
+        tooltip(
             "Level of the bone surface (HU for CTs): drag, or double-click and type.\n"
             "Shown: %zu triangles at %.0f (marching cubes %.0f ms)",
             state.bone.triangles, state.bone.shownLevel, state.timings.meshMs);
@@ -217,7 +218,7 @@ void Ui::parameterPane(AppState& state, const Pane& pane) {
             ImGui::TextUnformatted(spec.name);
         record("label:" + id);
         if (ImGui::IsItemHovered())
-            ImGui::SetTooltip("Up/Down select a parameter, Left/Right nudge it by 1 %s "
+            tooltip("Up/Down select a parameter, Left/Right nudge it by 1 %s "
                               "(Shift: 0.1)", spec.unit);
         ImGui::SameLine(labelWidth + ImGui::GetStyle().WindowPadding.x);
         // Slider and number field edit the same value, so each follows the other (as in 2011).
@@ -268,7 +269,7 @@ void Ui::parameterPane(AppState& state, const Pane& pane) {
         ImGui::TextColored(kDim, "frame: LPS mm");
     }
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Offsets in the patient frame LPS: +x Left, +y Posterior, +z "
+        tooltip("Offsets in the patient frame LPS: +x Left, +y Posterior, +z "
                           "Superior (DICOM, ITK).\n3D Slicer's RAS is the same with x and y "
                           "negated: RAS = (-x, -y, z).");
     modeSwitch(state);
@@ -284,7 +285,7 @@ void Ui::parameterPane(AppState& state, const Pane& pane) {
                                  &state.volumePathField, ImGuiInputTextFlags_EnterReturnsTrue);
     record("input:volume");
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip(
+        tooltip(
             "Type a path and press Enter, or drop a CT file or folder onto the window");
     ImGui::SameLine();
     if ((ImGui::Button("Open") || enter) && !state.volumePathField.empty())
@@ -300,15 +301,16 @@ void Ui::parameterPane(AppState& state, const Pane& pane) {
         std::snprintf(overlay, sizeof(overlay), "%s (%.1f s)", load.stage.c_str(),
                       load.elapsedSeconds);
         ImGui::ProgressBar(load.progress, ImVec2(-1.0f, 0.0f), overlay);
-        elidedText(kDim, "Loading " + load.requestedSpec + " ...");
+        record("progress:load");
+        elidedLine("text:loading", kDim, "Loading " + load.requestedSpec + " ...");
     } else {
-        elidedText(kDim, load.loadedSpec.empty() ? "No CT loaded" : load.loadedSpec);
-        elidedText(kDim, load.summary);
+        elidedLine("text:loaded", kDim, load.loadedSpec.empty() ? "No CT loaded" : load.loadedSpec);
+        elidedLine("text:summary", kDim, load.summary);
         if (!load.loadedSpec.empty()) {
             char text[96];
             std::snprintf(text, sizeof(text), "%zu bone triangles (iso %.4g)",
                           state.bone.triangles, state.bone.shownLevel);
-            elidedText(kDim, text);
+            elidedLine("text:bone-triangles", kDim, text);
         }
     }
     if (!load.error.empty()) coloredWrapped(kBad, load.error);  // wraps: never cut off
@@ -356,7 +358,7 @@ void Ui::comparePane(AppState& state, const Pane& pane, unsigned texture) {
     // A DRR holds line integrals; a slice the volume's own values (HU, or an MRI's units).
     const char* units = state.mode == ImagingMode::Slice ? "the volume's values" : "line integral";
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Width of the grey range, in the images' units (%s). Or drag "
+        tooltip("Width of the grey range, in the images' units (%s). Or drag "
                           "left/right on an image", units);
     ImGui::SetNextItemWidth(controlsWidth - ImGui::CalcTextSize("Window").x - 8.0f);
     if (ImGui::DragFloat("Level", &state.display.level, range * 2e-3f, -range * 0.5f, range,
@@ -364,7 +366,7 @@ void Ui::comparePane(AppState& state, const Pane& pane, unsigned texture) {
         state.display.autoWindow = false;
     record("slider:level");
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Centre of the grey range, in the images' units (%s). Or drag up/down "
+        tooltip("Centre of the grey range, in the images' units (%s). Or drag up/down "
                           "on an image", units);
     if (ImGui::SmallButton("Enlarge")) state.compareEnlarged = true;
     record("button:enlarge-compare");
@@ -375,12 +377,13 @@ void Ui::comparePane(AppState& state, const Pane& pane, unsigned texture) {
         ImGui::End();
         return;
     }
-    ImGui::TextColored(kDim, "user %s %.1f ms %s",
-                       state.mode == ImagingMode::Slice ? "slice" : "DRR", t.userDrrMs,
-                       t.userDrrCoarse ? "(coarse)" : "(exact)");
-    ImGui::TextColored(kDim, "exact %.1f ms\ncoarse/%d %.1f ms", t.lastExactMs, t.coarseFactor,
-                       t.lastCoarseMs);
-    ImGui::TextColored(kDim, "frame %.1f ms", t.frameMs);
+    // Wrapped inside the column beside the image (they would run past the pane).
+    ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + controlsWidth);
+    dimWrapped("user %s %.1f ms %s", state.mode == ImagingMode::Slice ? "slice" : "DRR",
+               t.userDrrMs, t.userDrrCoarse ? "(coarse)" : "(exact)");
+    dimWrapped("exact %.1f ms, coarse/%d %.1f ms", t.lastExactMs, t.coarseFactor, t.lastCoarseMs);
+    dimWrapped("frame %.1f ms", t.frameMs);
+    ImGui::PopTextWrapPos();
     ImGui::EndGroup();
     ImGui::End();
 }

@@ -14,6 +14,7 @@
 #include "ui/Layout.h"
 
 struct ImDrawList;
+struct ImVec4;
 
 namespace fm::app {
 
@@ -48,6 +49,8 @@ class Ui {
     // "button:match", "button:new-reference", "button:help", "view:3d", ...
     std::optional<WidgetRect> rect(const std::string& id) const;
     void record(const std::string& id);  // the last ImGui item, under `id`
+    // The tooltip drawn in the last frame ("" if none); its window is rect("tooltip").
+    const std::string& shownTooltip() const { return shownTooltip_; }
 
   private:
     void referencePane(AppState& state, const Pane& pane, unsigned texture);
@@ -70,9 +73,19 @@ class Ui {
     void imageWidget(AppState& state, const std::string& id, unsigned texture, const Image* image,
                      const Mask* dataMask, const ImageEdgeLetters& edges, float side);
     void enlargedCompare(AppState& state, unsigned texture);
+    // Tooltip.cpp: the hovered item's tooltip (the last request of a frame wins), drawn by
+    // drawTooltip after every pane, never over the load progress bar.
+    void tooltip(const char* format, ...) __attribute__((format(printf, 2, 3)));
+    void drawTooltip();
+    // One line cut to the pane's width with "...", the whole text in a tooltip; rect(id).
+    void elidedLine(const std::string& id, const ImVec4& color, const std::string& text);
+    // A pose in one line that fits what is left of the line: spaced, else compact, else cut
+    // with the whole pose in a tooltip.
+    void poseLine(const Pose& pose);
 
     std::map<std::string, WidgetRect> rects_;
     UiTextures textures_;  // this frame's
+    std::string tooltip_, shownTooltip_;  // requested this frame / drawn last frame
     glm::ivec2 sceneViewSize_{320, 320};
     glm::vec2 sceneViewOrigin_{0.0f};
     ImDrawList* sceneDrawList_ = nullptr;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdarg>
+#include <cstdio>
 
 namespace fm::app::widgets {
 
@@ -11,10 +12,14 @@ bool beginPane(const char* title, const Pane& pane) {
     return ImGui::Begin(title, nullptr, kPaneFlags);
 }
 
-void poseLine(const Pose& pose) {
-    // Compact: it must fit under the image at 960 px wide windows.
-    ImGui::Text("%.1f, %.1f, %.1f mm | %.1f, %.1f, %.1f deg", pose.offset.x, pose.offset.y,
-                pose.offset.z, pose.azimuthDeg, pose.elevationDeg, pose.rotationDeg);
+std::string poseText(const Pose& pose, bool compact) {
+    char text[160];
+    std::snprintf(text, sizeof(text),
+                  compact ? "%.1f,%.1f,%.1f mm|%.1f,%.1f,%.1f deg"
+                          : "%.1f, %.1f, %.1f mm | %.1f, %.1f, %.1f deg",
+                  pose.offset.x, pose.offset.y, pose.offset.z, pose.azimuthDeg, pose.elevationDeg,
+                  pose.rotationDeg);
+    return text;
 }
 
 std::array<ParameterSpec, kParameterCount> sliderSpecs(const AppState& state) {
@@ -81,24 +86,18 @@ void coloredWrapped(const ImVec4& color, const std::string& text) {
     ImGui::PopStyleColor();
 }
 
-void elidedText(const ImVec4& color, const std::string& text) {
+bool elidedText(const ImVec4& color, const std::string& text) {
     const float avail = ImGui::GetContentRegionAvail().x;
     if (ImGui::CalcTextSize(text.c_str()).x <= avail) {
         ImGui::TextColored(color, "%s", text.c_str());
-        return;
+        return false;
     }
     // Keep the end (a path's file name, an error's cause) and cut the start.
     std::size_t cut = 0;
     const float dots = ImGui::CalcTextSize("...").x;
     while (cut < text.size() && ImGui::CalcTextSize(text.c_str() + cut).x + dots > avail) ++cut;
     ImGui::TextColored(color, "...%s", text.c_str() + cut);
-    if (ImGui::IsItemHovered()) {
-        ImGui::BeginTooltip();
-        ImGui::PushTextWrapPos(ImGui::GetFontSize() * 40.0f);
-        ImGui::TextUnformatted(text.c_str());
-        ImGui::PopTextWrapPos();
-        ImGui::EndTooltip();
-    }
+    return true;
 }
 
 std::string idName(const char* name) {

@@ -27,8 +27,8 @@ inline ImTextureID toImTexture(unsigned id) {
 
 // A fixed window at the pane's rectangle.
 bool beginPane(const char* title, const Pane& pane);
-// "x, y, z mm | az, el, rot deg" in one compact line.
-void poseLine(const Pose& pose);
+// "x, y, z mm | az, el, rot deg"; `compact` drops the spaces (Ui::poseLine picks what fits).
+std::string poseText(const Pose& pose, bool compact = false);
 // The parameter (Pose::toArray() order) as a reference into the pose.
 double& poseValue(Pose& pose, int parameter);
 // The six slider rows: the camera's parameters, or the motion of the bone they target.
@@ -43,9 +43,10 @@ void bulletWrapped(const char* format, ...) IM_FMTARGS(1);
 void dimWrapped(const char* format, ...) IM_FMTARGS(1);
 // Coloured text that wraps.
 void coloredWrapped(const ImVec4& color, const std::string& text);
-// One line of text cut to the available width with "...", the whole text in a tooltip when
-// hovered (long paths, load errors).
-void elidedText(const ImVec4& color, const std::string& text);
+// One line of text cut to the available width with "..." (the start goes: a path's file name,
+// an error's cause stay). True when it was cut: the caller shows the whole text in a tooltip
+// (Ui::elidedLine).
+bool elidedText(const ImVec4& color, const std::string& text);
 // "x offset" -> "x-offset" (widget ids for tests).
 std::string idName(const char* name);
 
