@@ -62,6 +62,18 @@ DrrValueOptions appDrrValueOptions(const Volume& volume) {
     return options;
 }
 
+std::shared_ptr<LoadedScene> withDrrThreshold(const LoadedScene& plain, double thresholdHU,
+                                              int threads) {
+    auto copy = std::make_shared<LoadedScene>(plain);
+    DrrValueOptions options = appDrrValueOptions(*plain.volume);
+    options.thresholdHU = thresholdHU;
+    options.threads = threads;
+    copy->drrVolume = prepareDrrVolume(*plain.volume, options);
+    if (plain.bones) copy->bones = withDrrValues(*plain.bones, *plain.volume, options);
+    copy->generation = newSceneGeneration();
+    return copy;
+}
+
 std::shared_ptr<LoadedScene> buildScene(const std::string& spec, const SceneProgress& progress) {
     auto scene = std::make_shared<LoadedScene>();
     scene->spec = spec;

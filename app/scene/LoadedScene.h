@@ -63,4 +63,10 @@ bool looksLikeMri(const Volume& volume);
 // The DRR options the app uses for every image (both reference and user).
 DrrValueOptions appDrrValueOptions(const Volume& volume);
 
+// `plain` (as loaded, or with grown bones) with its DRR volume and its bones' DRR objects
+// prepared again, leaving out voxels whose stored value (HU for CTs) is below `thresholdHU`; a
+// new generation (no cached image of `plain` is reused). Volume, surfaces, targets are shared.
+std::shared_ptr<LoadedScene> withDrrThreshold(const LoadedScene& plain, double thresholdHU,
+                                              int threads);
+
 }  // namespace fm::app

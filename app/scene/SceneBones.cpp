@@ -35,17 +35,23 @@ std::array<double, 13> objectState(const SceneObject& o) {
 
 namespace {
 
-// One bone per selection: its own volume, surface, targets; pivots at their centroids.
-std::shared_ptr<SceneBones> bonesFromLabels(const Volume& ct, std::shared_ptr<const Volume> labels,
-                                            const std::vector<BoneSelection>& selections,
-                                            const DrrValueOptions& values, double iso) {
-    auto out = std::make_shared<SceneBones>();
+BoneSceneOptions boneSceneOptions(const DrrValueOptions& values) {
     BoneSceneOptions options;
     options.values = values;
     // Outside a bone is "nothing": air for HU volumes (mu 0), 0 for volumes integrated as stored
     // (-1000 there would subtract 1000 per mm, and bone + rest would not add up to the whole).
     if (values.values == DrrValues::Raw) options.volume.airValue = 0.0f;
+    return options;
+}
+
+// One bone per selection: its own volume, surface, targets; pivots at their centroids.
+std::shared_ptr<SceneBones> bonesFromLabels(const Volume& ct, std::shared_ptr<const Volume> labels,
+                                            const std::vector<BoneSelection>& selections,
+                                            const DrrValueOptions& values, double iso) {
+    auto out = std::make_shared<SceneBones>();
+    const BoneSceneOptions options = boneSceneOptions(values);
     out->scene = makeBoneScene(ct, *labels, selections, options);
+    out->selections = selections;
     for (const BoneSelection& b : selections) {
         SceneBone bone;
         bone.name = b.name;
@@ -114,6 +120,13 @@ std::shared_ptr<const SceneBones> growBone(const Volume& ct, const SceneBones* b
     auto out = bonesFromLabels(ct, std::make_shared<const Volume>(std::move(labels)), selections,
                                values, level);
     out->grown = true;
+    return out;
+}
+
+std::shared_ptr<const SceneBones> withDrrValues(const SceneBones& bones, const Volume& ct,
+                                                const DrrValueOptions& values) {
+    auto out = std::make_shared<SceneBones>(bones);
+    out->scene = makeBoneScene(ct, *bones.labels, bones.selections, boneSceneOptions(values));
     return out;
 }
 

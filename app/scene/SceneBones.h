@@ -12,6 +12,7 @@
 
 #include "bones/BoneMotion.h"
 #include "bones/KneeMotionGame.h"
+#include "bones/LabelTable.h"
 #include "core/Image.h"
 #include "mesh/Mesh.h"
 #include "scene/Scene.h"
@@ -31,6 +32,7 @@ struct SceneBone {
 struct SceneBones {
     std::vector<SceneBone> bones;
     std::shared_ptr<const Volume> labels;  // on the CT's grid; bone i holds label i + 1 when grown
+    std::vector<BoneSelection> selections;  // the labels of each bone (the same order)
     Scene scene;  // one object per bone (the same order), then "rest"
     std::optional<KneeJoint> knee;
     int femur = -1, tibia = -1;  // indices into bones (knee)
@@ -49,6 +51,11 @@ std::shared_ptr<const SceneBones> buildSceneBones(const std::string& spec, const
 std::shared_ptr<const SceneBones> growBone(const Volume& ct, const SceneBones* bones,
                                            const glm::dvec3& from, const glm::dvec3& to,
                                            double level, const DrrValueOptions& values);
+
+// The same bones with their DRR objects prepared from `ct` with `values` (the app's bone-only
+// threshold); the bones' volumes, surfaces, targets and labels are shared.
+std::shared_ptr<const SceneBones> withDrrValues(const SceneBones& bones, const Volume& ct,
+                                                const DrrValueOptions& values);
 
 // The list the UI shows for these bones (names, colours; all shown, none moved).
 std::vector<BoneView> boneViews(const SceneBones& bones);

@@ -166,6 +166,7 @@ struct Requests {
     bool reveal = false;
     bool resetView = false;
     bool remesh = false;  // rebuild the bone surface at BoneSurface::level
+    bool boneThreshold = false;  // apply DrrThreshold (toggled, or its level edited)
     std::optional<std::string> loadVolume;
     std::optional<ImagingMode> mode;  // switch X-ray / MRI slice (a new reference in that mode)
     bool newFlex = false;    // start the flex game, or draw another hidden flexion
@@ -234,6 +235,16 @@ inline constexpr std::array<std::array<float, 3>, 6> kBoneColors{{{0.93f, 0.89f,
 // The slider ranges of a bone's motion (shifts along and turns about the world axes).
 std::array<ParameterSpec, kParameterCount> boneMotionSpecs();
 
+// Bone-only DRRs for real CTs, whose DRRs otherwise show mostly soft tissue: voxels whose
+// stored value (HU for CTs) is below `level` are left out of the DRR volume, so of both images,
+// Match and Solve. Off by default; the level starts at the scene's bone level on every load.
+struct DrrThreshold {
+    bool enabled = false;
+    float level = 300.0f;
+    bool valuesInHu = true;  // the volume's values are HU (else "value": stored units)
+    double prepareMs = 0.0;  // the last preparation of the thresholded DRR volume
+};
+
 struct AppState {
     // Chosen on load (slices for an MRI file, X-rays otherwise) and by the user.
     ImagingMode mode = ImagingMode::Xray;
@@ -260,6 +271,7 @@ struct AppState {
     ImageEdgeLetters referenceEdges, userEdges;
     View3d view;
     BoneSurface bone;
+    DrrThreshold drrThreshold;
     bool showHelp = false;
     // The parameter the arrow keys nudge (KeyboardNudge): Up/Down or a click select it.
     int selectedParameter = kOffsetX;

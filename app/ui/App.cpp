@@ -85,7 +85,10 @@ void App::installLoadResult(SceneLoader::Result result) {
         state_.load.error = result.error;
         return;
     }
-    scene_ = std::move(result.scene);
+    // The bone-only choice stays; its level starts at this scene's bone level.
+    state_.drrThreshold.level = static_cast<float>(result.scene->isoValue);
+    state_.drrThreshold.valuesInHu = looksLikeHounsfield(*result.scene->volume);
+    showScene(std::move(result.scene));
     state_.load.error.clear();
     state_.load.loadedSpec = scene_->spec;
     state_.load.summary = scene_->summary;
@@ -117,6 +120,31 @@ void App::installLoadResult(SceneLoader::Result result) {
         newReference();
     }
     firstScene_ = false;
+}
+
+void App::showScene(std::shared_ptr<LoadedScene> plain) {
+    plainScene_ = std::move(plain);
+    const DrrThreshold& t = state_.drrThreshold;
+    if (!t.enabled) {
+        scene_ = plainScene_;  // its own images, cached ones included
+        return;
+    }
+    const auto start = std::chrono::steady_clock::now();
+    scene_ = withDrrThreshold(*plainScene_, t.level, options_.drrThreads);
+    state_.drrThreshold.prepareMs = msSince(start);
+}
+
+void App::applyDrrThreshold() {
+    if (!scene_) return;
+    // Other images: a running solve compares with the old ones, so it ends (as on a reload).
+    solver_.stop();
+    pollSolver();
+    state_.solve = SolveStatus{state_.solve.method};
+    solveShownPose_.reset();
+    showScene(plainScene_);
+    referenceKey_.reset();
+    userKey_.reset();
+    state_.matchIsStale = state_.match.has_value();
 }
 
 void App::showBone(std::shared_ptr<const Mesh> mesh, double level) {
@@ -283,6 +311,7 @@ void App::processRequests() {
     }
     if (requests.newReference) newReference();
     if (requests.remesh) remesh();
+    if (requests.boneThreshold) applyDrrThreshold();
     if (requests.stopSolve) {
         solver_.stop();
         pollSolver();

@@ -98,6 +98,10 @@ class App {
     void growAt(const std::array<int, 4>& pixel);  // region growing from a clicked pixel
     void startBoneSolve(int method);  // the flex game's Solve: the tibia registered alone
     void judgeBoneSolve();            // ... its answer judged on the joint angles
+    // The scene shown: `plain` (without the bone-only threshold), or a copy with bone-only
+    // DRRs when AppState::drrThreshold is on (a new generation, same poses).
+    void showScene(std::shared_ptr<LoadedScene> plain);
+    void applyDrrThreshold();
 
     RenderBackend& backend_;
     AppOptions options_;
@@ -105,6 +109,9 @@ class App {
     Ui ui_;
     SceneLoader loader_;
     std::shared_ptr<LoadedScene> scene_;
+    // The scene without the bone-only threshold (as loaded, plus grown bones); scene_ is it,
+    // or its copy with bone-only DRRs (AppState::drrThreshold).
+    std::shared_ptr<LoadedScene> plainScene_;
     // The bone surface shown: the scene's until the user picks another level.
     std::shared_ptr<const Mesh> bone_;
     // With bones: their surfaces (the scene's until the user picks another level), same order.

@@ -111,7 +111,7 @@ void App::growAt(const std::array<int, 4>& pixel) {
     const double row = (pixel[1] + 0.5) * g.detector.size.y / std::max(1, pixel[3]) - 0.5;
     std::shared_ptr<const SceneBones> grown;
     try {
-        grown = growBone(*scene_->volume, scene_->bones.get(), g.source,
+        grown = growBone(*plainScene_->volume, plainScene_->bones.get(), g.source,
                          g.detector.pixelCenter(col, row), state_.bone.shownLevel,
                          appDrrValueOptions(*scene_->volume));
     } catch (const Error& e) {
@@ -120,10 +120,10 @@ void App::growAt(const std::array<int, 4>& pixel) {
     }
     // A new scene (the loaded one stays as it was in the loader's memory): the old bones keep
     // what the user did with them, the new one is shown.
-    auto scene = std::make_shared<LoadedScene>(*scene_);
+    auto scene = std::make_shared<LoadedScene>(*plainScene_);
     scene->bones = grown;
     scene->generation = newSceneGeneration();
-    scene_ = std::move(scene);
+    showScene(std::move(scene));  // bone-only DRRs, when on, for the grown bones too
     std::vector<BoneView> list = boneViews(*grown);
     for (std::size_t i = 0; i < bones.list.size() && i < list.size(); ++i) list[i] = bones.list[i];
     bones.list = std::move(list);

@@ -27,12 +27,12 @@ void Ui::kneeAnglesLine(const AppState& state) {
     ImGui::TextColored(kSelected, "flexion %.1f  varus %.1f  int.rot %.1f deg", a[3], a[4], a[5]);
     record("text:knee-angles");
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("The knee's Grood-Suntay angles, tibia relative to femur "
+        tooltip("The knee's Grood-Suntay angles, tibia relative to femur "
                           "(docs/bones.md):\nflexion about the femur's x axis, varus about the "
                           "floating axis, internal rotation about the tibia's long axis");
     ImGui::TextColored(kDim, "shift %.1f  drawer %.1f  distr. %.1f mm", a[0], a[1], a[2]);
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("The tibia's origin in the femur's frame, along e1, e2, e3: medial "
+        tooltip("The tibia's origin in the femur's frame, along e1, e2, e3: medial "
                           "shift, anterior drawer, distraction");
 }
 
@@ -43,7 +43,7 @@ void Ui::bonesTab(AppState& state) {
         ImGui::Checkbox("Grow a bone: click it in your DRR", &bones.growArmed);
         record("checkbox:grow");
         if (ImGui::IsItemHovered())
-            ImGui::SetTooltip("The first voxel at or above the surface level (%.0f) on the ray "
+            tooltip("The first voxel at or above the surface level (%.0f) on the ray "
                               "through the clicked pixel seeds it; it grows over the connected "
                               "voxels at or above that level, never into another bone",
                               state.bone.shownLevel);
@@ -81,7 +81,7 @@ void Ui::bonesTab(AppState& state) {
             }
             record("button:only-" + b.name);
             if (ImGui::IsItemHovered())
-                ImGui::SetTooltip("Show %s alone (no soft tissue)", b.name.c_str());
+                tooltip("Show %s alone (no soft tissue)", b.name.c_str());
             ImGui::PopID();
         }
         ImGui::TableNextRow();
@@ -107,13 +107,13 @@ void Ui::bonesTab(AppState& state) {
     if (ImGui::Button(flex.active ? "New flexion" : "Flex game")) state.requests.newFlex = true;
     record("button:new-flex");
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("The reference knee is flexed by a hidden motion of the tibia: move the "
+        tooltip("The reference knee is flexed by a hidden motion of the tibia: move the "
                           "tibia to find it");
     ImGui::SameLine();
     difficultyCombo("##flex-difficulty", flex.difficulty);
     record("combo:flex-difficulty");
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("easy: flexion only; medium: also varus and rotation; hard: also "
+        tooltip("easy: flexion only; medium: also varus and rotation; hard: also "
                           "shifts, and deeper flexion");
     if (!flex.active) return;
     ImGui::SameLine();

@@ -249,13 +249,13 @@ void Ui::parameterPane(AppState& state, const Pane& pane) {
         // The sliders move one bone: name it, and give the knee's angles live while it moves.
         if (ImGui::Button("Rest")) state.bones.list[target].motion = {};
         record("button:bone-rest");
-        if (ImGui::IsItemHovered()) ImGui::SetTooltip("Put the bone back where the CT has it");
+        if (ImGui::IsItemHovered()) tooltip("Put the bone back where the CT has it");
         ImGui::SameLine();
         const auto& c = state.bones.list[target].color;
         ImGui::TextColored(ImVec4(c[0], c[1], c[2], 1.0f), "moving: %s",
                            state.bones.list[target].name.c_str());
         if (ImGui::IsItemHovered())
-            ImGui::SetTooltip("Shifts along and turns about the LPS axes, through the bone's "
+            tooltip("Shifts along and turns about the LPS axes, through the bone's "
                               "pivot (femur, tibia: the knee's flexion axis). Bones tab: the "
                               "camera again");
         kneeAnglesLine(state);
@@ -317,6 +317,27 @@ void Ui::parameterPane(AppState& state, const Pane& pane) {
     ImGui::End();
 }
 
+void Ui::drrThresholdControl(AppState& state, float width) {
+    DrrThreshold& t = state.drrThreshold;
+    if (ImGui::Checkbox("Bone-only DRR", &t.enabled)) state.requests.boneThreshold = true;
+    record("checkbox:bone-only");
+    if (ImGui::IsItemHovered())
+        tooltip("Leave out of both DRRs every voxel below the level beside (%s): a CT's DRR "
+                "otherwise shows mostly soft tissue. Match and Solve use the same images.",
+                t.valuesInHu ? "HU" : "the volume's values");
+    ImGui::BeginDisabled(!t.enabled);
+    ImGui::SetNextItemWidth(width);
+    ImGui::DragFloat("##bone-threshold", &t.level, 5.0f, state.bone.minLevel, state.bone.maxLevel,
+                     t.valuesInHu ? "from %.0f HU" : "from %.4g", ImGuiSliderFlags_AlwaysClamp);
+    // Prepared again once the drag ends or the typed value is confirmed (as the bone level).
+    if (ImGui::IsItemDeactivatedAfterEdit()) state.requests.boneThreshold = true;
+    record("drag:bone-threshold");
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+        tooltip("The bone-only level: drag, or double-click and type (applied on release; "
+                "the last preparation took %.0f ms)", t.prepareMs);
+    ImGui::EndDisabled();
+}
+
 void Ui::comparePane(AppState& state, const Pane& pane, unsigned texture) {
     beginPane("Compare", pane);
     int mode = static_cast<int>(state.display.compare);
@@ -370,6 +391,7 @@ void Ui::comparePane(AppState& state, const Pane& pane, unsigned texture) {
                           "on an image", units);
     if (ImGui::SmallButton("Enlarge")) state.compareEnlarged = true;
     record("button:enlarge-compare");
+    if (state.mode == ImagingMode::Xray) drrThresholdControl(state, controlsWidth);
     const Timings& t = state.timings;
     ImGui::Spacing();
     if (!state.showTimings) {

@@ -73,6 +73,7 @@ class Ui {
     void imageWidget(AppState& state, const std::string& id, unsigned texture, const Image* image,
                      const Mask* dataMask, const ImageEdgeLetters& edges, float side);
     void enlargedCompare(AppState& state, unsigned texture);
+    void drrThresholdControl(AppState& state, float width);  // Compare pane: bone-only DRRs
     // Tooltip.cpp: the hovered item's tooltip (the last request of a frame wins), drawn by
     // drawTooltip after every pane, never over the load progress bar.
     void tooltip(const char* format, ...) __attribute__((format(printf, 2, 3)));
