@@ -12,8 +12,6 @@
 namespace fm::app {
 
 namespace {
-constexpr double kStep = 1.0, kFineStep = 0.1;  // mm or deg
-
 bool pressed(ImGuiKey key) {
     return ImGui::IsKeyPressed(ImGui::GetKeyIndex(key), true);
 }
@@ -38,10 +36,8 @@ void Ui::keyboard(AppState& state) {
     if (direction == 0) return;
     const auto specs = widgets::sliderSpecs(state);
     double& value = widgets::sliderValue(state, selected);
-    const double step = io.KeyShift ? kFineStep : kStep;
-    // On the 0.1 grid, so that nudges add up exactly as shown.
-    const double nudged = std::round((value + direction * step) * 10.0) / 10.0;
-    const double clamped = std::clamp(nudged, specs[selected].min, specs[selected].max);
+    const double clamped = widgets::nudgedValue(value, direction, io.KeyShift,
+                                                specs[selected].min, specs[selected].max);
     if (clamped != value) {
         value = clamped;
         state.matchIsStale = true;

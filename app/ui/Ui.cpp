@@ -218,8 +218,8 @@ void Ui::parameterPane(AppState& state, const Pane& pane) {
             ImGui::TextUnformatted(spec.name);
         record("label:" + id);
         if (ImGui::IsItemHovered())
-            tooltip("Up/Down select a parameter, Left/Right nudge it by 1 %s "
-                              "(Shift: 0.1)", spec.unit);
+            tooltip("Up/Down select a parameter, Left/Right (or the wheel over its slider) "
+                    "nudge it by 1 %s (Shift: 0.1)", spec.unit);
         ImGui::SameLine(labelWidth + ImGui::GetStyle().WindowPadding.x);
         // Slider and number field edit the same value, so each follows the other (as in 2011).
         ImGui::SetNextItemWidth(sliderWidth);
@@ -230,6 +230,14 @@ void Ui::parameterPane(AppState& state, const Pane& pane) {
             value = std::round(value * 10.0) / 10.0;
         if (ImGui::IsItemActive()) {
             state.interacting = true;
+            state.selectedParameter = p;
+        }
+        // The wheel over a slider nudges it as the arrow keys do (1 mm / 1 deg, Shift 0.1): a
+        // slider pixel spans more than a millimetre of the knee's 300 mm range.
+        const ImGuiIO& io = ImGui::GetIO();
+        if (ImGui::IsItemHovered() && io.MouseWheel != 0.0f) {
+            value = nudgedValue(value, io.MouseWheel > 0.0f ? 1 : -1, io.KeyShift, spec.min,
+                                spec.max);
             state.selectedParameter = p;
         }
         record("slider:" + id);

@@ -1,6 +1,7 @@
 #include "ui/UiWidgets.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdarg>
 #include <cstdio>
 
@@ -98,6 +99,11 @@ bool elidedText(const ImVec4& color, const std::string& text) {
     while (cut < text.size() && ImGui::CalcTextSize(text.c_str() + cut).x + dots > avail) ++cut;
     ImGui::TextColored(color, "...%s", text.c_str() + cut);
     return true;
+}
+
+double nudgedValue(double value, int direction, bool fine, double min, double max) {
+    const double step = fine ? 0.1 : 1.0;
+    return std::clamp(std::round((value + direction * step) * 10.0) / 10.0, min, max);
 }
 
 std::string idName(const char* name) {

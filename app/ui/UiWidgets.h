@@ -37,6 +37,9 @@ std::array<ParameterSpec, kParameterCount> sliderSpecs(const AppState& state);
 double& sliderValue(AppState& state, int parameter);
 // The easy / medium / hard combo, just wide enough for "medium".
 void difficultyCombo(const char* id, Difficulty& difficulty);
+// `value` nudged `direction` (+1 / -1) steps of 1 mm or 1 deg (`fine`: 0.1), on the 0.1 grid
+// (nudges add up exactly as shown) and clamped to [min, max]: the arrow keys and the wheel.
+double nudgedValue(double value, int direction, bool fine, double min, double max);
 // A bullet whose text wraps at the window edge (BulletText does not wrap).
 void bulletWrapped(const char* format, ...) IM_FMTARGS(1);
 // Dimmed text that wraps.

@@ -37,6 +37,32 @@ TEST_F(KeyboardUi, ArrowsSelectAndNudgeTheParameters) {
     EXPECT_EQ(s.selectedParameter, app::kElevation);
 }
 
+TEST_F(KeyboardUi, TheWheelOverASliderPlacesAMillimetre) {
+    app::AppState& s = app->state();
+    const app::WidgetRect slider = script->widget("slider:z-offset");
+    // A slider pixel spans more than a millimetre: a drag alone cannot place one.
+    EXPECT_GT(2.0 * s.translationRangeMm / (slider.max.x - slider.min.x), 1.0);
+    script->wheel(slider.center(), 1.0f);
+    EXPECT_DOUBLE_EQ(s.userPose.offset.z, 1.0);
+    EXPECT_EQ(s.selectedParameter, app::kOffsetZ) << "the wheel selects what it moves";
+    script->wheel(slider.center(), -1.0f);
+    script->wheel(slider.center(), -1.0f);
+    EXPECT_DOUBLE_EQ(s.userPose.offset.z, -1.0);
+    // With Shift: a tenth.
+    app::FrameInput fine;
+    fine.mousePos = slider.center();
+    fine.wheel = 1.0f;
+    fine.shift = true;
+    backend->setFrameInput(fine);
+    app->frame();
+    EXPECT_DOUBLE_EQ(s.userPose.offset.z, -0.9);
+    EXPECT_DOUBLE_EQ(s.userPose.offset.x, 0.0) << "only the slider under the mouse";
+    // Clamped at the slider's end.
+    s.userPose.offset.z = s.translationRangeMm - 0.5;
+    script->wheel(slider.center(), 1.0f);
+    EXPECT_DOUBLE_EQ(s.userPose.offset.z, s.translationRangeMm);
+}
+
 TEST_F(KeyboardUi, EnterPressesMatchButNotWhileTypingInAField) {
     script->pressKey(ImGuiKey_Enter);
     EXPECT_EQ(app->state().attempts, 1);
