@@ -232,6 +232,21 @@ const SceneRenderer::GpuMesh& SceneRenderer::uploadMesh(std::size_t slot, const 
     return gpu;
 }
 
+// Textured triangles (x, y, z, s, t per vertex) with the film shader: the film quad and the
+// slice plane's cut through the box are drawn the same way.
+void SceneRenderer::drawFilm(const std::vector<float>& vertices, const glm::mat4& viewProjection,
+                             GLuint texture) {
+    filmShader_.use();
+    filmShader_.set("uViewProjection", viewProjection);
+    filmShader_.set("uImage", 0);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, texture);
+    glBindVertexArray(filmVao_);
+    glBindBuffer(GL_ARRAY_BUFFER, filmVbo_);
+    glBufferData(GL_ARRAY_BUFFER, vertices.size() * sizeof(float), vertices.data(), GL_STREAM_DRAW);
+    glDrawArrays(GL_TRIANGLES, 0, GLsizei(vertices.size() / 5));
+}
+
 void SceneRenderer::draw(const app::LoadedScene* scene, const std::vector<SurfaceItem>& surfaces,
                          const Pose& pose, const app::View3d& view, GLuint filmTexture,
                          glm::ivec2 size, bool multisample, bool slicePlane) {
@@ -299,18 +314,7 @@ void SceneRenderer::draw(const app::LoadedScene* scene, const std::vector<Surfac
                 vertex(cut[i]);
                 vertex(cut[i + 1]);
             }
-            if (!fan.empty()) {
-                filmShader_.use();
-                filmShader_.set("uViewProjection", viewProjection);
-                filmShader_.set("uImage", 0);
-                glActiveTexture(GL_TEXTURE0);
-                glBindTexture(GL_TEXTURE_2D, filmTexture);
-                glBindVertexArray(filmVao_);
-                glBindBuffer(GL_ARRAY_BUFFER, filmVbo_);
-                glBufferData(GL_ARRAY_BUFFER, fan.size() * sizeof(float), fan.data(),
-                             GL_STREAM_DRAW);
-                glDrawArrays(GL_TRIANGLES, 0, GLsizei(fan.size() / 5));
-            }
+            if (!fan.empty()) drawFilm(fan, viewProjection, filmTexture);
             meshShader_.use();
         }
         if (slicePlane) {  // translucent, so the plane inside shows through it
@@ -353,15 +357,7 @@ void SceneRenderer::draw(const app::LoadedScene* scene, const std::vector<Surfac
                 const glm::vec3 p = toScene(corners[i]);
                 quad.insert(quad.end(), {p.x, p.y, p.z, uv[i][0], uv[i][1]});
             }
-            filmShader_.use();
-            filmShader_.set("uViewProjection", viewProjection);
-            filmShader_.set("uImage", 0);
-            glActiveTexture(GL_TEXTURE0);
-            glBindTexture(GL_TEXTURE_2D, filmTexture);
-            glBindVertexArray(filmVao_);
-            glBindBuffer(GL_ARRAY_BUFFER, filmVbo_);
-            glBufferData(GL_ARRAY_BUFFER, quad.size() * sizeof(float), quad.data(), GL_STREAM_DRAW);
-            glDrawArrays(GL_TRIANGLES, 0, 6);
+            drawFilm(quad, viewProjection, filmTexture);
         }
 
         std::vector<LineVertex> lines;

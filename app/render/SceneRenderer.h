@@ -57,6 +57,8 @@ class SceneRenderer {
 
   private:
     void resize(glm::ivec2 size);
+    void drawFilm(const std::vector<float>& vertices, const glm::mat4& viewProjection,
+                  GLuint texture);
     struct GpuMesh {
         GLuint vao = 0, vbo = 0, ebo = 0;
         GLsizei indexCount = 0;
