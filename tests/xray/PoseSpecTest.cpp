@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "common/TestData.h"
+#include "common/TextFuzz.h"
 #include "core/Error.h"
 #include "pose/AutoscoperTra.h"
 #include "pose/JointTrackPoses.h"
@@ -90,6 +91,17 @@ TEST(PoseSpec, OutputsAreCheckedBeforeWork) {
     checkPoseOutput(dir / "new.jts", 5);  // a file that does not exist yet is fine
     writeText(dir / "bad.tra", "1,2,3\n");
     expectError([&] { checkPoseOutput(dir / "bad.tra", 0); }, "bad.tra");
+}
+
+// The six numbers of --start/--reference-pose, randomly corrupted (tests/common/TextFuzz.h):
+// a valid rigid pose or fm::Error naming the value, never a crash or another exception.
+TEST(PoseSpec, SixNumbersFuzzed) {
+    test::fuzzText("six numbers", "18.52191,19.69514,-1027.713,-26.69708,-7.419319,-0.2587041",
+                   [](const std::string& t) {
+                       const RigidTransform pose = readPoseSpec(t, 0);
+                       // What it accepts is a rigid pose: finite, a proper rotation.
+                       EXPECT_NO_THROW(pose.validate("fuzzed six numbers")) << t;
+                   });
 }
 
 }  // namespace
