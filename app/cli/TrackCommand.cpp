@@ -22,6 +22,7 @@
 #include "io/ByteSource.h"
 #include "pose/AutoscoperTra.h"
 #include "track/FrameRecordBytes.h"
+#include "track/SegmentTracking.h"
 #include "track/TrackSegments.h"
 #include "track/TrialScene.h"
 
@@ -64,14 +65,6 @@ std::vector<std::size_t> parseCameras(const std::string& text, std::size_t count
         out.push_back(static_cast<std::size_t>(v - 1));
     }
     return out;
-}
-
-// The pose as the .tra holds it (16 fixed-point decimals): later frames start from this, so a
-// resumed run (which reads it back) and an uninterrupted one compute the same numbers.
-fm::RigidTransform asWritten(const fm::RigidTransform& tra) {
-    fm::TraFile one;
-    one.frames = {{tra}};
-    return *fm::parseTra(fm::traText(one), "pose").frames[0][0];
 }
 
 std::string csvHeader(std::size_t cameras) {
@@ -118,12 +111,7 @@ std::map<int, fm::RigidTransform> keyframesOf(const fm::TrialScene& scene, const
                                               const std::optional<fm::TraFile>& startTra,
                                               const std::string& startPath) {
     // The trial's own keyframes, then the --start file's poses (Autoscoper frame).
-    std::map<int, fm::RigidTransform> keyframes;
-    if (const auto k = scene.trial.keyframes.find(bone); k != scene.trial.keyframes.end())
-        for (const fm::TrialPose& p : k->second)
-            keyframes[p.frame] = p.volumeFrame == fm::VolumeFrame::Autoscoper
-                                     ? fm::objectPoseFromTra(scene, bone, p.worldFromVolume)
-                                     : p.worldFromVolume;
+    std::map<int, fm::RigidTransform> keyframes = fm::trialKeyframes(scene, bone);
     if (startTra) {
         const int object = startTra->objects > 1 ? static_cast<int>(boneIndex) : 0;
         if (object >= startTra->objects)
@@ -212,13 +200,10 @@ void runTrack(const TrackArgs& a) {
     // Each bone is tracked alone, as Autoscoper does: the other bones have no pose in this
     // frame yet (they sit at the identity), so they are hidden from its DRRs.
     std::vector<fm::Tracker> trackers;
-    for (const BoneRun& b : bones) {
-        fm::Scene alone = scene.scene;
-        for (fm::SceneObject& o : alone.objects) o.visible = o.name == b.name;
-        trackers.emplace_back(std::move(alone), b.name,
+    for (const BoneRun& b : bones)
+        trackers.emplace_back(fm::sceneOfBoneAlone(scene, b.name), b.name,
                               fm::trialFrameViews(scene, fm::defaultTrialPreparation(), cameras),
                               settings);
-    }
 
     const std::size_t frameBytes = fm::frameRecordBytes(scene.cameras.size());
     const std::size_t recordBytes = sizeof(std::int32_t) + longest * frameBytes;
@@ -234,7 +219,7 @@ void runTrack(const TrackArgs& a) {
     auto apply = [&](BoneRun& b, const fm::FrameRecord& r) {
         if (r.worldFromBone)
             b.tra.frames[static_cast<std::size_t>(r.frame)][0] =
-                asWritten(fm::traPoseFromObject(scene, b.name, *r.worldFromBone));
+                fm::asWrittenInTra(fm::traPoseFromObject(scene, b.name, *r.worldFromBone));
         b.rows[position.at(r.frame)] = r;
     };
     auto writeOutputs = [&](const BoneRun& b) {
@@ -256,22 +241,15 @@ void runTrack(const TrackArgs& a) {
             BoneRun& b = bones[jobs[static_cast<std::size_t>(job)].bone];
             const fm::TrackSegment& segment =
                 b.segments[jobs[static_cast<std::size_t>(job)].segment];
-            std::map<int, fm::RigidTransform> tracked;  // this segment's frames only
-            std::vector<int> todo;
-            for (int f : segment.frames) {
-                if (const auto d = b.done.find(f); d != b.done.end())
-                    tracked[f] = d->second;
-                else
-                    todo.push_back(f);
-            }
+            const std::size_t todo = fm::framesToTrack(segment, b.done).size();
             std::int32_t count = 0;
             double seconds = 0.0;
-            trackers[jobs[static_cast<std::size_t>(job)].bone].run(
-                todo, segment.keyframes, tracked, [&](const fm::FrameRecord& r) {
-                    if (r.worldFromBone)  // later frames start from the pose as the .tra holds it
-                        tracked[r.frame] = fm::objectPoseFromTra(
-                            scene, b.name,
-                            asWritten(fm::traPoseFromObject(scene, b.name, *r.worldFromBone)));
+            fm::trackSegment(
+                trackers[jobs[static_cast<std::size_t>(job)].bone], segment, b.done,
+                [&](const fm::RigidTransform& pose) {
+                    return fm::storedObjectPose(scene, b.name, pose);
+                },
+                [&](const fm::FrameRecord& r) {
                     fm::encodeFrameRecord(
                         r,
                         record.subspan(sizeof count + static_cast<std::size_t>(count) * frameBytes,
@@ -292,7 +270,7 @@ void runTrack(const TrackArgs& a) {
                         if (!std::isnan(c)) cost += c;
                     std::fprintf(stderr, "%s%s%s frame %d  [%d/%zu]  %.2f s/frame  cost %.4f  %s%s",
                                  interactive ? "\r" : "", who.c_str(), b.name.c_str(), r.frame,
-                                 count, todo.size(), seconds / count, cost,
+                                 count, todo, seconds / count, cost,
                                  r.status == fm::FrameRecord::Status::Tracked
                                      ? r.note.c_str()
                                      : fm::toString(r.status),

@@ -148,4 +148,10 @@ void writeTra(const std::filesystem::path& path, const TraFile& tra) {
     io::writeFileAtomically(path, std::vector<std::uint8_t>(text.begin(), text.end()));
 }
 
+RigidTransform asWrittenInTra(const RigidTransform& pose) {
+    TraFile one;
+    one.frames = {{pose}};
+    return *parseTra(traText(one), "pose").frames[0][0];
+}
+
 }  // namespace fm

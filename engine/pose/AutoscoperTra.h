@@ -44,4 +44,8 @@ TraFile readTra(const std::filesystem::path& path, TraForm form = TraForm::Auto)
 std::string traText(const TraFile& tra);
 void writeTra(const std::filesystem::path& path, const TraFile& tra);
 
+// `pose` as a .tra file holds it (the 16 fixed-point decimals of traText, read back): a run that
+// starts later frames from this computes the same numbers as one resumed from the file.
+RigidTransform asWrittenInTra(const RigidTransform& pose);
+
 }  // namespace fm

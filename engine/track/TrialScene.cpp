@@ -9,6 +9,7 @@
 #include "io/ByteSource.h"
 #include "io/TiffReader.h"
 #include "io/TiffVolume.h"
+#include "pose/AutoscoperTra.h"
 #include "radiograph/Radiograph.h"
 #include "scene/XrayModel.h"
 #include "similarity/ImagePyramid.h"
@@ -158,6 +159,28 @@ RigidTransform objectPoseFromTra(const TrialScene& t, const std::string& bone, c
 
 RigidTransform traPoseFromObject(const TrialScene& t, const std::string& bone, const RigidTransform& pose) {
     return pose * t.autoscoperFromVolume.at(bone).inverse();
+}
+
+RigidTransform storedObjectPose(const TrialScene& t, const std::string& bone, const RigidTransform& pose) {
+    return objectPoseFromTra(t, bone, asWrittenInTra(traPoseFromObject(t, bone, pose)));
+}
+
+std::map<int, RigidTransform> trialKeyframes(const TrialScene& t, const std::string& bone) {
+    std::map<int, RigidTransform> keyframes;
+    if (const auto k = t.trial.keyframes.find(bone); k != t.trial.keyframes.end())
+        for (const TrialPose& p : k->second)
+            keyframes[p.frame] = p.volumeFrame == VolumeFrame::Autoscoper
+                                     ? objectPoseFromTra(t, bone, p.worldFromVolume)
+                                     : p.worldFromVolume;
+    return keyframes;
+}
+
+Scene sceneOfBoneAlone(const TrialScene& t, const std::string& bone) {
+    if (!t.scene.find(bone))
+        throw Error("trial " + io::quoted(t.trial.source) + ": bone '" + bone + "' is not loaded");
+    Scene alone = t.scene;
+    for (SceneObject& o : alone.objects) o.visible = o.name == bone;
+    return alone;
 }
 
 }  // namespace fm

@@ -49,5 +49,15 @@ FrameViews trialFrameViews(const TrialScene& trial, const RadiographPreparation&
 // .tra poses (worldFromAutoscoperVolume) <-> object poses (worldFromVolume, ours).
 RigidTransform objectPoseFromTra(const TrialScene& t, const std::string& bone, const RigidTransform& tra);
 RigidTransform traPoseFromObject(const TrialScene& t, const std::string& bone, const RigidTransform& pose);
+// An object pose as the bone's .tra holds it (asWrittenInTra of its .tra pose, back as an
+// object pose): what later frames start from, so that runs from the file and without it agree.
+RigidTransform storedObjectPose(const TrialScene& t, const std::string& bone, const RigidTransform& pose);
+
+// The trial's keyframes of `bone` as object poses (frame -> pose); none when it has none.
+std::map<int, RigidTransform> trialKeyframes(const TrialScene& t, const std::string& bone);
+
+// The scene in which `bone` is tracked: the other bones hidden from its DRRs (they have no pose
+// in the frame yet; Autoscoper renders one volume per DRR). fm::Error for a bone not loaded.
+Scene sceneOfBoneAlone(const TrialScene& t, const std::string& bone);
 
 }  // namespace fm
