@@ -31,6 +31,14 @@ std::array<double, 13> objectState(const SceneObject& o) {
     return s;
 }
 
+// Mean distance (mm) of `points` moved by `a` and by `b`; 0 without points.
+double meanDistance(const std::vector<glm::dvec3>& points, const RigidTransform& a,
+                    const RigidTransform& b) {
+    double sum = 0.0;
+    for (const auto& p : points) sum += glm::length(a.applyToPoint(p) - b.applyToPoint(p));
+    return points.empty() ? 0.0 : sum / double(points.size());
+}
+
 }  // namespace
 
 namespace {
@@ -146,21 +154,21 @@ RigidTransform bonePose(const SceneBones& bones, int index, const BoneMotion& mo
 }
 
 Scene posedScene(const SceneBones& bones, const std::vector<BoneView>& list, bool restVisible,
-                 const std::optional<BoneMotion>& overrideTibiaMotion) {
+                 const std::optional<MovedBone>& moved) {
     Scene scene = bones.scene;
     for (std::size_t i = 0; i < bones.bones.size() && i < list.size(); ++i) {
         SceneObject& o = scene.object(bones.bones[i].name);
-        const bool isTibia = int(i) == bones.tibia && overrideTibiaMotion;
+        const bool isMoved = moved && moved->index == int(i);
         o.visible = list[i].visible;
-        o.worldFromObject = bonePose(bones, int(i), isTibia ? *overrideTibiaMotion : list[i].motion);
+        o.worldFromObject = bonePose(bones, int(i), isMoved ? moved->motion : list[i].motion);
     }
     if (auto rest = scene.find(kRestObjectName)) scene.objects[*rest].visible = restVisible;
     return scene;
 }
 
 ObjectStates objectStates(const SceneBones& bones, const std::vector<BoneView>& list,
-                          bool restVisible, const std::optional<BoneMotion>& overrideTibiaMotion) {
-    const Scene scene = posedScene(bones, list, restVisible, overrideTibiaMotion);
+                          bool restVisible, const std::optional<MovedBone>& moved) {
+    const Scene scene = posedScene(bones, list, restVisible, moved);
     ObjectStates states;
     bool asLoaded = true;
     for (const SceneObject& o : scene.objects) {
@@ -207,11 +215,13 @@ double kneeMotionError(const SceneBones& bones, const std::vector<BoneView>& lis
     const SceneBone& tibia = bones.bones.at(std::size_t(bones.tibia));
     const RigidTransform user = bonePose(bones, bones.femur, list.at(bones.femur).motion).inverse() *
                                 bonePose(bones, bones.tibia, list.at(bones.tibia).motion);
-    const RigidTransform reference = bonePose(bones, bones.tibia, referenceTibia);
-    double sum = 0.0;
-    for (const auto& p : tibia.targets)
-        sum += glm::length(user.applyToPoint(p) - reference.applyToPoint(p));
-    return tibia.targets.empty() ? 0.0 : sum / double(tibia.targets.size());
+    return meanDistance(tibia.targets, user, bonePose(bones, bones.tibia, referenceTibia));
+}
+
+double boneMotionError(const SceneBones& bones, int index, const BoneMotion& a,
+                       const BoneMotion& b) {
+    return meanDistance(bones.bones.at(std::size_t(index)).targets, bonePose(bones, index, a),
+                        bonePose(bones, index, b));
 }
 
 }  // namespace fm::app

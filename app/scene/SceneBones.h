@@ -65,17 +65,21 @@ std::vector<BoneView> boneViews(const SceneBones& bones);
 // shown and unmoved: the DRR of the CT as loaded is then the same image (line integrals add),
 // traced as one volume.
 using ObjectStates = std::vector<std::array<double, 13>>;
-// `overrideTibiaMotion`: the motion of bones.tibia instead of the list's (the hidden reference).
+// One bone at another motion than the list's: the hidden reference of a bone game.
+struct MovedBone {
+    int index = -1;
+    BoneMotion motion{};
+};
+// `moved`: that bone at its motion instead of the list's.
 ObjectStates objectStates(const SceneBones& bones, const std::vector<BoneView>& list,
-                          bool restVisible,
-                          const std::optional<BoneMotion>& overrideTibiaMotion = std::nullopt);
+                          bool restVisible, const std::optional<MovedBone>& moved = std::nullopt);
 
 // worldFromObject of bone `index` moved by `motion`.
 RigidTransform bonePose(const SceneBones& bones, int index, const BoneMotion& motion);
 
 // The bones' scene with the list's visibility and motions (no cameras).
 Scene posedScene(const SceneBones& bones, const std::vector<BoneView>& list, bool restVisible,
-                 const std::optional<BoneMotion>& overrideTibiaMotion = std::nullopt);
+                 const std::optional<MovedBone>& moved = std::nullopt);
 
 // The DRR of the bones' scene with these states in `camera` (world frame).
 Image renderObjects(const SceneBones& bones, const ObjectStates& states,
@@ -92,5 +96,10 @@ std::optional<std::array<double, 6>> kneeAngles(const SceneBones& bones,
 // list's motions and the reference knee (femur where the CT has it, tibia at `referenceTibia`).
 double kneeMotionError(const SceneBones& bones, const std::vector<BoneView>& list,
                        const BoneMotion& referenceTibia);
+
+// Mean distance (mm) of bone `index`'s target points between the bone moved by `a` and by `b`
+// (the closeness band of a bone game); 0 when it has no targets.
+double boneMotionError(const SceneBones& bones, int index, const BoneMotion& a,
+                       const BoneMotion& b);
 
 }  // namespace fm::app

@@ -62,16 +62,16 @@ void Solver::start(std::shared_ptr<const LoadedScene> scene, Image reference, co
            });
 }
 
-void Solver::startBone(Scene scene, std::string bone, Image reference,
+void Solver::startBone(Scene scene, std::string bone, std::vector<Image> references,
                        RegistrationSettings settings) {
     const SceneParams start = boneParameterization(scene, bone)->referenceParams();
     launch(settings.method, Pose::fromArray(start),
-           [scene = std::move(scene), bone = std::move(bone), reference = std::move(reference),
+           [scene = std::move(scene), bone = std::move(bone), references = std::move(references),
             settings](const auto& prepared, const RegistrationCallback& progress,
                       const std::atomic<bool>* stop) {
                // The budget arrives with the first progress report.
                prepared(0, int(settings.levelFactors.size()));
-               return registerBone(scene, bone, {reference}, settings, 20.0, progress, stop)
+               return registerBone(scene, bone, references, settings, 20.0, progress, stop)
                    .search;
            });
 }

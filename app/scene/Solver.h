@@ -53,10 +53,12 @@ class Solver {
     // settings' seed and thread count.
     void start(std::shared_ptr<const LoadedScene> scene, Image reference, const Pose& start,
                RegistrationSettings settings);
-    // One bone of `scene` (its camera 0 the user's) registered alone against `reference`, the
-    // others where they are (engine registerBone). The snapshot's poses are then the bone's six
-    // search numbers (boneParameterization(scene, bone)), not a 2011 pose.
-    void startBone(Scene scene, std::string bone, Image reference, RegistrationSettings settings);
+    // One bone of `scene` registered alone against `references` (one per camera of the scene,
+    // camera 0 the user's), the others where they are (engine registerBone). The snapshot's
+    // poses are then the bone's six search numbers (boneParameterization(scene, bone)), not a
+    // 2011 pose.
+    void startBone(Scene scene, std::string bone, std::vector<Image> references,
+                   RegistrationSettings settings);
     // The same in the MRI slice mode: slice-to-volume registration (SliceRegistration) of
     // `reference` (a slice of the scene, with its data mask). The volume's B-spline
     // coefficients are computed on the worker ("preparing").

@@ -140,8 +140,9 @@ struct SolveStatus {
     double poseErrorMm = 0.0;
     std::array<double, kParameterCount> error6{};  // solution minus reference, per parameter
     bool applied = false;                          // the user took the solution onto the sliders
-    // A bone registered alone (the flex game's tibia): its index and the motion found; then
-    // error6 is in the knee's joint angles (kneeAngleArray order) and bestPose is unused.
+    // A bone registered alone (the sliders' target in a bone game): its index and the motion
+    // found; then error6 is in the knee's joint angles (kneeAngleArray order) for the knee's
+    // tibia, else in the bone's motion numbers, and bestPose is unused.
     int bone = -1;
     std::array<double, 6> boneMotion{};
 };
@@ -194,19 +195,22 @@ struct BoneView {
     std::array<double, 6> motion{};
 };
 
-// The flex game: the hidden reference moves the tibia relative to the femur (the knee flexed);
-// the user moves the tibia to find that motion, judged on the Grood-Suntay angles.
+// The bone game: the hidden reference moves one bone from where the CT has it, seen from the
+// user's camera; the user (or Solve) must find that motion. For the knee it is the flex game
+// (the tibia moved relative to the femur, judged on the Grood-Suntay angles); for any other
+// bones the move game (the chosen bone, judged on its six motion numbers).
 struct FlexGame {
     bool active = false;
     Difficulty difficulty = Difficulty::Easy;
-    std::array<double, 6> hiddenMotion{};  // the reference tibia's motion (BoneMotion)
-    // The reference knee's angles (engine kneeAngleArray order: 3 mm, then 3 deg).
+    int bone = -1;                         // the bone the reference moves (knee: the tibia)
+    std::array<double, 6> hiddenMotion{};  // ... by this motion (BoneMotion)
+    // The knee: the reference knee's angles (engine kneeAngleArray order: 3 mm, then 3 deg).
     std::array<double, 6> referenceAngles{};
     bool revealed = false;
     int attempts = 0;
     std::optional<MatchOutcome> outcome;  // the last Check, worded like the camera game's
-    bool outcomeIsStale = false;          // the tibia moved since
-    std::array<double, 6> tibiaAtCheck{};  // ... from this motion
+    bool outcomeIsStale = false;          // the bone moved since
+    std::array<double, 6> motionAtCheck{};  // ... from this motion
 };
 
 struct BonesState {
@@ -219,6 +223,9 @@ struct BonesState {
     // mm; flexion, varus, internal rotation deg).
     std::array<double, 6> angles{};
     FlexGame flex;
+    // A bone's Solve also compares a second view of the reference, 90 deg around in azimuth
+    // (as biplane fluoroscopy): one view hardly sees a motion along its rays.
+    bool biplaneSolve = false;
     // Region growing: the next click on your DRR grows a bone from the voxel it hits.
     bool growArmed = false;
     std::string growMessage;  // what the last grow did, or why it could not

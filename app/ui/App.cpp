@@ -212,6 +212,18 @@ void App::newReference() {
 void App::startSolve() {
     if (!scene_) return;
     const int method = std::clamp(state_.solve.method, 0, kSolveMethodCount - 1);
+    const BonesState& bones = state_.bones;
+    if (state_.mode == ImagingMode::Xray && !bones.flex.active && bones.sliderTarget >= 0 &&
+        bones.sliderTarget < int(bones.list.size())) {
+        // The camera game's reference is another camera's view of the unmoved bones: no motion
+        // of one bone explains it.
+        solver_.stop();
+        state_.solve = SolveStatus{method};
+        state_.solve.error = "Solve finds a bone's motion against a bone game's reference: start " +
+                             std::string(bones.isKnee ? "the flex game" : "the move game") +
+                             " (Bones tab), or choose the camera.";
+        return;
+    }
     if (state_.mode == ImagingMode::Slice) {
         SampledSlice reference =
             renderAppSlice(*scene_, state_.referencePose, 1, options_.drrThreads);
@@ -219,8 +231,8 @@ void App::startSolve() {
                            state_.userPose,
                            appSliceSolveSettings(parseSearchMethod(kSolveMethods[method]),
                                                  options_.drrThreads));
-    } else if (state_.bones.flex.active && scene_->bones) {
-        startBoneSolve(method);
+    } else if (const int bone = boneToSolve(); bone >= 0) {
+        startBoneSolve(method, bone);
     } else {
         solveBone_ = -1;
         startXraySolve(method);

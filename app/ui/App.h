@@ -96,8 +96,12 @@ class App {
     void newFlex();
     void checkFlex();
     void growAt(const std::array<int, 4>& pixel);  // region growing from a clicked pixel
-    void startBoneSolve(int method);  // the flex game's Solve: the tibia registered alone
-    void judgeBoneSolve();            // ... its answer judged on the joint angles
+    // A bone game's verdict on `motion` of `bone` (the knee's tibia: on the joint angles; any
+    // other: its motion numbers against the game's truth). Throws at the knee's gimbal lock.
+    MatchVerdict judgeBoneMotion(int bone, const BoneMotion& motion) const;
+    int boneToSolve() const;  // the bone Solve registers alone, or -1: the camera
+    void startBoneSolve(int method, int bone);  // registerBone on the worker
+    void judgeBoneSolve();                      // ... its answer judged as a Check
     // The scene shown: `plain` (without the bone-only threshold), or a copy with bone-only
     // DRRs when AppState::drrThreshold is on (a new generation, same poses).
     void showScene(std::shared_ptr<LoadedScene> plain);

@@ -1,9 +1,12 @@
 // The App's part for the bones of a scene: which are shown and where (AppState::bones, edited by
 // the bone list and the sliders), the knee's joint angles, and the flex game, whose hidden
-// reference moves the tibia relative to the femur. Every number comes from engine/bones.
+// reference moves one bone (the knee's tibia relative to the femur, or any chosen bone). Every
+// number comes from engine/bones.
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
+#include "bones/BoneMotionGame.h"
 #include "bones/BoneRegistration.h"
 #include "bones/KneeMotionGame.h"
 #include "core/Error.h"
@@ -23,7 +26,9 @@ std::vector<BoneView> unmoved(std::vector<BoneView> list) {
 
 void App::installBones() {
     // A new scene: its bones, all shown and unmoved; the camera is the sliders' target again.
+    const bool biplane = state_.bones.biplaneSolve;  // a choice, not the scene's
     state_.bones = BonesState{};
+    state_.bones.biplaneSolve = biplane;
     boneSurfaces_.clear();
     if (!scene_ || !scene_->bones) return;
     state_.bones.list = boneViews(*scene_->bones);
@@ -42,7 +47,7 @@ ObjectStates App::referenceObjects() const {
     if (!scene_ || !scene_->bones || state_.mode == ImagingMode::Slice) return {};
     const FlexGame& flex = state_.bones.flex;
     return objectStates(*scene_->bones, unmoved(state_.bones.list), state_.bones.restVisible,
-                        flex.active ? std::optional<BoneMotion>(flex.hiddenMotion)
+                        flex.active ? std::optional<MovedBone>({flex.bone, flex.hiddenMotion})
                                     : std::nullopt);
 }
 
@@ -56,48 +61,80 @@ const Pose& App::referenceCamera() const {
 void App::updateBones() {
     BonesState& bones = state_.bones;
     bones.anglesValid = false;
-    if (!scene_ || !scene_->bones || !bones.isKnee) return;
+    if (!scene_ || !scene_->bones) return;
+    FlexGame& flex = bones.flex;
+    if (flex.active && flex.outcome && flex.bone >= 0 && flex.bone < int(bones.list.size()) &&
+        flex.motionAtCheck != bones.list[flex.bone].motion)
+        flex.outcomeIsStale = true;
+    if (!bones.isKnee) return;
     if (const auto angles = kneeAngles(*scene_->bones, bones.list)) {
         bones.angles = *angles;
         bones.anglesValid = true;
     }
-    FlexGame& flex = bones.flex;
-    if (flex.outcome && flex.tibiaAtCheck != bones.list[scene_->bones->tibia].motion)
-        flex.outcomeIsStale = true;
 }
 
 void App::newFlex() {
-    if (!scene_ || !scene_->bones || !state_.bones.isKnee) return;
+    if (!scene_ || !scene_->bones || state_.bones.list.empty()) return;
     BonesState& bones = state_.bones;
     const SceneBones& sb = *scene_->bones;
     FlexGame& flex = bones.flex;
     const Difficulty difficulty = flex.difficulty;
+    // The knee flexes (the tibia moves); other bones: the sliders' bone, else the first.
+    const int bone = bones.isKnee ? sb.tibia
+                     : bones.sliderTarget >= 0 && bones.sliderTarget < int(bones.list.size())
+                         ? bones.sliderTarget
+                         : 0;
     flex = FlexGame{};
     flex.active = true;
     flex.difficulty = difficulty;
-    flex.hiddenMotion = drawKneeMotion(nextSeed_++, difficulty);
-    const auto reference = kneeAngles(sb, unmoved(bones.list), flex.hiddenMotion);
-    if (reference) flex.referenceAngles = *reference;
-    // The user starts from the straight knee, moving the tibia.
-    bones.list[sb.tibia].motion = {};
-    bones.list[sb.tibia].visible = true;
-    bones.sliderTarget = sb.tibia;
+    flex.bone = bone;
+    flex.hiddenMotion = bones.isKnee ? drawKneeMotion(nextSeed_++, difficulty)
+                                     : drawBoneMotion(nextSeed_++, difficulty);
+    if (bones.isKnee)
+        if (const auto reference = kneeAngles(sb, unmoved(bones.list), flex.hiddenMotion))
+            flex.referenceAngles = *reference;
+    // The user starts from where the CT has the bone, moving it.
+    bones.list[bone].motion = {};
+    bones.list[bone].visible = true;
+    bones.sliderTarget = bone;
+}
+
+MatchVerdict App::judgeBoneMotion(int bone, const BoneMotion& motion) const {
+    const SceneBones& sb = *scene_->bones;
+    const FlexGame& flex = state_.bones.flex;
+    // The truth: the hidden motion for the game's bone, where the CT has it for any other.
+    const BoneMotion truth = bone == flex.bone ? flex.hiddenMotion : BoneMotion{};
+    std::vector<BoneView> list = state_.bones.list;
+    list[bone].motion = motion;
+    if (state_.bones.isKnee && bone == sb.tibia && flex.bone == sb.tibia) {
+        // The knee: judged on its joint angles, the closeness on the tibia in the femur's frame.
+        const auto angles = kneeAngles(sb, list);
+        if (!angles) throw Error("knee: not a knee pose (gimbal lock)");
+        return judgeKneeMotion(kneeAnglesFromArray(flex.referenceAngles),
+                               kneeAnglesFromArray(*angles),
+                               kneeMotionError(sb, list, flex.hiddenMotion));
+    }
+    return fm::judgeBoneMotion(truth, motion, boneMotionError(sb, bone, truth, motion));
 }
 
 void App::checkFlex() {
     BonesState& bones = state_.bones;
     FlexGame& flex = bones.flex;
-    if (!scene_ || !scene_->bones || !flex.active || !bones.anglesValid) return;
-    const SceneBones& sb = *scene_->bones;
+    if (!scene_ || !scene_->bones || !flex.active || flex.bone < 0 ||
+        flex.bone >= int(bones.list.size()))
+        return;
+    MatchVerdict verdict;
+    try {
+        verdict = judgeBoneMotion(flex.bone, bones.list[flex.bone].motion);
+    } catch (const Error&) {
+        return;  // the knee at the gimbal lock: no angles to judge
+    }
     ++flex.attempts;
-    const double mtre = kneeMotionError(sb, bones.list, flex.hiddenMotion);
-    MatchOutcome m =
-        outcomeOf(judgeKneeMotion(kneeAnglesFromArray(flex.referenceAngles),
-                                  kneeAnglesFromArray(bones.angles), mtre));
+    MatchOutcome m = outcomeOf(verdict);
     m.attempt = flex.attempts;
     flex.outcome = std::move(m);
     flex.outcomeIsStale = false;
-    flex.tibiaAtCheck = bones.list[sb.tibia].motion;
+    flex.motionAtCheck = bones.list[flex.bone].motion;
 }
 
 void App::growAt(const std::array<int, 4>& pixel) {
@@ -137,20 +174,41 @@ void App::growAt(const std::array<int, 4>& pixel) {
     bones.growMessage = text;
 }
 
-void App::startBoneSolve(int method) {
-    // The tibia alone against the flexed reference, seen from the user's camera; the other
-    // bones and the soft tissue stay where the user has them.
+int App::boneToSolve() const {
+    // A bone only against a bone game's reference (seen from the user's camera, so that the
+    // bone's motion alone explains it): the sliders' bone, or the game's when they move the
+    // camera (the reference follows the camera then: only the bone is left to find).
+    const BonesState& bones = state_.bones;
+    if (!scene_ || !scene_->bones || state_.mode != ImagingMode::Xray || !bones.flex.active)
+        return -1;
+    if (bones.sliderTarget >= 0 && bones.sliderTarget < int(bones.list.size()))
+        return bones.sliderTarget;
+    return bones.flex.bone;
+}
+
+void App::startBoneSolve(int method, int bone) {
+    // The bone alone against the game's reference, seen from the user's camera (and, biplane,
+    // from 90 deg around); the other bones and the soft tissue stay where the user has them.
     const SceneBones& sb = *scene_->bones;
-    solveBone_ = sb.tibia;
+    solveBone_ = bone;
     Scene scene = posedScene(sb, state_.bones.list, state_.bones.restVisible);
-    scene.cameras.push_back(appGeometry(*scene_, state_.userPose));
-    const Image reference = referenceCache_
-                                .get(*scene_, referenceCamera(), 1, DrrTrace::Exact,
-                                     options_.drrThreads, ImagingMode::Xray, referenceObjects())
-                                .image;
-    const std::string name = sb.bones[sb.tibia].name;
+    std::vector<Pose> cameras{state_.userPose};
+    if (state_.bones.biplaneSolve) {
+        Pose side = state_.userPose;
+        side.azimuthDeg = std::remainder(side.azimuthDeg + 90.0, 360.0);
+        cameras.push_back(side);
+    }
+    std::vector<Image> references;
+    for (const Pose& camera : cameras) {
+        scene.cameras.push_back(appGeometry(*scene_, camera));
+        references.push_back(referenceCache_
+                                 .get(*scene_, camera, 1, DrrTrace::Exact, options_.drrThreads,
+                                      ImagingMode::Xray, referenceObjects())
+                                 .image);
+    }
+    const std::string name = sb.bones[bone].name;
     solveBoneParameterization_ = boneParameterization(scene, name);
-    solver_.startBone(std::move(scene), name, reference,
+    solver_.startBone(std::move(scene), name, std::move(references),
                       appSolveSettings(parseSearchMethod(kSolveMethods[method]),
                                        options_.drrThreads));
 }
@@ -159,20 +217,21 @@ void App::judgeBoneSolve() {
     SolveStatus& out = state_.solve;
     solveJudged_ = true;
     const SceneBones* sb = scene_->bones.get();
-    const FlexGame& flex = state_.bones.flex;
-    if (!sb || !solveBoneParameterization_ || solveBone_ != sb->tibia) return;
+    if (!sb || !solveBoneParameterization_ || solveBone_ < 0 ||
+        solveBone_ >= int(state_.bones.list.size()) || !state_.bones.flex.active)
+        return;
     const RigidTransform found =
         solveBoneParameterization_->worldFromObject(out.bestPose.toArray());
     out.bone = solveBone_;
     out.boneMotion = boneMotionOf(found, sb->bones[solveBone_].pivot);
-    // Judged like a Check of the user's tibia at that motion (not counted as an attempt).
-    std::vector<BoneView> list = state_.bones.list;
-    list[solveBone_].motion = out.boneMotion;
-    const auto angles = kneeAngles(*sb, list);
-    if (!angles) return;
-    const MatchVerdict v =
-        judgeKneeMotion(kneeAnglesFromArray(flex.referenceAngles), kneeAnglesFromArray(*angles),
-                        kneeMotionError(*sb, list, flex.hiddenMotion));
+    // Judged like a Check of the bone at that motion (not counted as an attempt).
+    MatchVerdict v;
+    try {
+        v = judgeBoneMotion(solveBone_, out.boneMotion);
+    } catch (const Error& e) {
+        out.error = e.what();
+        return;
+    }
     out.matched = v.match;
     out.closeness = v.closeness;
     out.poseErrorMm = v.mtreMm;

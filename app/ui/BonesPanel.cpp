@@ -1,12 +1,14 @@
 // The Bones tab: the bone list (colour as in the 3D view, shown or hidden in both DRRs and the
-// 3D view, which one the sliders move), the knee's Grood-Suntay angles live, and the flex game:
-// the hidden reference flexes the knee, the user moves the tibia to find that motion.
+// 3D view, which one the sliders move), the knee's Grood-Suntay angles live, and the bone game:
+// the hidden reference moves one bone (the knee: flexes it, the tibia moved; other bones: the
+// chosen one, the move game), the user moves that bone to find the motion.
 #include <imgui.h>
 
 #include <array>
 #include <cmath>
 #include <cstdio>
 
+#include "bones/BoneMotionGame.h"
 #include "bones/KneeMotionGame.h"
 #include "ui/Ui.h"
 #include "ui/UiWidgets.h"
@@ -100,22 +102,40 @@ void Ui::bonesTab(AppState& state) {
         ImGui::EndTable();
     }
     kneeAnglesLine(state);
-    if (!bones.isKnee) return;
+    boneGame(state);
+}
 
+void Ui::boneGame(AppState& state) {
+    BonesState& bones = state.bones;
+    const bool knee = bones.isKnee;
     ImGui::Separator();
     FlexGame& flex = bones.flex;
-    if (ImGui::Button(flex.active ? "New flexion" : "Flex game")) state.requests.newFlex = true;
+    const char* start = knee ? (flex.active ? "New flexion" : "Flex game")
+                             : (flex.active ? "New motion" : "Move game");
+    if (ImGui::Button(start)) state.requests.newFlex = true;
     record("button:new-flex");
-    if (ImGui::IsItemHovered())
-        tooltip("The reference knee is flexed by a hidden motion of the tibia: move the "
-                          "tibia to find it");
+    if (ImGui::IsItemHovered()) {
+        if (knee)
+            tooltip("The reference knee is flexed by a hidden motion of the tibia: move the "
+                    "tibia to find it");
+        else
+            tooltip("The reference moves the bone the sliders move (else the first) by a hidden "
+                    "motion: move it to find that motion");
+    }
     ImGui::SameLine();
     difficultyCombo("##flex-difficulty", flex.difficulty);
     record("combo:flex-difficulty");
-    if (ImGui::IsItemHovered())
-        tooltip("easy: flexion only; medium: also varus and rotation; hard: also "
-                          "shifts, and deeper flexion");
-    if (!flex.active) return;
+    if (ImGui::IsItemHovered()) {
+        if (knee)
+            tooltip("easy: flexion only; medium: also varus and rotation; hard: also "
+                    "shifts, and deeper flexion");
+        else
+            tooltip("shifts and turns up to %.0f mm / deg (easy), %.0f (medium), %.0f (hard)",
+                    boneMotionSpread(Difficulty::Easy), boneMotionSpread(Difficulty::Medium),
+                    boneMotionSpread(Difficulty::Hard));
+    }
+    if (!flex.active || flex.bone < 0 || flex.bone >= int(bones.list.size())) return;
+    const std::string& bone = bones.list[flex.bone].name;
     ImGui::SameLine();
     if (ImGui::Button("Check")) state.requests.checkFlex = true;
     record("button:check-flex");
@@ -127,38 +147,52 @@ void Ui::bonesTab(AppState& state) {
     record("button:end-flex");
 
     if (!flex.outcome) {
-        dimWrapped("The reference knee is flexed: move the tibia (its sliders) until your DRR "
-                   "matches, then Check. Within %.3g deg and %.3g mm per joint angle.",
-                   state.toleranceAngleDeg, state.toleranceOffsetMm);
-        if (flex.revealed)
+        if (knee)
+            dimWrapped("The reference knee is flexed: move the tibia (its sliders) until your "
+                       "DRR matches, then Check. Within %.3g deg and %.3g mm per joint angle.",
+                       state.toleranceAngleDeg, state.toleranceOffsetMm);
+        else
+            dimWrapped("The reference moves %s: move it (its sliders) until your DRR matches, "
+                       "then Check. Within %.3g mm and %.3g deg per motion number.",
+                       bone.c_str(), state.toleranceOffsetMm, state.toleranceAngleDeg);
+        if (flex.revealed && knee)
             ImGui::Text("reference: flexion %.1f  varus %.1f  int. rot. %.1f deg",
                         flex.referenceAngles[3], flex.referenceAngles[4], flex.referenceAngles[5]);
+        else if (flex.revealed)
+            ImGui::TextWrapped("reference: %s moved %.1f, %.1f, %.1f mm | %.1f, %.1f, %.1f deg",
+                               bone.c_str(), flex.hiddenMotion[0], flex.hiddenMotion[1],
+                               flex.hiddenMotion[2], flex.hiddenMotion[3], flex.hiddenMotion[4],
+                               flex.hiddenMotion[5]);
         return;
     }
     const MatchOutcome& m = *flex.outcome;
     coloredWrapped(m.matched ? kGood : kWarn, m.verdict);
     record("text:flex-verdict");
-    ImGui::Text("attempt %d%s", m.attempt, flex.outcomeIsStale ? ", tibia moved since" : "");
+    ImGui::Text("attempt %d%s", m.attempt,
+                flex.outcomeIsStale ? (", " + bone + " moved since").c_str() : "");
     const int columns = flex.revealed ? 3 : 2;
+    const std::array<double, 6>& truth = knee ? flex.referenceAngles : flex.hiddenMotion;
     if (ImGui::BeginTable("flex-hints", columns,
                           ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
-        ImGui::TableSetupColumn("joint angle", ImGuiTableColumnFlags_WidthStretch, 1.6f);
+        ImGui::TableSetupColumn(knee ? "joint angle" : "motion", ImGuiTableColumnFlags_WidthStretch,
+                                1.6f);
         ImGui::TableSetupColumn("hint", ImGuiTableColumnFlags_WidthStretch, 2.0f);
         if (flex.revealed)
             ImGui::TableSetupColumn("reference", ImGuiTableColumnFlags_WidthStretch, 0.9f);
         ImGui::TableHeadersRow();
         for (int p = 0; p < kParameterCount; ++p) {
+            const char* name = knee ? kneeComponentName(p) : boneMotionComponentName(p);
             ImGui::TableNextRow();
             ImGui::TableNextColumn();
             if (p == m.furthestParameter)
-                ImGui::TextColored(kWarn, "%s (furthest)", kneeComponentName(p));
+                ImGui::TextColored(kWarn, "%s (furthest)", name);
             else
-                ImGui::TextUnformatted(kneeComponentName(p));
+                ImGui::TextUnformatted(name);
             ImGui::TableNextColumn();
             ImGui::TextColored(m.direction[p] == 0 ? kGood : kWarn, "%s", m.hintCells[p].c_str());
             if (flex.revealed) {
                 ImGui::TableNextColumn();
-                ImGui::Text("%.1f", flex.referenceAngles[p]);
+                ImGui::Text("%.1f", truth[p]);
             }
         }
         ImGui::EndTable();

@@ -32,13 +32,18 @@ void Ui::solveSection(AppState& state) {
         if (ImGui::Button("Solve")) state.requests.solve = true;
         record("button:solve");
     }
+    solveTarget(state);
     if (!solve.error.empty()) coloredWrapped(kBad, solve.error);
     if (!solve.running && !solve.finished) {
-        dimWrapped(state.bones.flex.active
-                       ? "Solve: the tibia registered alone from where you have it, against the "
-                         "flexed reference (the flex game)."
-                       : "Solve: the automatic search from your pose, to compare with your "
-                         "attempts.");
+        const BonesState& bones = state.bones;
+        const int target = bones.sliderTarget >= 0 ? bones.sliderTarget : bones.flex.bone;
+        if (bones.flex.active && target >= 0 && target < int(bones.list.size()))
+            dimWrapped("Solve: %s registered alone from where you have it, the other bones "
+                       "where they are, against the %s game's reference.",
+                       bones.list[target].name.c_str(), bones.isKnee ? "flex" : "move");
+        else
+            dimWrapped("Solve: the automatic search from your pose, to compare with your "
+                       "attempts.");
         return;
     }
 
@@ -88,13 +93,16 @@ void Ui::solveSection(AppState& state) {
         ImGui::TextWrapped("%s %.1f, %.1f, %.1f mm | %.1f, %.1f, %.1f deg",
                     state.bones.list[solve.bone].name.c_str(), m[0], m[1], m[2], m[3], m[4], m[5]);
         record("text:solve-bone-motion");
-        // Judged on the knee's joint angles; the numbers once the flexion is revealed.
+        // Judged as a Check (the knee's tibia on the joint angles); the numbers once the game's
+        // reference is revealed.
+        const bool kneeAngles = state.bones.isKnee && state.bones.flex.bone == solve.bone;
         if (state.bones.flex.revealed)
-            ImGui::TextWrapped("mTRE %.2f mm, knee error %+.1f %+.1f %+.1f mm | %+.1f %+.1f %+.1f deg",
-                        solve.poseErrorMm, solve.error6[0], solve.error6[1], solve.error6[2],
-                        solve.error6[3], solve.error6[4], solve.error6[5]);
+            ImGui::TextWrapped("mTRE %.2f mm, %s error %+.1f %+.1f %+.1f mm | %+.1f %+.1f %+.1f deg",
+                        solve.poseErrorMm, kneeAngles ? "knee" : "motion", solve.error6[0],
+                        solve.error6[1], solve.error6[2], solve.error6[3], solve.error6[4],
+                        solve.error6[5]);
         else
-            dimWrapped("Reveal (Bones tab) shows its error against the hidden flexion.");
+            dimWrapped("Reveal (Bones tab) shows its error against the hidden motion.");
     } else {
         poseLine(solve.bestPose);
     }
@@ -118,6 +126,40 @@ void Ui::solveSection(AppState& state) {
     if (ImGui::Button(solve.applied ? "Applied" : "Apply solution"))
         state.requests.applySolution = true;
     record("button:apply-solution");
+}
+
+void Ui::solveTarget(AppState& state) {
+    // What Solve moves: the camera, or one bone (the sliders' target: one choice for both).
+    BonesState& bones = state.bones;
+    if (bones.list.empty() || state.mode != ImagingMode::Xray) return;
+    int& target = bones.sliderTarget;
+    const std::string shown = target >= 0 && target < int(bones.list.size())
+                                  ? bones.list[target].name
+                                  : std::string("camera");
+    ImGui::AlignTextToFramePadding();
+    ImGui::TextUnformatted("Solve for:");
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(std::min(ImGui::GetContentRegionAvail().x * 0.45f,
+                                     ImGui::CalcTextSize("femur_right++").x +
+                                         ImGui::GetFrameHeight()));
+    ImGui::BeginDisabled(state.solve.running);
+    if (ImGui::BeginCombo("##solve-target", shown.c_str())) {
+        if (ImGui::Selectable("camera", target < 0)) target = -1;
+        for (int i = 0; i < int(bones.list.size()); ++i)
+            if (ImGui::Selectable(bones.list[i].name.c_str(), target == i)) target = i;
+        ImGui::EndCombo();
+    }
+    record("combo:solve-target");
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+        tooltip("A bone is registered alone against the bone game's reference (the others "
+                "stay); it is also the bone the sliders move");
+    ImGui::SameLine();
+    ImGui::Checkbox("biplane", &bones.biplaneSolve);
+    record("checkbox:solve-biplane");
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+        tooltip("A bone's solve also compares the reference seen from 90 deg around (as biplane "
+                "fluoroscopy): one view hardly sees a motion along its rays");
+    ImGui::EndDisabled();
 }
 
 }  // namespace fm::app

@@ -61,7 +61,9 @@ class Ui {
     void matchPane(AppState& state, const Pane& pane);
     void matchTab(AppState& state);      // MatchPanel.cpp: the user's attempts ...
     void solveSection(AppState& state);  // SolvePanel.cpp
-    void bonesTab(AppState& state);      // BonesPanel.cpp: the bone list and the flex game
+    void solveTarget(AppState& state);   // SolvePanel.cpp: camera or a bone, biplane
+    void bonesTab(AppState& state);      // BonesPanel.cpp: the bone list and ...
+    void boneGame(AppState& state);      // ... the bone game (the knee's flex game, the move game)
     void kneeAnglesLine(const AppState& state);  // BonesPanel.cpp: Grood-Suntay, live: ... and the computer's
     void helpWindow(AppState& state);    // HelpWindow.cpp
     void modeSwitch(AppState& state);    // ModeSwitch.cpp: X-ray / MRI slice

@@ -1,5 +1,7 @@
 #include "bones/KneeMotionGame.h"
 
+#include "bones/BoneMotionGame.h"
+
 #include <cmath>
 #include <string>
 
@@ -65,17 +67,8 @@ BoneMotion drawKneeMotion(std::uint64_t seed, Difficulty difficulty) {
 
 MatchVerdict judgeKneeMotion(const KneeAngles& reference, const KneeAngles& user,
                              double tibiaMtreMm, const MatchTolerances& tolerances) {
-    // The 2011 rule on six numbers (three mm, three deg, angle errors wrapped), renamed.
-    MatchVerdict v = judgeMatch(Pose::fromArray(kneeAngleArray(reference)),
-                                Pose::fromArray(kneeAngleArray(user)), tibiaMtreMm, tolerances);
-    for (int i = 0; i < 6; ++i) {
-        const ParameterHint& h = v.hints[i];
-        const char* word = h.status == ParameterStatus::TooHigh  ? "too high"
-                           : h.status == ParameterStatus::TooLow ? "too low"
-                                                                 : "OK";
-        v.hints[i].text = std::string(kneeComponentName(i)) + " " + word;
-    }
-    return v;
+    return judgeNamedNumbers(kneeAngleArray(reference), kneeAngleArray(user), tibiaMtreMm,
+                             kneeComponentName, tolerances);
 }
 
 }  // namespace fm

@@ -339,3 +339,82 @@ TEST_F(BonesUi, InTheFlexGameSolveRegistersTheTibiaAloneAndFindsTheFlexion) {
 
 }  // namespace
 }  // namespace fm::test
+
+namespace fm::test {
+namespace {
+
+// Mean distance of a bone's target points between two of its motions (the truth, apart from
+// the app: boneMotionTransform of engine/bones about the bone's pivot).
+double motionMtre(const app::SceneBone& bone, const BoneMotion& a, const BoneMotion& b) {
+    const RigidTransform pa = boneMotionTransform(a, bone.pivot);
+    const RigidTransform pb = boneMotionTransform(b, bone.pivot);
+    double sum = 0.0;
+    for (const glm::dvec3& p : bone.targets)
+        sum += glm::length(pa.applyToPoint(p) - pb.applyToPoint(p));
+    return sum / double(bone.targets.size());
+}
+
+TEST_F(BonesUi, SolveRegistersTheChosenBoneAloneWhileTheOthersStay) {
+    start(testAppOptions(), {1280, 800});
+    app->state().userPose = parsePose("0,0,0,90,0,0");
+    script->clickWidget("tab:bones");
+    script->clickWidget("button:new-flex");  // the reference flexes the knee; femur unmoved
+    const BoneMotion flexion = app->state().bones.flex.hiddenMotion;
+    // The user has the femur 4 mm and 4 deg off where the CT (and the reference) has it, and
+    // the tibia at the hidden flexion.
+    app->state().bones.list[1].motion = flexion;
+    const BoneMotion start{3.0, -2.0, 2.0, 4.0, 0.0, -3.0};
+    app->state().bones.list[0].motion = start;
+    // Patella and soft tissue hidden (in both images and in the solve): femur and tibia.
+    app->state().bones.list[2].visible = false;
+    app->state().bones.restVisible = false;
+    script->clickWidget("tab:solve");
+    // The Solve tab chooses the bone (the sliders' target too); biplane: two views.
+    app->state().bones.sliderTarget = 0;
+    script->clickWidget("checkbox:solve-biplane");
+    ASSERT_TRUE(app->state().bones.biplaneSolve);
+    script->clickWidget("button:solve");
+    ASSERT_TRUE(app->state().solve.running) << app->state().solve.error;
+    EXPECT_EQ(app->state().solve.bone, 0);
+    for (int frames = 0; app->state().solve.running && frames < 20000; ++frames) {
+        app->frame();
+        ASSERT_EQ(app->state().bones.list[0].motion, start) << "the solve moves no slider";
+        ASSERT_EQ(app->state().bones.list[1].motion, flexion) << "the tibia stays";
+    }
+    const app::SolveStatus& solve = app->state().solve;
+    ASSERT_TRUE(solve.finished) << solve.error;
+    // The femur's truth is where the CT has it: its motion found is about zero.
+    const app::SceneBone& femur = app->scene()->bones->bones[0];
+    const double mtre = motionMtre(femur, solve.boneMotion, BoneMotion{});
+    EXPECT_LT(mtre, 1.0) << "start " << motionMtre(femur, start, BoneMotion{}) << " mm";
+    EXPECT_GT(motionMtre(femur, start, BoneMotion{}), 4.0);
+    std::printf("femur solved alone (biplane): mTRE %.2f -> %.3f mm, %d evaluations\n",
+                motionMtre(femur, start, BoneMotion{}), mtre, solve.evaluations);
+    // Judged on its motion numbers (not the knee's angles), as the app says it.
+    EXPECT_TRUE(solve.matched);
+    EXPECT_NEAR(solve.poseErrorMm, mtre, 1e-9);
+    for (int k = 0; k < 6; ++k) EXPECT_NEAR(solve.error6[k], solve.boneMotion[k], 1e-9) << k;
+    script->idle(1);
+    script->clickWidget("button:apply-solution");
+    EXPECT_EQ(app->state().bones.list[0].motion, solve.boneMotion);
+    EXPECT_EQ(app->state().bones.list[1].motion, flexion);
+}
+
+TEST_F(BonesUi, SolveForABoneNeedsABoneGamesReference) {
+    script->clickWidget("tab:bones");
+    script->clickWidget("radio:moves-femur");
+    script->clickWidget("tab:solve");
+    script->clickWidget("button:solve");
+    EXPECT_FALSE(app->state().solve.running);
+    EXPECT_NE(app->state().solve.error.find("flex game"), std::string::npos)
+        << app->state().solve.error;
+    EXPECT_EQ(app->state().bones.list[0].motion, BoneMotion{});
+    // The camera again: the camera game's solve.
+    app->state().bones.sliderTarget = -1;
+    script->clickWidget("button:solve");
+    EXPECT_TRUE(app->state().solve.running);
+    EXPECT_EQ(app->state().solve.bone, -1);
+}
+
+}  // namespace
+}  // namespace fm::test
