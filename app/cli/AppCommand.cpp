@@ -5,11 +5,14 @@
 #include <iostream>
 
 #include "cli/CommandRegistry.h"
+#include "cli/WorkspaceOptions.h"
 #include "core/Error.h"
 #include "platform/RenderBackend.h"
 #include "ui/App.h"
 #include "ui/HeadlessScreenshot.h"
 #include "volume/VolumeSource.h"
+#include "workspace/WorkspaceApp.h"
+#include "workspace/WorkspaceHeadless.h"
 
 namespace {
 
@@ -18,9 +21,46 @@ struct AppArgs {
     int frames = 0;
     bool requireWindow = false;
     std::string fallbackOut = "fluoromatch-screenshot.png";
+    fm::cli::WorkspaceArgs workspace;
+    int threads = 0;
 };
 
+// The real X-ray workspace (--trial or --reference): opened before any window, so bad input is
+// a message and a non-zero exit.
+void runWorkspace(const AppArgs& args) {
+    const fm::app::WorkspaceSource source = fm::cli::workspaceSource(args.workspace);
+    const bool trial = !source.trial.empty();
+    auto model = fm::app::WorkspaceModel::open(source, args.threads);
+    for (const std::string& w : model->trial().trial.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+    const int frame = trial ? args.workspace.frame : 0;
+    if (frame >= model->frameCount())
+        throw fm::Error("--frame " + std::to_string(frame) + ": the trial has frames 0.." +
+                        std::to_string(model->frameCount() - 1));
+    std::string error;
+    auto backend = fm::app::createGlfwWindowBackend({1280, 800}, "fluoromatch", error);
+    if (!backend) {
+        if (args.requireWindow) throw fm::Error("no window could be opened: " + error);
+        std::printf("fluoromatch: no display (%s); writing a headless screenshot instead\n", error.c_str());
+        fm::app::WorkspaceHeadlessOptions headless;
+        headless.source = source;
+        headless.threads = args.threads;
+        headless.frame = frame;
+        fm::app::writeWorkspaceScreenshot(headless, args.fallbackOut);
+        return;
+    }
+    std::printf("window: %s\n", backend->describe().c_str());
+    fm::app::WorkspaceApp app(*backend, model);
+    app.state().requests.frame = frame;
+    int frames = 0;
+    while (!backend->shouldClose() && (args.frames <= 0 || frames < args.frames)) {
+        app.frame();
+        ++frames;
+    }
+    std::printf("drew %d frames; workspace: %s\n", frames, model->title().c_str());
+}
+
 void runApp(const AppArgs& args) {
+    if (fm::cli::wantsWorkspace(args.workspace)) return runWorkspace(args);
     std::string error;
     auto backend = fm::app::createGlfwWindowBackend({1280, 800}, "fluoromatch", error);
     if (!backend) {
@@ -68,6 +108,9 @@ FM_REGISTER_COMMAND("app", 1, [](CLI::App& cli) {
     cmd->add_option("--headless-out", args->fallbackOut,
                     "where the headless screenshot goes when there is no display")
         ->capture_default_str();
+    fm::cli::addWorkspaceOptions(cmd, args->workspace);
+    cmd->add_option("--threads", args->threads, "Threads of the workspace's images and Solve (0 = all cores)")
+        ->check(CLI::NonNegativeNumber);
     cmd->callback([args] { runApp(*args); });
     return cmd;
 });

@@ -7,6 +7,7 @@
 #include "core/Error.h"
 #include "meshdrr/MeshDrr.h"
 #include "model/MeshModel.h"
+#include "radiograph/LabelMask.h"
 #include "radiograph/Radiograph.h"
 #include "radiograph/RadiographPreparation.h"
 #include "scene/MeshXrayModel.h"
@@ -31,18 +32,6 @@ const std::string& perModel(const std::vector<std::string>& list, std::size_t k,
     if (list.size() == 1 && isTra(list[0])) return list[0];
     throw Error(std::string(option) + ": give one per --model (" + std::to_string(models) +
                 ") or a single .tra for all");
-}
-
-Mask readLabelMask(const std::string& path, glm::ivec2 size) {
-    const RadiographFile file = readRadiograph(path);
-    if (file.image.width != size.x || file.image.height != size.y)
-        throw Error(path + ": the mask is " + std::to_string(file.image.width) + "x" +
-                    std::to_string(file.image.height) + " but the radiograph is " +
-                    std::to_string(size.x) + "x" + std::to_string(size.y));
-    Mask m(size.x, size.y, false);
-    const float half = file.bitsPerSample > 8 ? 32767.5f : 127.5f;
-    for (std::size_t i = 0; i < m.inside.size(); ++i) m.inside[i] = file.image.pixels[i] > half;
-    return m;
 }
 
 }  // namespace

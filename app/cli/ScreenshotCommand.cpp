@@ -5,11 +5,13 @@
 
 #include "cli/CommandRegistry.h"
 #include "cli/NumberChecks.h"
+#include "cli/WorkspaceOptions.h"
 #include "core/Error.h"
 #include "geometry/Pose.h"
 #include "ui/DragMeasurement.h"
 #include "ui/HeadlessScreenshot.h"
 #include "volume/VolumeSource.h"
+#include "workspace/WorkspaceHeadless.h"
 
 namespace {
 
@@ -22,6 +24,8 @@ struct ScreenshotArgs {
     bool match = false, help = false, timings = false;
     int threads = 0;
     int measureDrag = 0;
+    fm::cli::WorkspaceArgs workspace;
+    bool sideBySide = false, drr = false;
 };
 
 glm::ivec2 parseSize(const std::string& text) {
@@ -58,7 +62,20 @@ fm::app::CompareMode parseCompare(const std::string& text) {
     throw fm::Error("--compare \"" + text + "\": expected difference, overlay or checkerboard");
 }
 
+void runWorkspaceScreenshot(const ScreenshotArgs& args) {
+    fm::app::WorkspaceHeadlessOptions options;
+    options.source = fm::cli::workspaceSource(args.workspace);
+    options.size = parseSize(args.size);
+    options.threads = args.threads;
+    options.frame = options.source.trial.empty() ? 0 : args.workspace.frame;
+    options.sideBySide = args.sideBySide;
+    options.drr = args.drr;
+    options.showTimings = args.timings;
+    fm::app::writeWorkspaceScreenshot(options, args.out);
+}
+
 void runScreenshot(const ScreenshotArgs& args) {
+    if (fm::cli::wantsWorkspace(args.workspace)) return runWorkspaceScreenshot(args);
     fm::app::HeadlessOptions options;
     options.size = parseSize(args.size);
     options.app.volumeSpec = args.volume;
@@ -121,6 +138,9 @@ FM_REGISTER_COMMAND("screenshot", 2, [](CLI::App& cli) {
                     "instead of a screenshot: drag the azimuth slider over N frames and report "
                     "frame times, exact DRRs vs coarse while dragging")
         ->check(CLI::NonNegativeNumber);
+    fm::cli::addWorkspaceOptions(cmd, a->workspace, false);
+    cmd->add_flag("--side-by-side", a->sideBySide, "workspace: the model beside each radiograph, not over it");
+    cmd->add_flag("--drr", a->drr, "workspace: the models' DRRs instead of their outlines");
     cmd->callback([a] { runScreenshot(*a); });
     return cmd;
 });

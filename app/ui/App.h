@@ -18,6 +18,7 @@
 #include "scene/SceneLoader.h"
 #include "scene/Solver.h"
 #include "state/AppState.h"
+#include "ui/ScriptableApp.h"
 #include "ui/Ui.h"
 
 namespace fm::render {
@@ -38,15 +39,15 @@ struct AppOptions {
     bool showTimings = true;  // golden images turn them off (they vary)
 };
 
-class App {
+class App : public ScriptableApp {
   public:
     App(RenderBackend& backend, AppOptions options);
-    ~App();
+    ~App() override;
     App(const App&) = delete;
     App& operator=(const App&) = delete;
 
     // One whole frame: input, UI, requests, DRRs, 3D view, ImGui draw, present.
-    void frame();
+    void frame() override;
     // Blocks until the background loader is idle and its result is installed (headless runs).
     void waitForLoad();
     // The last drawn frame (call after frame(), before the next one).
@@ -71,7 +72,8 @@ class App {
     const Solver& solver() const { return solver_; }
     // The pose whose DRR the user pane shows: the solver's best so far while it runs.
     const Pose& shownUserPose() const;
-    RenderBackend& backend() { return backend_; }
+    RenderBackend& backend() override { return backend_; }
+    std::optional<WidgetRect> widgetRect(const std::string& id) const override { return ui_.rect(id); }
     const render::SceneRenderer& sceneRenderer() const { return *sceneRenderer_; }
 
   private:

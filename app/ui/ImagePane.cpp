@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "ui/ImagePane.h"
 #include "ui/Ui.h"
 #include "ui/UiWidgets.h"
 
@@ -34,15 +35,15 @@ void edgeLetter(ImDrawList* list, ImVec2 at, const std::string& text, ImVec2 ali
 }
 }  // namespace
 
-void Ui::imageWidget(AppState& state, const std::string& id, unsigned texture, const Image* image,
-                     const Mask* dataMask, const ImageEdgeLetters& edges, float side) {
+ImagePaneResult imagePane(const std::string& id, unsigned texture, const Image* image,
+                          const Mask* dataMask, const ImageEdgeLetters& edges, float side,
+                          ImageView& view, DisplaySettings& display, PixelReadout& readout) {
+    ImagePaneResult result;
     const ImVec2 origin = ImGui::GetCursorScreenPos();
     ImGui::InvisibleButton(id.c_str(), ImVec2(side, side),
                            ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
                                ImGuiButtonFlags_MouseButtonMiddle);
-    record(id);
     const ImGuiIO& io = ImGui::GetIO();
-    ImageView& view = state.imageView;
     const auto toUv = [&](ImVec2 screen) {
         return ImVec2(view.centerU + ((screen.x - origin.x) / side - 0.5f) / view.zoom,
                       view.centerV + ((screen.y - origin.y) / side - 0.5f) / view.zoom);
@@ -62,7 +63,7 @@ void Ui::imageWidget(AppState& state, const std::string& id, unsigned texture, c
         } else if (ImGui::IsMouseDragging(ImGuiMouseButton_Left, 0.0f) &&
                    (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f)) {
             // As in 3D Slicer: right widens the window, down raises the level (darker).
-            DisplaySettings& d = state.display;
+            DisplaySettings& d = display;
             d.autoWindow = false;
             const float w = std::max(d.window, 1e-6f);
             d.window = std::max(1e-6f, w * (1.0f + kWindowPerPixel * io.MouseDelta.x));
@@ -86,12 +87,23 @@ void Ui::imageWidget(AppState& state, const std::string& id, unsigned texture, c
         const int row = std::clamp(int(std::floor(uv.y * image->height)), 0, image->height - 1);
         const bool hasData = !dataMask || dataMask->width != image->width ||
                              dataMask->height != image->height || dataMask->at(col, row);
-        state.readout = {true, id, col, row, image->at(col, row), hasData};
-        // Growing a bone: a click on your DRR names the pixel whose ray seeds it.
-        if (id == "image:user" && state.bones.growArmed &&
-            ImGui::IsMouseClicked(ImGuiMouseButton_Left))
-            state.requests.growAtPixel = {col, row, image->width, image->height};
+        readout = {true, id, col, row, image->at(col, row), hasData};
+        result.hovered = true;
+        result.clicked = ImGui::IsMouseClicked(ImGuiMouseButton_Left);
+        result.col = col;
+        result.row = row;
     }
+    return result;
+}
+
+void Ui::imageWidget(AppState& state, const std::string& id, unsigned texture, const Image* image,
+                     const Mask* dataMask, const ImageEdgeLetters& edges, float side) {
+    const ImagePaneResult r = imagePane(id, texture, image, dataMask, edges, side, state.imageView,
+                                        state.display, state.readout);
+    record(id);  // the last item is still the pane's button
+    // Growing a bone: a click on your DRR names the pixel whose ray seeds it.
+    if (id == "image:user" && state.bones.growArmed && r.clicked)
+        state.requests.growAtPixel = {r.col, r.row, image->width, image->height};
 }
 
 void Ui::enlargedCompare(AppState& state, unsigned texture) {

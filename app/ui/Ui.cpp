@@ -197,60 +197,21 @@ void Ui::parameterPane(AppState& state, const Pane& pane) {
     const auto specs = sliderSpecs(state);
     const int target = state.bones.sliderTarget;
     const bool movingBone = target >= 0 && target < int(state.bones.list.size());
-    const float labelWidth = ImGui::CalcTextSize("elevation ").x;
-    const float inputWidth =
-        ImGui::CalcTextSize("-0000.00").x + 2 * ImGui::GetStyle().FramePadding.x;
-    const float unitWidth = ImGui::CalcTextSize("deg").x;
-    const float spacing = ImGui::GetStyle().ItemSpacing.x;
-    const float sliderWidth = std::max(40.0f, ImGui::GetContentRegionAvail().x - labelWidth -
-                                                  inputWidth - unitWidth - 3 * spacing);
+    const ParameterRowWidths widths = parameterRowWidths();
+    const auto recordItem = [this](const std::string& id) { record(id); };
     for (int p = 0; p < kParameterCount; ++p) {
         const ParameterSpec& spec = specs[p];
-        const std::string id = idName(spec.name);
         double& value = sliderValue(state, p);
         const double before = value;
         ImGui::PushID(p);
-        ImGui::AlignTextToFramePadding();
-        // The parameter the arrow keys nudge is highlighted.
-        if (p == state.selectedParameter)
-            ImGui::TextColored(kSelected, "%s", spec.name);
-        else
-            ImGui::TextUnformatted(spec.name);
-        record("label:" + id);
-        if (ImGui::IsItemHovered())
+        const ParameterRowResult row =
+            parameterRow(spec, value, p == state.selectedParameter, widths, recordItem);
+        if (row.labelHovered)
             tooltip("Up/Down select a parameter, Left/Right (or the wheel over its slider) "
                     "nudge it by 1 %s (Shift: 0.1)", spec.unit);
-        ImGui::SameLine(labelWidth + ImGui::GetStyle().WindowPadding.x);
-        // Slider and number field edit the same value, so each follows the other (as in 2011).
-        ImGui::SetNextItemWidth(sliderWidth);
-        // No text on the slider (the grab would cover it; the number field beside shows the
-        // value), and no rounding by ImGui's format: the value is kept to 0.1 mm / deg here.
-        if (ImGui::SliderScalar("##slider", ImGuiDataType_Double, &value, &spec.min, &spec.max,
-                                ""))
-            value = std::round(value * 10.0) / 10.0;
-        if (ImGui::IsItemActive()) {
-            state.interacting = true;
-            state.selectedParameter = p;
-        }
-        // The wheel over a slider nudges it as the arrow keys do (1 mm / 1 deg, Shift 0.1): a
-        // slider pixel spans more than a millimetre of the knee's 300 mm range.
-        const ImGuiIO& io = ImGui::GetIO();
-        if (ImGui::IsItemHovered() && io.MouseWheel != 0.0f) {
-            value = nudgedValue(value, io.MouseWheel > 0.0f ? 1 : -1, io.KeyShift, spec.min,
-                                spec.max);
-            state.selectedParameter = p;
-        }
-        record("slider:" + id);
-        ImGui::SameLine();
-        ImGui::SetNextItemWidth(inputWidth);
-        ImGui::InputDouble("##input", &value, 0.0, 0.0, "%.2f", ImGuiInputTextFlags_AutoSelectAll);
-        record("input:" + id);
-        if (ImGui::IsItemActive()) state.selectedParameter = p;
-        ImGui::SameLine();
-        ImGui::TextUnformatted(spec.unit);
+        if (row.sliderActive) state.interacting = true;
+        if (row.selected) state.selectedParameter = p;
         ImGui::PopID();
-        if (!std::isfinite(value)) value = before;
-        value = std::clamp(value, spec.min, spec.max);
         if (value != before) state.matchIsStale = true;
     }
     if (movingBone) {
@@ -283,6 +244,7 @@ void Ui::parameterPane(AppState& state, const Pane& pane) {
     modeSwitch(state);
 
     ImGui::Separator();
+    const float spacing = ImGui::GetStyle().ItemSpacing.x;
     ImGui::AlignTextToFramePadding();
     ImGui::TextUnformatted("CT");
     ImGui::SameLine();

@@ -77,7 +77,7 @@ void UiScript::wheel(glm::vec2 position, float amount) {
 }
 
 WidgetRect UiScript::widget(const std::string& id) const {
-    auto r = app_.ui().rect(id);
+    auto r = app_.widgetRect(id);
     if (!r) throw Error("the UI did not draw a widget \"" + id + "\"");
     return *r;
 }

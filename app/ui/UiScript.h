@@ -6,13 +6,13 @@
 
 #include <glm/glm.hpp>
 
-#include "ui/App.h"
+#include "ui/ScriptableApp.h"
 
 namespace fm::app {
 
 class UiScript {
   public:
-    explicit UiScript(App& app) : app_(app) {}
+    explicit UiScript(ScriptableApp& app) : app_(app) {}
 
     void idle(int frames = 1);
     void moveTo(glm::vec2 position);  // one frame
@@ -33,7 +33,7 @@ class UiScript {
 
   private:
     void frame();
-    App& app_;
+    ScriptableApp& app_;
     FrameInput input_;
 };
 

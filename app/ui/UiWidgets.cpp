@@ -106,6 +106,61 @@ double nudgedValue(double value, int direction, bool fine, double min, double ma
     return std::clamp(std::round((value + direction * step) * 10.0) / 10.0, min, max);
 }
 
+ParameterRowWidths parameterRowWidths() {
+    ParameterRowWidths w;
+    w.label = ImGui::CalcTextSize("elevation ").x;
+    w.input = ImGui::CalcTextSize("-0000.00").x + 2 * ImGui::GetStyle().FramePadding.x;
+    const float unitWidth = ImGui::CalcTextSize("deg").x;
+    const float spacing = ImGui::GetStyle().ItemSpacing.x;
+    w.slider = std::max(40.0f, ImGui::GetContentRegionAvail().x - w.label - w.input - unitWidth - 3 * spacing);
+    return w;
+}
+
+ParameterRowResult parameterRow(const ParameterSpec& spec, double& value, bool selected,
+                                const ParameterRowWidths& widths,
+                                const std::function<void(const std::string&)>& record) {
+    ParameterRowResult r;
+    const std::string id = idName(spec.name);
+    const double before = value;
+    ImGui::AlignTextToFramePadding();
+    // The parameter the arrow keys nudge is highlighted.
+    if (selected)
+        ImGui::TextColored(kSelected, "%s", spec.name);
+    else
+        ImGui::TextUnformatted(spec.name);
+    record("label:" + id);
+    r.labelHovered = ImGui::IsItemHovered();
+    ImGui::SameLine(widths.label + ImGui::GetStyle().WindowPadding.x);
+    // Slider and number field edit the same value, so each follows the other (as in 2011).
+    ImGui::SetNextItemWidth(widths.slider);
+    // No text on the slider (the grab would cover it; the number field beside shows the
+    // value), and no rounding by ImGui's format: the value is kept to 0.1 mm / deg here.
+    if (ImGui::SliderScalar("##slider", ImGuiDataType_Double, &value, &spec.min, &spec.max, ""))
+        value = std::round(value * 10.0) / 10.0;
+    if (ImGui::IsItemActive()) {
+        r.sliderActive = true;
+        r.selected = true;
+    }
+    // The wheel over a slider nudges it as the arrow keys do (1 mm / 1 deg, Shift 0.1): a
+    // slider pixel spans more than a millimetre of the knee's 300 mm range.
+    const ImGuiIO& io = ImGui::GetIO();
+    if (ImGui::IsItemHovered() && io.MouseWheel != 0.0f) {
+        value = nudgedValue(value, io.MouseWheel > 0.0f ? 1 : -1, io.KeyShift, spec.min, spec.max);
+        r.selected = true;
+    }
+    record("slider:" + id);
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(widths.input);
+    ImGui::InputDouble("##input", &value, 0.0, 0.0, "%.2f", ImGuiInputTextFlags_AutoSelectAll);
+    record("input:" + id);
+    if (ImGui::IsItemActive()) r.selected = true;
+    ImGui::SameLine();
+    ImGui::TextUnformatted(spec.unit);
+    if (!std::isfinite(value)) value = before;
+    value = std::clamp(value, spec.min, spec.max);
+    return r;
+}
+
 std::string idName(const char* name) {
     std::string s(name);
     std::replace(s.begin(), s.end(), ' ', '-');

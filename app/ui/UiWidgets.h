@@ -4,6 +4,7 @@
 #include <imgui.h>
 
 #include <cstdint>
+#include <functional>
 #include <string>
 
 #include "geometry/Pose.h"
@@ -40,6 +41,23 @@ void difficultyCombo(const char* id, Difficulty& difficulty);
 // `value` nudged `direction` (+1 / -1) steps of 1 mm or 1 deg (`fine`: 0.1), on the 0.1 grid
 // (nudges add up exactly as shown) and clamped to [min, max]: the arrow keys and the wheel.
 double nudgedValue(double value, int direction, bool fine, double min, double max);
+// The widths of a parameter row (label, slider, number field), fitted to the window.
+struct ParameterRowWidths {
+    float label = 0, slider = 0, input = 0;
+};
+ParameterRowWidths parameterRowWidths();
+struct ParameterRowResult {
+    bool labelHovered = false;
+    bool sliderActive = false;  // held: the caller previews coarsely
+    bool selected = false;      // clicked, wheeled or edited: the arrow keys' parameter now
+};
+// One parameter row: its name (highlighted when `selected`), a slider without text (kept to
+// 0.1; the wheel over it nudges as the arrow keys do), the number field and the unit, all
+// editing `value` (clamped to the spec, a non-finite entry refused). `record(id)` is called
+// after each item with "label:NAME", "slider:NAME", "input:NAME".
+ParameterRowResult parameterRow(const ParameterSpec& spec, double& value, bool selected,
+                                const ParameterRowWidths& widths,
+                                const std::function<void(const std::string&)>& record);
 // A bullet whose text wraps at the window edge (BulletText does not wrap).
 void bulletWrapped(const char* format, ...) IM_FMTARGS(1);
 // Dimmed text that wraps.

@@ -20,6 +20,24 @@ Mask outlineOf(const Mask& m) {
     return out;
 }
 
+std::pair<float, float> validPercentileRange(const Image& image, const std::optional<Mask>& valid) {
+    std::vector<float> values;
+    for (std::size_t i = 0; i < image.pixels.size(); ++i)
+        if ((!valid || valid->inside[i] != 0) && std::isfinite(image.pixels[i])) values.push_back(image.pixels[i]);
+    float low = 0.0f, high = 1.0f;
+    if (!values.empty()) {
+        const auto at = [&](double q) {
+            const auto k = static_cast<std::size_t>(q * static_cast<double>(values.size() - 1));
+            std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(k), values.end());
+            return values[k];
+        };
+        low = at(0.01);
+        high = at(0.99);
+        if (!(high > low)) high = low + 1.0f;
+    }
+    return {low, high};
+}
+
 std::vector<std::uint8_t> overlayRgb(const Image& image, const std::optional<Mask>& valid,
                                      const std::vector<OverlayOutline>& outlines) {
     const auto sameSize = [&](const Mask& m, const char* what) {
@@ -34,20 +52,7 @@ std::vector<std::uint8_t> overlayRgb(const Image& image, const std::optional<Mas
     auto isValid = [&](std::size_t i) {
         return (!valid || valid->inside[i] != 0) && std::isfinite(image.pixels[i]);
     };
-    std::vector<float> values;
-    for (std::size_t i = 0; i < n; ++i)
-        if (isValid(i)) values.push_back(image.pixels[i]);
-    float low = 0.0f, high = 1.0f;
-    if (!values.empty()) {
-        const auto at = [&](double q) {
-            const auto k = static_cast<std::size_t>(q * static_cast<double>(values.size() - 1));
-            std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(k), values.end());
-            return values[k];
-        };
-        low = at(0.01);
-        high = at(0.99);
-        if (!(high > low)) high = low + 1.0f;
-    }
+    const auto [low, high] = validPercentileRange(image, valid);
     std::vector<std::uint8_t> rgb(3 * n, 0);
     for (std::size_t i = 0; i < n; ++i) {
         if (!isValid(i)) continue;

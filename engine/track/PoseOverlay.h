@@ -5,6 +5,7 @@
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "core/Image.h"
@@ -21,6 +22,10 @@ struct OverlayOutline {
 
 // Pixels of `mask` with a 4-neighbour outside it (pixels on the image border count as such).
 Mask outlineOf(const Mask& mask);
+
+// The 1st and 99th percentile of the valid (and finite) pixels' values: the grey range overlays
+// open with (low < high; 0..1 when no pixel is valid).
+std::pair<float, float> validPercentileRange(const Image& image, const std::optional<Mask>& valid);
 
 // RGB pixels, rows top first: `image` in grey (the valid pixels' 1st..99th percentile mapped
 // to 0..255, invalid pixels black), then each outline in its colour, later ones on top.

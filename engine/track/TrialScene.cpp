@@ -7,9 +7,14 @@
 #include "core/Error.h"
 #include "drr/Drr.h"
 #include "io/ByteSource.h"
+#include "io/HeaderText.h"
 #include "io/TiffReader.h"
 #include "io/TiffVolume.h"
+#include "meshdrr/MeshDrr.h"
+#include "model/MeshModel.h"
 #include "pose/AutoscoperTra.h"
+#include "radiograph/LabelMask.h"
+#include "scene/MeshXrayModel.h"
 #include "radiograph/Radiograph.h"
 #include "scene/XrayModel.h"
 #include "similarity/ImagePyramid.h"
@@ -53,14 +58,36 @@ int scaleFor(const glm::ivec2& image, const glm::ivec2& render) {
     return f;
 }
 
+bool isTiff(const fs::path& file) {
+    const std::string ext = io::toLower(file.extension().string());
+    return ext == ".tif" || ext == ".tiff";
+}
+
+// A folder of frames, a multi-page TIFF, or one image (a one-frame sequence: a single-page TIFF,
+// a PNG or JPEG).
 ImageSequence openSequence(const fs::path& frames) {
     std::error_code ec;
     if (fs::is_directory(frames, ec)) return listImageFolder(frames);
     ImageSequence s;
     s.source = frames;
-    s.multiPage = true;
-    s.pageCount = io::readTiffShape(frames).pages;
+    if (isTiff(frames) && io::readTiffShape(frames).pages > 1) {
+        s.multiPage = true;
+        s.pageCount = io::readTiffShape(frames).pages;
+    } else {
+        s.frames = {frames};
+    }
     return s;
+}
+
+// The size of a sequence's first frame, read from its header where it can be.
+glm::ivec2 firstFrameSize(const ImageSequence& seq) {
+    const fs::path file = seq.multiPage ? seq.source : seq.frames.at(0);
+    if (isTiff(file)) {
+        const io::TiffShape shape = io::readTiffShape(file);
+        return {shape.width, shape.height};
+    }
+    const RadiographFile r = readRadiograph(file);
+    return {r.image.width, r.image.height};
 }
 
 }  // namespace
@@ -72,12 +99,13 @@ TrialScene loadTrialScene(const Trial& trial, const std::vector<std::string>& bo
     const std::string where = "trial " + io::quoted(trial.source);
     for (std::size_t c = 0; c < trial.cameras.size(); ++c) {
         const TrialCamera& tc = trial.cameras[c];
-        CameraReadResult cam = readCameraFile(tc.calibration);
-        for (const std::string& w : cam.warnings) t.trial.warnings.push_back(w);
         ImageSequence seq = openSequence(tc.frames);
-        // The first frame's size must be the calibration's (every frame is checked on reading).
-        const io::TiffShape shape = io::readTiffShape(seq.multiPage ? seq.source : seq.frames[0]);
-        checkImageSize(cam.camera, io::quoted(tc.calibration), shape.width, shape.height,
+        // The first frame's size must be the calibration's (every frame is checked on reading);
+        // a calibration without one (JointTrack) takes it.
+        const glm::ivec2 size = firstFrameSize(seq);
+        CameraReadResult cam = readCameraFile(tc.calibration, size);
+        for (const std::string& w : cam.warnings) t.trial.warnings.push_back(w);
+        checkImageSize(cam.camera, io::quoted(tc.calibration), size.x, size.y,
                        seq.multiPage ? io::quoted(seq.source) : io::quoted(seq.frames[0]));
         if (c == 0) t.imageScale = scaleFor(cam.camera.imageSize, trial.renderResolution);
         t.scene.cameras.push_back(toProjectionGeometry(reducedCamera(cam.camera, t.imageScale)));
@@ -107,6 +135,24 @@ TrialScene loadTrialScene(const Trial& trial, const std::vector<std::string>& bo
         for (const TrialBone& b : trial.bones) names.push_back(b.name);
     for (const std::string& name : names) {
         const TrialBone& b = trial.bone(name);
+        if (!b.masks.empty()) {
+            ImageSequence masks = openSequence(b.masks);
+            if (masks.frameCount() != t.frameCount)
+                throw Error(where + ": bone " + name + " has " + std::to_string(masks.frameCount()) +
+                            " masks in " + io::quoted(b.masks) + " but the cameras have " +
+                            std::to_string(t.frameCount) + " frames");
+            t.masks[name] = std::move(masks);
+        }
+        if (b.meshOnly()) {
+            // The mesh is the model: closed (a line integral needs it), in its own frame.
+            const MeshModel model = loadMeshModel(b.mesh);
+            const double mu = b.muPerMm > 0.0 ? b.muPerMm : kMuCobaltChromePerMm;
+            auto xray = std::make_shared<MeshXrayModel>(prepareMeshDrr(model), mu, name);
+            t.meshes[name] = std::make_shared<const Mesh>(model.mesh);
+            t.autoscoperFromVolume[name] = RigidTransform::identity();
+            t.scene.objects.push_back({name, xray, RigidTransform::identity(), true});
+            continue;
+        }
         Volume v = io::readTiffVolume(b.volume, b.voxelSize);
         flipVolume(v, b.flip);
         t.autoscoperFromVolume[name] = autoscoperVolumeFromWorld(v);
@@ -151,6 +197,18 @@ FrameViews trialFrameViews(const TrialScene& trial, const RadiographPreparation&
         }
         return views;
     };
+}
+
+Mask trialBoneMask(const TrialScene& t, const std::string& bone, int frame) {
+    const auto it = t.masks.find(bone);
+    if (it == t.masks.end())
+        throw Error("trial " + io::quoted(t.trial.source) + ": bone " + bone + " has no masks");
+    const ImageSequence& seq = it->second;
+    if (frame < 0 || frame >= seq.frameCount())
+        throw Error("trial " + io::quoted(t.trial.source) + ": bone " + bone + " has no mask for frame " +
+                    std::to_string(frame));
+    if (seq.multiPage) throw Error(io::quoted(seq.source) + ": masks must be one file per frame");
+    return readLabelMask(seq.frames[static_cast<std::size_t>(frame)], t.cameras.at(0).imageSize);
 }
 
 RigidTransform objectPoseFromTra(const TrialScene& t, const std::string& bone, const RigidTransform& tra) {

@@ -1,17 +1,22 @@
 #pragma once
 // A trial made ready to render and track: the cameras (calibration world), one scene object
 // per bone (its TIFF stack flipped as VolumeFlip says, prepared for exact DRRs of its raw
-// values), the image sequences, and the frame conversion each bone's .tra poses need.
+// values; or, for a mesh-only bone, its closed mesh: exact chords times its attenuation), the
+// image sequences, and the frame conversion each bone's .tra poses need. A camera's
+// calibration may hold no image size (JointTrack JT_INTCALIB): its first frame's size is used.
 //
 // Frames: world = the calibration's world. A bone object's own frame is our volume frame (voxel
 // centre (i, j, k) at (sx i, sy j, sz k) mm, identity direction); autoscoperFromVolume maps it
 // to Autoscoper's corner frame, so a .tra pose P (worldFromAutoscoperVolume) is the object pose
-// P * autoscoperFromVolume, and back.
+// P * autoscoperFromVolume, and back. A mesh-only bone's frame is its vertices': there
+// autoscoperFromVolume is the identity (its .tra and .jts poses are worldFromModel).
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "camera/PinholeCamera.h"
+#include "mesh/Mesh.h"
 #include "radiograph/RadiographPreparation.h"
 #include "scene/Scene.h"
 #include "track/Tracker.h"
@@ -31,6 +36,10 @@ struct TrialScene {
     // RenderResolution trades, resolution for time.
     int imageScale = 1;
     std::map<std::string, RigidTransform> autoscoperFromVolume;  // per loaded bone
+    // Mesh-only bones: the model's triangles (welded, its own frame), for display.
+    std::map<std::string, std::shared_ptr<const Mesh>> meshes;
+    // Bones with label masks (TrialBone::masks): one file per frame, camera 1's size.
+    std::map<std::string, ImageSequence> masks;
 };
 
 // Loads the cameras, sequences and the named bones (all when `bones` is empty). Throws fm::Error
@@ -45,6 +54,10 @@ TrialScene loadTrialScene(const Trial& trial, const std::vector<std::string>& bo
 RadiographPreparation defaultTrialPreparation();
 FrameViews trialFrameViews(const TrialScene& trial, const RadiographPreparation& preparation,
                            const std::vector<std::size_t>& cameras = {});
+
+// The label mask of `bone` at `frame` (pixels above half the full scale), checked against camera
+// 1's image size. Throws fm::Error naming the file, or the bone when it has no masks.
+Mask trialBoneMask(const TrialScene& trial, const std::string& bone, int frame);
 
 // .tra poses (worldFromAutoscoperVolume) <-> object poses (worldFromVolume, ours).
 RigidTransform objectPoseFromTra(const TrialScene& t, const std::string& bone, const RigidTransform& tra);

@@ -105,11 +105,24 @@ Trial readTrialJson(const fs::path& path) {
         b.name = r.text(r.member(bones[i], "name", f), f + ".name");
         for (const TrialBone& other : t.bones)
             if (other.name == b.name) r.fail(f + ".name", "repeats the bone name \"" + b.name + "\"");
-        b.volume = resolve(base, r.text(r.member(bones[i], "volume", f), f + ".volume"));
-        const auto s = r.numbers(r.member(bones[i], "voxel_size", f), 3, f + ".voxel_size");
-        for (double x : s)
-            if (!(x > 0.0) || x > 1000.0) r.fail(f + ".voxel_size", "must be positive mm (at most 1000)");
-        b.voxelSize = {s[0], s[1], s[2]};
+        // A bone is a volume (with its voxel size), or a mesh alone (an implant, a surface).
+        if (bones[i].contains("volume") || !bones[i].contains("mesh")) {
+            b.volume = resolve(base, r.text(r.member(bones[i], "volume", f), f + ".volume"));
+            const auto s = r.numbers(r.member(bones[i], "voxel_size", f), 3, f + ".voxel_size");
+            for (double x : s)
+                if (!(x > 0.0) || x > 1000.0) r.fail(f + ".voxel_size", "must be positive mm (at most 1000)");
+            b.voxelSize = {s[0], s[1], s[2]};
+        } else if (bones[i].contains("voxel_size")) {
+            r.fail(f + ".voxel_size", "belongs to a volume: this bone is a mesh only");
+        }
+        if (bones[i].contains("mu")) {
+            if (!b.meshOnly()) r.fail(f + ".mu", "applies to a mesh-only bone (a volume has its own values)");
+            const Json& mu = bones[i]["mu"];
+            if (!mu.is_number() || !(mu.get<double>() > 0.0) || mu.get<double>() > 1000.0)
+                r.fail(f + ".mu", "must be a positive attenuation in 1/mm (at most 1000)");
+            b.muPerMm = mu.get<double>();
+        }
+        if (bones[i].contains("masks")) b.masks = resolve(base, r.text(bones[i]["masks"], f + ".masks"));
         if (bones[i].contains("flip")) {
             const auto fl = r.numbers(bones[i]["flip"], 3, f + ".flip");
             for (double x : fl)
@@ -219,11 +232,15 @@ void writeTrialJson(const fs::path& path, const Trial& trial) {
     for (const TrialCamera& c : trial.cameras)
         root["cameras"].push_back({{"name", c.name}, {"calibration", rel(c.calibration)}, {"frames", rel(c.frames)}});
     for (const TrialBone& b : trial.bones) {
-        Json j{{"name", b.name},
-               {"volume", rel(b.volume)},
-               {"voxel_size", {b.voxelSize.x, b.voxelSize.y, b.voxelSize.z}},
-               {"flip", {b.flip.x, b.flip.y, b.flip.z}}};
+        Json j{{"name", b.name}};
+        if (!b.meshOnly()) {
+            j["volume"] = rel(b.volume);
+            j["voxel_size"] = {b.voxelSize.x, b.voxelSize.y, b.voxelSize.z};
+            j["flip"] = {b.flip.x, b.flip.y, b.flip.z};
+        }
         if (!b.mesh.empty()) j["mesh"] = rel(b.mesh);
+        if (b.muPerMm > 0.0) j["mu"] = b.muPerMm;
+        if (!b.masks.empty()) j["masks"] = rel(b.masks);
         root["bones"].push_back(j);
     }
     root["render_resolution"] = {trial.renderResolution.x, trial.renderResolution.y};
@@ -247,10 +264,12 @@ void checkTrialFiles(const Trial& trial) {
             throw Error(t + ": camera " + c.name + " frames " + io::quoted(c.frames) + " do not exist");
     }
     for (const TrialBone& b : trial.bones) {
-        if (!fs::is_regular_file(b.volume, ec))
+        if (!b.meshOnly() && !fs::is_regular_file(b.volume, ec))
             throw Error(t + ": bone " + b.name + " volume " + io::quoted(b.volume) + " does not exist");
         if (!b.mesh.empty() && !fs::is_regular_file(b.mesh, ec))
             throw Error(t + ": bone " + b.name + " mesh " + io::quoted(b.mesh) + " does not exist");
+        if (!b.masks.empty() && !fs::exists(b.masks, ec))
+            throw Error(t + ": bone " + b.name + " masks " + io::quoted(b.masks) + " do not exist");
     }
 }
 

@@ -5,9 +5,12 @@
 // either are relative to the file's folder and come back absolute.
 //
 // Pose frame: every pose in a trial is worldFromVolume, world = the calibration's world (the
-// MayaCam cameras' frame), and `volumeFrame` says which volume frame: Autoscoper's corner frame
-// (voxel (i, j, k) at (sx i, sy (H - j), -sz k) mm, what .tra files hold) or ours (voxel centre
-// (i, j, k) at (sx i, sy j, sz k) mm, identity direction: how we load a TIFF stack).
+// MayaCam cameras' frame; for a JointTrack calibration the JointTrack camera frame), and
+// `volumeFrame` says which volume frame: Autoscoper's corner frame (voxel (i, j, k) at
+// (sx i, sy (H - j), -sz k) mm, what .tra files hold) or ours (voxel centre (i, j, k) at
+// (sx i, sy j, sz k) mm, identity direction: how we load a TIFF stack). A mesh-only bone has
+// one frame, its vertices' (the model file's): both names mean it, so a .jts row is its
+// worldFromVolume as it stands.
 #include <filesystem>
 #include <map>
 #include <string>
@@ -27,10 +30,16 @@ struct TrialCamera {
 
 struct TrialBone {
     std::string name;              // "radius"
-    std::filesystem::path volume;  // TIFF stack (or any volume file)
+    std::filesystem::path volume;  // TIFF stack (or any volume file); empty: a mesh-only bone
     glm::dvec3 voxelSize{1.0};     // mm
     glm::ivec3 flip{0};            // Autoscoper VolumeFlip
-    std::filesystem::path mesh;    // optional
+    std::filesystem::path mesh;    // with a volume: for display; without: the bone's model
+    double muPerMm = 0.0;          // mesh-only: attenuation (0 = cobalt-chromium, an implant)
+    // Optional label masks of the bone's silhouette, one per frame: a folder of images sorted by
+    // name (as frames are), for the silhouette IoU of a pose. Camera 1's images.
+    std::filesystem::path masks;
+
+    bool meshOnly() const { return volume.empty(); }
 };
 
 enum class VolumeFrame { Autoscoper, Fluoromatch };

@@ -1,0 +1,276 @@
+#include "workspace/WorkspaceApp.h"
+
+#include <imgui.h>
+#include <imgui_impl_opengl3.h>
+
+#include <chrono>
+#include <cstdio>
+#include <thread>
+
+#include "core/Error.h"
+#include "platform/Gl.h"
+#include "render/SceneRenderer.h"
+#include "render/Texture.h"
+#include "scene/ObjectPoseParameterization.h"
+#include "workspace/WorkspacePose.h"
+#include "xray/CameraPoseDifference.h"
+#include "xray/ObjectRegistration.h"
+
+namespace fm::app {
+
+WorkspaceApp::WorkspaceApp(RenderBackend& backend, std::shared_ptr<WorkspaceModel> model, WorkspaceOptions options)
+    : backend_(backend), model_(std::move(model)), options_(options) {
+    if (!model_) throw Error("the workspace needs a scene");
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGui::StyleColorsDark();
+    ImGui::GetIO().IniFilename = nullptr;  // fixed layout: nothing to remember between runs
+    backend_.initImGui();
+    ImGui_ImplOpenGL3_Init("#version 330 core");
+    sceneRenderer_ = std::make_unique<render::SceneRenderer>();
+
+    const TrialScene& t = model_->trial();
+    state_.title = model_->title();
+    state_.source = t.trial.source.string();
+    state_.showTimings = options_.showTimings;
+    for (const TrialCamera& c : t.trial.cameras) state_.cameraNames.push_back(c.name);
+    for (int k = 0; k < model_->objectCount(); ++k) {
+        const SceneObject& o = model_->scene().objects[static_cast<std::size_t>(k)];
+        WorkspaceObject w;
+        w.name = o.name;
+        w.kind = o.model->describe();
+        w.color = objectColour(static_cast<std::size_t>(k));
+        w.hasMasks = t.masks.count(o.name) > 0;
+        state_.objects.push_back(w);
+    }
+    state_.frameCount = model_->frameCount();
+    for (const ImageSequence& seq : t.sequences) {
+        state_.frameNames.emplace_back();
+        for (int f = 0; f < state_.frameCount; ++f) state_.frameNames.back().push_back(seq.frameName(f));
+    }
+    state_.poses = model_->initialPoses();
+    state_.poseFrame = model_->cameraCount() > 1 ? PoseFrame::World : PoseFrame::Camera;
+    state_.display.assign(static_cast<std::size_t>(model_->cameraCount()), DisplaySettings{});
+    state_.savePath = model_->defaultSavePath().string();
+    state_.warnings = t.trial.warnings;
+    for (int c = 0; c < model_->cameraCount(); ++c) {
+        radiographTextures_.push_back(std::make_unique<render::Texture>());
+        modelTextures_.push_back(std::make_unique<render::Texture>());
+    }
+    syncControls();
+}
+
+WorkspaceApp::~WorkspaceApp() {
+    solver_.stop();
+    sceneRenderer_.reset();
+    radiographTextures_.clear();
+    modelTextures_.clear();
+    ImGui_ImplOpenGL3_Shutdown();
+    backend_.shutdownImGui();
+    ImGui::DestroyContext();
+}
+
+const std::optional<RigidTransform>& WorkspaceApp::pose(int object) const {
+    return state_.poses.at(static_cast<std::size_t>(state_.frame)).at(static_cast<std::size_t>(object));
+}
+
+void WorkspaceApp::goToFrame(int frame) {
+    if (frame == state_.frame || frame < 0 || frame >= state_.frameCount) return;
+    try {
+        model_->prepared(frame);  // a frame that cannot be read leaves the workspace where it is
+    } catch (const Error& e) {
+        state_.error = e.what();
+        return;
+    }
+    // Objects without a pose there start from where they are now.
+    auto& to = state_.poses[static_cast<std::size_t>(frame)];
+    const auto& from = state_.poses[static_cast<std::size_t>(state_.frame)];
+    for (std::size_t k = 0; k < to.size(); ++k)
+        if (!to[k]) to[k] = from[k];
+    state_.frame = frame;
+    state_.error.clear();
+}
+
+void WorkspaceApp::applyControls() {
+    PoseControls& c = state_.controls;
+    if (c.object < 0 || c.values == c.shown) return;
+    if (c.frameIndex != state_.frame || c.object != state_.selected) return;  // rebased below
+    state_.poses[static_cast<std::size_t>(state_.frame)][static_cast<std::size_t>(c.object)] =
+        poseFromControls(c, model_->scene());
+    c.shown = c.values;
+}
+
+void WorkspaceApp::syncControls() {
+    const PoseControls& c = state_.controls;
+    const int object = state_.selected;
+    if (object < 0 || object >= model_->objectCount()) return;
+    const auto& pose = state_.poses[static_cast<std::size_t>(state_.frame)][static_cast<std::size_t>(object)];
+    if (!pose) return;
+    const bool same = c.object == object && c.frameIndex == state_.frame && c.frame == state_.poseFrame &&
+                      c.camera == state_.poseCamera;
+    if (same) return;
+    const int keep = c.selected;
+    rebaseControls(state_.controls, model_->scene(), object, state_.frame, state_.poseFrame, state_.poseCamera,
+                   *pose);
+    state_.controls.selected = keep;
+}
+
+void WorkspaceApp::processRequests() {
+    WorkspaceRequests r = state_.requests;
+    state_.requests = {};
+    if (r.frame) goToFrame(*r.frame);
+    if (r.resetView) state_.view = View3d::framed();
+    if (r.stopSolve) solver_.stop();
+    if (r.solve) {
+        const auto& start = pose(state_.selected);
+        if (start) solver_.start(model_, state_.selected, state_.frame, *start);
+        solveVersion_ = 0;
+    }
+    if (r.save) save();
+}
+
+void WorkspaceApp::pollSolver() {
+    const WorkspaceSolveSnapshot s = solver_.snapshot();
+    if (s.version == 0) return;
+    WorkspaceSolve& w = state_.solve;
+    w.running = s.running;
+    w.stage = s.stage;
+    w.evaluations = s.evaluations;
+    w.budget = s.budget;
+    w.seconds = s.seconds;
+    w.object = s.object;
+    w.frame = s.frame;
+    if (!s.finished || s.version == solveVersion_) return;
+    solveVersion_ = s.version;
+    w.finished = true;
+    w.stopped = s.stopped;
+    w.error = s.error;
+    w.start = s.start;
+    w.result = s.result;
+    w.similarity = s.similarity;
+    w.viewCosts = s.viewCosts;
+    w.iou.reset();
+    w.startIou.reset();
+    if (!s.result) return;
+    // The answer goes onto the sliders: it is the object's pose in that frame now.
+    state_.poses.at(static_cast<std::size_t>(s.frame)).at(static_cast<std::size_t>(s.object)) = *s.result;
+    state_.controls.object = -1;  // rebased on it
+    const SceneObject& o = model_->scene().objects.at(static_cast<std::size_t>(s.object));
+    const CameraPoseDifference d =
+        cameraPoseDifference(model_->scene().cameras[0], s.start, *s.result, defaultPivot(*o.model));
+    w.inPlaneMm = d.inPlaneMm;
+    w.depthMm = d.depthMm;
+    w.rotationDeg = d.rotationDeg;
+    if (const Mask* m = model_->mask(s.object, s.frame)) {
+        const auto silhouetteAt = [&](const RigidTransform& p) {
+            return footprintMask(model_->objectImage(s.object, 0, p, true), 0.0f);
+        };
+        w.iou = silhouetteIoU(silhouetteAt(*s.result), *m);
+        w.startIou = silhouetteIoU(silhouetteAt(s.start), *m);
+    }
+    char line[256];
+    std::snprintf(line, sizeof line, "%s %s in frame %d: similarity %.5f (%s)", s.stopped ? "Stopped:" : "Solved:",
+                  o.name.c_str(), s.frame, s.similarity, s.note.c_str());
+    w.summary = line;
+    std::printf("solve       %s\n", line);
+    std::printf("            moved in-plane %.3f mm, depth %.3f mm, rotation %.3f deg (camera 1)\n", d.inPlaneMm,
+                d.depthMm, d.rotationDeg);
+    if (w.iou) std::printf("            IoU %.4f against the mask (start %.4f)\n", *w.iou, *w.startIou);
+}
+
+void WorkspaceApp::waitForSolve() {
+    while (solver_.running()) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    frame();
+}
+
+void WorkspaceApp::save() {
+    try {
+        const auto files = model_->save(state_.savePath, state_.poses);
+        std::string text = "Saved";
+        for (const auto& f : files) text += " " + f.string();
+        state_.saveMessage = files.empty() ? "Nothing to save: no object has a pose" : text;
+        state_.saveFailed = false;
+    } catch (const std::exception& e) {
+        state_.saveMessage = std::string("Not saved (nothing was written): ") + e.what();
+        state_.saveFailed = true;
+    }
+}
+
+void WorkspaceApp::updateImages() {
+    if (autoWindowFrame_ != state_.frame || std::any_of(state_.display.begin(), state_.display.end(),
+                                                        [](const DisplaySettings& d) { return d.autoWindow; })) {
+        const auto& views = model_->prepared(state_.frame);
+        for (std::size_t c = 0; c < views.size(); ++c) {
+            DisplaySettings& d = state_.display[c];
+            if (!d.autoWindow) continue;
+            const render::WindowLevel wl = autoWindowLevel(views[c]);
+            d.window = wl.window;
+            d.level = wl.level;
+        }
+        autoWindowFrame_ = state_.frame;
+    }
+    const auto start = std::chrono::steady_clock::now();
+    if (images_.update(*model_, state_)) {
+        for (std::size_t c = 0; c < images_.panes().size(); ++c) {
+            const PaneImages& p = images_.panes()[c];
+            radiographTextures_[c]->upload(p.width, p.height, p.radiograph);
+            if (!p.model.empty()) modelTextures_[c]->upload(p.width, p.height, p.model);
+        }
+        state_.imageMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+        state_.iou.reset();
+        const int k = state_.selected;
+        if (const Mask* m = model_->mask(k, state_.frame); m && pose(k)) {
+            const Mask& s = images_.silhouette(0, k);
+            if (s.width == m->width && s.height == m->height) state_.iou = silhouetteIoU(s, *m);
+        }
+    }
+}
+
+void WorkspaceApp::drawScene() {}
+
+void WorkspaceApp::frame() {
+    backend_.newFrame();
+    pollSolver();
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui::NewFrame();
+    state_.interacting = false;
+    WorkspaceTextures textures;
+    const auto& views = model_->prepared(state_.frame);
+    for (int c = 0; c < model_->cameraCount(); ++c) {
+        textures.radiograph.push_back(radiographTextures_[c]->empty() ? 0 : radiographTextures_[c]->id());
+        textures.model.push_back(modelTextures_[c]->empty() ? 0 : modelTextures_[c]->id());
+        textures.images.push_back(&views[static_cast<std::size_t>(c)].reference);
+    }
+    textures.scene3d = sceneRenderer_->texture();
+    ui_.draw(state_, textures);
+
+    applyControls();
+    processRequests();
+    syncControls();
+    try {
+        updateImages();
+    } catch (const Error& e) {  // an object that cannot be rendered: say so, keep the rest
+        state_.error = e.what();
+    }
+    drawScene();
+    ImGui::Render();
+    const glm::ivec2 fb = backend_.framebufferSize();
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, fb.x, fb.y);
+    glClearColor(0.06f, 0.06f, 0.07f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    backend_.present();
+    backend_.setIdle(!state_.interacting && !state_.solve.running && !ImGui::IsMouseDown(ImGuiMouseButton_Left));
+    ++state_.frameCounter;
+}
+
+render::RgbaImage WorkspaceApp::capture() const {
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    const glm::ivec2 fb = backend_.framebufferSize();
+    return render::readFramebuffer(fb.x, fb.y);
+}
+
+}  // namespace fm::app

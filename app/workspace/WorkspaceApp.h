@@ -1,0 +1,75 @@
+#pragma once
+// The real X-ray workspace's frame loop (the window and the headless screenshot share it, as the
+// game's App does): the UI pass, then the requests (frame, Solve, Save), the pose controls
+// written into the current frame's pose, the pane images brought up to date, the 3D view drawn.
+#include <memory>
+#include <vector>
+
+#include "platform/RenderBackend.h"
+#include "render/Screenshot.h"
+#include "ui/ScriptableApp.h"
+#include "workspace/WorkspaceImages.h"
+#include "workspace/WorkspaceModel.h"
+#include "workspace/WorkspaceSolver.h"
+#include "workspace/WorkspaceState.h"
+#include "workspace/WorkspaceUi.h"
+
+namespace fm::render {
+class Texture;
+class SceneRenderer;
+}  // namespace fm::render
+
+namespace fm::app {
+
+struct WorkspaceOptions {
+    bool showTimings = true;  // golden images turn them off (they vary)
+};
+
+class WorkspaceApp : public ScriptableApp {
+  public:
+    WorkspaceApp(RenderBackend& backend, std::shared_ptr<WorkspaceModel> model, WorkspaceOptions options = {});
+    ~WorkspaceApp() override;
+    WorkspaceApp(const WorkspaceApp&) = delete;
+    WorkspaceApp& operator=(const WorkspaceApp&) = delete;
+
+    void frame() override;
+    RenderBackend& backend() override { return backend_; }
+    std::optional<WidgetRect> widgetRect(const std::string& id) const override { return ui_.rect(id); }
+    render::RgbaImage capture() const;
+
+    WorkspaceState& state() { return state_; }
+    const WorkspaceState& state() const { return state_; }
+    const WorkspaceModel& model() const { return *model_; }
+    const WorkspaceImages& images() const { return images_; }
+    const WorkspaceUi& ui() const { return ui_; }
+    const WorkspaceSolver& solver() const { return solver_; }
+    // The pose of `object` in the current frame (the controls' result).
+    const std::optional<RigidTransform>& pose(int object) const;
+    // Draws frames until a running Solve has ended and its result is shown (tests, headless).
+    void waitForSolve();
+
+  private:
+    void goToFrame(int frame);
+    void applyControls();
+    void syncControls();
+    void processRequests();
+    void pollSolver();
+    void save();
+    void updateImages();
+    void drawScene();
+
+    RenderBackend& backend_;
+    std::shared_ptr<WorkspaceModel> model_;
+    WorkspaceOptions options_;
+    WorkspaceState state_;
+    WorkspaceUi ui_;
+    WorkspaceImages images_;
+    std::vector<std::unique_ptr<render::Texture>> radiographTextures_, modelTextures_;
+    std::unique_ptr<render::SceneRenderer> sceneRenderer_;
+    int autoWindowFrame_ = -1;
+    std::uint64_t solveVersion_ = 0;
+    // Last: joined first (its worker holds the model).
+    WorkspaceSolver solver_;
+};
+
+}  // namespace fm::app

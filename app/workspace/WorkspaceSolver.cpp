@@ -1,0 +1,120 @@
+#include "workspace/WorkspaceSolver.h"
+
+#include <chrono>
+#include <cmath>
+
+#include "core/Error.h"
+#include "scene/MeshXrayModel.h"
+#include "track/Tracker.h"
+#include "xray/ObjectRegistration.h"
+
+namespace fm::app {
+
+WorkspaceSolver::~WorkspaceSolver() { stop(); }
+
+void WorkspaceSolver::join() {
+    if (worker_.joinable()) worker_.join();
+}
+
+void WorkspaceSolver::stop() {
+    stop_ = true;
+    join();
+    stop_ = false;
+}
+
+bool WorkspaceSolver::running() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return snapshot_.running;
+}
+
+WorkspaceSolveSnapshot WorkspaceSolver::snapshot() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return snapshot_;
+}
+
+void WorkspaceSolver::start(std::shared_ptr<const WorkspaceModel> model, int object, int frame,
+                            const RigidTransform& start) {
+    stop();
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        const std::uint64_t version = snapshot_.version + 1;
+        snapshot_ = WorkspaceSolveSnapshot{};
+        snapshot_.running = true;
+        snapshot_.object = object;
+        snapshot_.frame = frame;
+        snapshot_.start = start;
+        snapshot_.stage = "starting";
+        snapshot_.version = version;
+    }
+    worker_ = std::thread([this, model, object, frame, start] {
+        const auto begin = std::chrono::steady_clock::now();
+        auto publish = [&](auto&& edit) {
+            std::lock_guard<std::mutex> lock(mutex_);
+            edit(snapshot_);
+            snapshot_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+            ++snapshot_.version;
+        };
+        try {
+            // The object alone, as `register` has it: the others are not its evidence.
+            Scene scene;
+            scene.cameras = model->scene().cameras;
+            scene.objects.push_back(model->scene().objects.at(static_cast<std::size_t>(object)));
+            scene.objects[0].worldFromObject = start;
+            if (model->cameraCount() == 1) {
+                const bool mesh = dynamic_cast<const MeshXrayModel*>(scene.objects[0].model.get()) != nullptr;
+                RegistrationSettings settings =
+                    realXraySettings(mesh ? SimilarityMeasure::EdgeDistance : SimilarityMeasure::GradientNcc);
+                settings.threads = model->threads();
+                const RegistrationView view = model->prepared(frame).at(0);
+                const ObjectRegistrationResult r = registerObject(
+                    scene, 0, view, start, settings,
+                    [&](const RegistrationProgress& p) {
+                        publish([&](WorkspaceSolveSnapshot& s) {
+                            s.stage = std::string(p.stage) + ", level " + std::to_string(p.level + 1) + " of " +
+                                      std::to_string(p.levelCount);
+                            s.evaluations = p.evaluations;
+                            s.budget = p.evaluationBudget;
+                        });
+                    },
+                    &stop_);
+                publish([&](WorkspaceSolveSnapshot& s) {
+                    s.result = r.worldFromObject;
+                    s.similarity = r.similarity;
+                    s.evaluations = r.evaluations;
+                    s.stopped = r.stopped;
+                    s.note = std::string("single view, ") + toString(settings.similarity);
+                });
+            } else {
+                publish([&](WorkspaceSolveSnapshot& s) { s.stage = "biplane registration (register --trial)"; });
+                TrackSettings settings;
+                settings.registration.seed = 1;
+                settings.registration.threads = model->threads();
+                const std::string name = scene.objects[0].name;
+                const Tracker tracker(scene, name, [model](int f) { return model->prepared(f); }, settings);
+                const FrameRecord r = tracker.trackFrame(frame, start, &stop_);
+                if (r.status != FrameRecord::Status::Tracked && !(r.status == FrameRecord::Status::Stopped))
+                    throw Error("frame " + std::to_string(frame) + ": " + toString(r.status) + ": " + r.note);
+                publish([&](WorkspaceSolveSnapshot& s) {
+                    s.result = r.worldFromBone;
+                    s.stopped = r.status == FrameRecord::Status::Stopped;
+                    s.viewCosts = r.viewCost;
+                    double sum = 0.0;
+                    for (double c : r.viewCost)
+                        if (!std::isnan(c)) sum += c;
+                    s.similarity = -sum;
+                    s.evaluations = r.evaluations;
+                    s.note = r.note;
+                });
+            }
+        } catch (const std::exception& e) {
+            publish([&](WorkspaceSolveSnapshot& s) { s.error = e.what(); });
+        }
+        publish([&](WorkspaceSolveSnapshot& s) {
+            s.running = false;
+            s.finished = true;
+            s.stage = "done";
+        });
+    });
+}
+
+}  // namespace fm::app

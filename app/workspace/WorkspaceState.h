@@ -1,0 +1,110 @@
+#pragma once
+// The real-X-ray workspace of the app (docs/app.md, "Real radiographs"), as plain data: the
+// objects, the current frame, every frame's pose of every object, the six pose controls, what
+// the panes show, and the requests the UI makes. The UI panes read and edit it; WorkspaceApp
+// carries out the requests; WorkspaceModel computes every image. Nothing here draws.
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "scene/RigidTransform.h"
+#include "state/AppState.h"
+
+namespace fm::app {
+
+// Which frame the six pose controls move the selected object in.
+enum class PoseFrame {
+    Camera,  // a camera's frame: x, y along the film, depth along the view, rotations about
+             // the film axes and the view (ObjectPoseParameterization), the default for one camera
+    World,   // the calibration's world: x, y, z and rotations about its axes, the default for
+             // several cameras (biplane)
+};
+
+// What is drawn over (or beside) each radiograph.
+enum class ModelImage { Outline, Drr };
+
+struct WorkspaceObject {
+    std::string name;
+    std::string kind;  // "mesh, 12412 triangles", "volume 120 x 80 x 200"
+    bool visible = true;
+    std::array<float, 3> color{};
+    bool hasMasks = false;  // label masks: the silhouette IoU is shown
+};
+
+// The six controls of the selected object: values in the frame `frame` (camera `camera`),
+// relative to the object's pose `reference` at which the three angles are 0. Rebased (reference
+// = the current pose, angles 0, ranges centred) whenever the object, the frame index, the pose
+// frame or camera changes, or the pose is replaced (Solve's answer, a load).
+struct PoseControls {
+    int object = -1, frameIndex = -1, camera = 0;
+    PoseFrame frame = PoseFrame::Camera;
+    RigidTransform reference;
+    std::array<double, 6> values{};
+    std::array<double, 6> shown{};  // what the pose was made from (edits are told by a change)
+    std::array<ParameterSpec, 6> specs{};
+    int selected = 0;  // the control the arrow keys nudge
+};
+
+// The Solve of the selected object in the current frame, copied from the worker each frame.
+struct WorkspaceSolve {
+    bool running = false, finished = false, stopped = false;
+    std::string error;
+    int object = -1, frame = -1;
+    std::string stage;
+    int evaluations = 0, budget = 0;
+    double seconds = 0.0;
+    std::optional<RigidTransform> start, result;
+    double similarity = 0.0;  // single camera: -cost at the finest level; biplane: summed
+    std::vector<double> viewCosts;
+    // Against the start, in camera 1's frame (the pivot's in-plane and depth parts).
+    double inPlaneMm = 0.0, depthMm = 0.0, rotationDeg = 0.0;
+    std::optional<double> iou, startIou;  // against the object's mask, when there is one
+    std::string summary;                  // one line: how it ended
+};
+
+struct WorkspaceRequests {
+    bool solve = false, stopSolve = false;
+    bool save = false;
+    std::optional<int> frame;  // go to this frame
+    bool resetView = false;
+};
+
+struct WorkspaceState {
+    std::string title;   // "trial jtml-knee" or the radiograph's file name
+    std::string source;  // the trial file, or the reference image
+    std::vector<std::string> cameraNames;
+    std::vector<WorkspaceObject> objects;
+    int selected = 0;
+    bool allObjects = true;  // draw every shown object's image, or the selected one's only
+    int frame = 0, frameCount = 1;
+    std::vector<std::vector<std::string>> frameNames;  // [camera][frame]: the file (or page)
+    // poses[frame][object]: worldFromObject (the object's own frame to the world); nullopt:
+    // none yet (a frame is given the pose of the frame it is reached from).
+    std::vector<std::vector<std::optional<RigidTransform>>> poses;
+    PoseFrame poseFrame = PoseFrame::Camera;
+    int poseCamera = 0;
+    PoseControls controls;
+
+    ModelImage modelImage = ModelImage::Outline;
+    bool sideBySide = false;  // radiograph and model image side by side, not over each other
+    std::vector<DisplaySettings> display;  // per camera: window/level of the radiograph
+    ImageView imageView;                   // shared zoom and pan of the camera panes
+    PixelReadout readout;
+    View3d view = View3d::framed();
+
+    WorkspaceSolve solve;
+    std::string savePath;  // .tra (trial) or .jts (one model) / .tra (several) for one image
+    std::string saveMessage;
+    bool saveFailed = false;
+    std::string error;    // the last failure (kept until the next success)
+    std::vector<std::string> warnings;
+    std::optional<double> iou;  // the selected object's silhouette IoU against its mask, now
+    bool showTimings = true;
+    double imageMs = 0.0;  // the last pane images
+    bool interacting = false;
+    std::uint64_t frameCounter = 0;
+    WorkspaceRequests requests;
+};
+
+}  // namespace fm::app

@@ -1,0 +1,56 @@
+#pragma once
+// The ImGui panes of the real X-ray workspace, reading and editing WorkspaceState (no engine
+// calls: buttons set its requests). Layout (fixed for a display size):
+//   top row:    one pane per camera (the prepared radiograph with the model over or beside it)
+//               | the 3D view
+//   bottom row: Objects and frames | Pose (six controls) | Solve and Save
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "core/Image.h"
+#include "ui/Layout.h"
+#include "ui/Ui.h"
+#include "workspace/WorkspaceState.h"
+
+namespace fm::app {
+
+struct WorkspaceTextures {
+    std::vector<unsigned> radiograph, model;  // per camera (0: none)
+    std::vector<const Image*> images;         // per camera: the prepared radiograph (readout)
+    unsigned scene3d = 0;
+};
+
+struct WorkspaceLayout {
+    std::vector<Pane> cameras;
+    Pane scene3d, objects, pose, solve;
+};
+WorkspaceLayout computeWorkspaceLayout(glm::vec2 display, int cameras);
+
+class WorkspaceUi {
+  public:
+    void draw(WorkspaceState& state, const WorkspaceTextures& textures);
+    std::optional<WidgetRect> rect(const std::string& id) const;
+    glm::ivec2 sceneViewSize() const { return sceneViewSize_; }
+    const std::string& shownTooltip() const { return shownTooltip_; }
+
+  private:
+    void cameraPane(WorkspaceState& state, const WorkspaceTextures& textures, int camera, const Pane& pane);
+    void scenePane(WorkspaceState& state, const Pane& pane, unsigned texture);
+    void objectsPane(WorkspaceState& state, const Pane& pane);
+    void posePane(WorkspaceState& state, const Pane& pane);
+    void solvePane(WorkspaceState& state, const Pane& pane);
+    void keyboard(WorkspaceState& state);
+    void record(const std::string& id);
+    void tooltip(const std::string& text);
+    void drawTooltip();
+
+    std::map<std::string, WidgetRect> rects_;
+    std::string tooltip_, shownTooltip_;
+    glm::ivec2 sceneViewSize_{320, 320};
+};
+
+}  // namespace fm::app

@@ -1,0 +1,152 @@
+// The real X-ray workspace driven through its UI (headless OSMesa, scripted mouse and keys):
+// the JTML trial opens with the implants at their .jts poses, the frame slider moves to the next
+// frame's keyframes, a pose slider moves the implant along the film by what it says, the arrow
+// keys nudge, Solve registers from the pose shown and Save writes what the .tra reader reads back.
+#include <gtest/gtest.h>
+
+#include <imgui.h>
+
+#include "common/TestData.h"
+#include "pose/AutoscoperTra.h"
+#include "scene/ObjectPoseParameterization.h"
+#include "ui/UiScript.h"
+#include "workspace/WorkspaceApp.h"
+#include "xray/ObjectRegistration.h"
+#include "xray/PoseSpec.h"
+
+namespace fm::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+class WorkspaceUi : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        FM_REQUIRE_SHARED_DATA("jtml-kneel-tka-fluoro");
+        if (!sharedDataBesideRepo()) {
+            if (underCI()) FAIL() << "under CI the shared data must be ../shared/data beside the repository";
+            GTEST_SKIP() << "FM_DATA_DIR is not ../shared/data beside the repository";
+        }
+        app::WorkspaceSource source;
+        source.trial = repoDir() / "data/trials/jtml-knee.json";
+        model = app::WorkspaceModel::open(source, 2);
+        backend = app::createOsmesaBackend({1280, 800});
+        app::WorkspaceOptions options;
+        options.showTimings = false;
+        app = std::make_unique<app::WorkspaceApp>(*backend, model, options);
+        script = std::make_unique<app::UiScript>(*app);
+        script->idle(2);
+    }
+    void TearDown() override {
+        script.reset();
+        app.reset();
+        backend.reset();
+    }
+    RigidTransform jts(int object, int frame) const {
+        const fs::path d = sharedDataDir() / "jtml-kneel-tka-fluoro";
+        return readPoseSpec((d / (object == 0 ? "fem.jts" : "tib.jts")).string(), frame);
+    }
+    glm::dvec3 centre(int object) const {
+        return app->pose(object)->applyToPoint(defaultPivot(*model->scene().objects[object].model));
+    }
+    std::shared_ptr<app::WorkspaceModel> model;
+    std::unique_ptr<app::RenderBackend> backend;
+    std::unique_ptr<app::WorkspaceApp> app;
+    std::unique_ptr<app::UiScript> script;
+};
+
+TEST_F(WorkspaceUi, OpensAtTheJtsPosesAndTheFrameSliderGoesToTheNextFramesKeyframes) {
+    ASSERT_EQ(app->state().frame, 0);
+    EXPECT_NEAR(glm::length(app->pose(0)->translation - jts(0, 0).translation), 0.0, 1e-9);
+    ASSERT_TRUE(app->state().iou.has_value());  // the femur against its mask
+    EXPECT_GE(*app->state().iou, 0.999);
+    script->clickWidget("button:frame-next");
+    script->idle(1);
+    EXPECT_EQ(app->state().frame, 1);
+    EXPECT_NEAR(glm::length(app->pose(0)->translation - jts(0, 1).translation), 0.0, 1e-9);
+    EXPECT_NEAR(glm::length(app->pose(1)->translation - jts(1, 1).translation), 0.0, 1e-9);
+    EXPECT_GE(*app->state().iou, 0.999);
+    // Dragging the frame slider to its right end: the last frame.
+    const app::WidgetRect slider = script->widget("slider:frame");
+    script->drag(slider.center(), {slider.max.x + 20.0f, slider.center().y}, 4);
+    script->idle(1);
+    EXPECT_EQ(app->state().frame, 2);
+    // The pane's radiograph is frame 0180 as prepared.
+    EXPECT_EQ(app->state().frameNames[0][2], "AT_K1_V1_0180.tif");
+}
+
+TEST_F(WorkspaceUi, APoseSliderAndTheArrowKeysMoveTheImplantAlongTheFilm) {
+    const ProjectionGeometry& cam = model->scene().cameras[0];
+    const glm::dvec3 before = centre(0);
+    const double x0 = app->state().controls.values[0];
+    const app::WidgetRect slider = script->widget("slider:x-(film-u)");
+    script->drag(slider.center(), {slider.center().x + 0.2f * (slider.max.x - slider.min.x), slider.center().y}, 5);
+    script->idle(1);
+    const double dx = app->state().controls.values[0] - x0;
+    ASSERT_GT(dx, 5.0);
+    EXPECT_NEAR(glm::length(centre(0) - (before + dx * cam.detector.u)), 0.0, 1e-6);
+    EXPECT_LT(*app->state().iou, 0.9);  // moved off the mask
+    // Right arrow: +1 mm on the selected control (x), Shift: +0.1.
+    const glm::dvec3 afterDrag = centre(0);
+    script->pressKey(ImGuiKey_RightArrow);
+    script->pressKey(ImGuiKey_RightArrow, false, true);
+    script->idle(1);
+    EXPECT_NEAR(glm::dot(centre(0) - afterDrag, cam.detector.u), 1.1, 1e-6);
+    // Selecting the tibia gives the controls to it; the femur keeps its pose.
+    const RigidTransform femur = *app->pose(0);
+    script->clickWidget("select:object-tibia");
+    script->idle(1);
+    EXPECT_EQ(app->state().controls.object, 1);
+    const double tibiaX = app->state().controls.values[0];
+    const glm::dvec3 tibiaBefore = centre(1);
+    script->pressKey(ImGuiKey_LeftArrow);
+    script->idle(1);
+    EXPECT_EQ(app->pose(0)->translation, femur.translation);
+    // A nudge lands on the 0.1 mm grid, as the game's do (12.96 -> 12.0).
+    const double tibiaDx = app->state().controls.values[0] - tibiaX;
+    EXPECT_NEAR(app->state().controls.values[0], std::round(tibiaX * 10.0 - 10.0) / 10.0, 1e-9);
+    EXPECT_NEAR(glm::length(centre(1) - (tibiaBefore + tibiaDx * cam.detector.u)), 0.0, 1e-6);
+}
+
+TEST_F(WorkspaceUi, SolveRegistersFromThePoseShownAndSaveWritesTheTra) {
+    // Start 2 mm off along the film and 10 mm in depth.
+    app->state().controls.values[0] += 2.0;
+    app->state().controls.values[2] += 10.0;
+    script->idle(1);
+    const RigidTransform start = *app->pose(0);
+    ASSERT_LT(*app->state().iou, 0.95);
+    script->clickWidget("button:solve");
+    app->waitForSolve();
+    const app::WorkspaceSolve& s = app->state().solve;
+    ASSERT_TRUE(s.finished) << s.error;
+    ASSERT_TRUE(s.error.empty()) << s.error;
+    ASSERT_TRUE(s.result.has_value());
+    EXPECT_EQ(s.start->translation, start.translation);
+    // The answer is on the sliders and back on the mask (registration: ~1 mm in-plane).
+    EXPECT_EQ(app->pose(0)->translation, s.result->translation);
+    ASSERT_TRUE(s.iou.has_value());
+    EXPECT_GT(*s.iou, 0.9);
+    EXPECT_GT(*s.iou, *s.startIou);
+    EXPECT_GT(s.inPlaneMm, 1.0);  // it moved back across the film
+    EXPECT_NEAR(glm::length(s.result->translation - jts(0, 0).translation), 0.0, 12.0);
+    // Save: the .tra holds every frame's poses (Autoscoper's frame: the mesh's own here).
+    const fs::path out = scratchDir("workspace-ui-save") / "knee.tra";
+    app->state().savePath = out.string();
+    script->clickWidget("button:save");
+    script->idle(1);
+    ASSERT_FALSE(app->state().saveFailed) << app->state().saveMessage;
+    const TraFile tra = readTra(out);
+    ASSERT_EQ(tra.frames.size(), 3u);
+    EXPECT_NEAR(glm::length(tra.frames[0][0]->translation - s.result->translation), 0.0, 1e-9);
+    EXPECT_NEAR(glm::length(tra.frames[2][1]->translation - jts(1, 2).translation), 0.0, 1e-9);
+    // A failing Save says so and keeps everything.
+    app->state().savePath = (out.parent_path() / "missing" / "x.tra").string();
+    script->clickWidget("button:save");
+    script->idle(1);
+    EXPECT_TRUE(app->state().saveFailed);
+    EXPECT_NE(app->state().saveMessage.find("missing"), std::string::npos);
+    EXPECT_EQ(app->pose(0)->translation, s.result->translation);
+}
+
+}  // namespace
+}  // namespace fm::test
