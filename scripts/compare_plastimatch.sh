@@ -14,8 +14,10 @@
 # Units. plastimatch divides line integrals by 10 (mm -> cm). Its default HU conversion is
 # mu = 0.022 (1 + HU/1000) per mm for HU > -800 and 0 otherwise; ours is mu_water (1 + HU/1000)
 # with mu_water = kMuWaterPerMm (engine/drr/Drr.h). So in "mu" mode we render with
-# --threshold -800 and expect  ours = plastimatch * 10 * kMuWaterPerMm / 0.022  exactly
-# (apart from voxels at exactly -800 HU). In "raw" mode (--values raw vs -P none) we expect
+# --threshold -799.99997 (our threshold keeps stored >= level; this keeps exactly the float
+# values > -800, also the many voxels at exactly -800 of integer CTs) and expect
+# ours = plastimatch * 10 * kMuWaterPerMm / 0.022.
+# plastimatch ignores direction cosines: it gets an identity-axes copy of the volume (below). In "raw" mode (--values raw vs -P none) we expect
 # ours = plastimatch * 10.
 #
 # Geometry mapping (checked against plastimatch 1.9.4's source and output): --nrm is the unit
@@ -104,6 +106,52 @@ def read_mha(path):
     # MetaImage TransformMatrix lists the axis directions one after the other.
     axes = [m[0:3], m[3:6], m[6:9]]
     return dims, spacing, origin, axes, values
+
+def axis_aligned_copy(in_path, out_path):
+    # plastimatch 1.9.4's DRR ignores the direction cosines (it traces as if the axes were
+    # identity), so a volume stored along other axes (RAS-stored NIfTIs such as example_ct:
+    # direction diag(-1,-1,1) in LPS) is handed to it flipped into identity axes: the same
+    # voxels at the same world positions, voxel order reversed along every negative axis.
+    # Exact (a reordering). Other direction matrices (permutations, oblique) are refused.
+    import array
+    dims, spacing, origin, axes, values = read_mha(in_path)
+    flip = []
+    for a in range(3):
+        unit = [0.0, 0.0, 0.0]
+        unit[a] = 1.0
+        if all(abs(axes[a][b] - unit[b]) < 1e-9 for b in range(3)):
+            flip.append(False)
+        elif all(abs(axes[a][b] + unit[b]) < 1e-9 for b in range(3)):
+            flip.append(True)
+        else:
+            sys.exit('%s: direction %s is not a diagonal of +-1; not mapped' % (in_path, axes))
+    nx, ny, nz = dims
+    src = array.array('f', values)
+    out = array.array('f', bytes(4 * nx * ny * nz))
+    for k in range(nz):
+        sk = nz - 1 - k if flip[2] else k
+        for j in range(ny):
+            sj = ny - 1 - j if flip[1] else j
+            row = src[nx * (sj + ny * sk):nx * (sj + ny * sk + 1)]
+            if flip[0]:
+                row.reverse()
+            out[nx * (j + ny * k):nx * (j + ny * k + 1)] = row
+    # New voxel (0,0,0) is the old voxel at the far end of every flipped axis.
+    new_origin = list(origin)
+    for a in range(3):
+        if flip[a]:
+            new_origin = add(new_origin, scale(axes[a], (dims[a] - 1) * spacing[a]))
+    header = ('ObjectType = Image\nNDims = 3\nBinaryData = True\n'
+              'BinaryDataByteOrderMSB = False\nCompressedData = False\n'
+              'TransformMatrix = 1 0 0 0 1 0 0 0 1\nOffset = %s\nElementSpacing = %s\n'
+              'DimSize = %d %d %d\nElementType = MET_FLOAT\nElementDataFile = LOCAL\n'
+              % (' '.join('%.17g' % x for x in new_origin),
+                 ' '.join('%.17g' % x for x in spacing), nx, ny, nz))
+    if sys.byteorder != 'little':
+        out.byteswap()
+    with open(out_path, 'wb') as f:
+        f.write(header.encode())
+        f.write(out.tobytes())
 
 def sub(a, b): return [a[i] - b[i] for i in range(3)]
 def dot(a, b): return sum(a[i] * b[i] for i in range(3))
@@ -196,6 +244,8 @@ def compare(ours_path, pm_path, factor, volume_path, geometry_path, mode):
 if __name__ == '__main__':
     if sys.argv[1] == 'args':
         plastimatch_args(sys.argv[2])
+    elif sys.argv[1] == 'axis-aligned':
+        axis_aligned_copy(sys.argv[2], sys.argv[3])
     else:
         compare(sys.argv[2], sys.argv[3], float(sys.argv[4]), sys.argv[5], sys.argv[6],
                 sys.argv[7])
@@ -204,6 +254,7 @@ PY
 echo "compare_plastimatch: $(plastimatch --version 2>&1 | head -1), $THREADS thread(s), best of $REPEAT"
 "$FM" convert --volume "$VOLUME" --out "$WORK/volume.mha" >/dev/null
 echo "volume: $VOLUME -> $WORK/volume.mha"
+python3 "$WORK/helper.py" axis-aligned "$WORK/volume.mha" "$WORK/volume_plastimatch.mha"
 
 VIEWS=("AP:0,0,0,0,0,0" "lateral:0,0,0,90,0,0"
        "oblique:10,-5,20,35,25,15" "pole:0,0,0,-60,90,-30")
@@ -220,7 +271,7 @@ for view in "${VIEWS[@]}"; do
     mapfile -t PM_GEOMETRY < <(python3 "$WORK/helper.py" args "$WORK/$name.json")
     for values in mu raw; do
         if [ "$values" = mu ]; then
-            OURS_VALUES=(--values mu --threshold -800)
+            OURS_VALUES=(--values mu --threshold -799.99997)
             PM_VALUES=(-P preprocess)
             FACTOR=$(python3 -c "print(10 * $MU_WATER / 0.022)")
         else
@@ -234,7 +285,7 @@ for view in "${VIEWS[@]}"; do
             sed -n 's/^render *\([0-9.]*\) ms.*/\1/p')
         best=""
         for ((i = 0; i < REPEAT; i++)); do
-            log=$(OMP_NUM_THREADS=$THREADS plastimatch drr -I "$WORK/volume.mha" \
+            log=$(OMP_NUM_THREADS=$THREADS plastimatch drr -I "$WORK/volume_plastimatch.mha" \
                 -O "$WORK/${name}_${values}_plm" "${PM_GEOMETRY[@]}" "${PM_VALUES[@]}" \
                 -i exact -t raw)
             # "Total time" covers the rendering and writing; subtract the writing ("I/O time").

@@ -47,6 +47,7 @@ struct DrrArgs {
     int threads = 0;
     int repeat = 1;
     bool noSkip = false;
+    std::string walk = "auto";
     std::string out;
     std::string raw;
 };
@@ -259,6 +260,9 @@ void runDrr(const DrrArgs& a) {
     renderOptions.approxStepMm = a.stepMm;
     renderOptions.threads = threads;
     renderOptions.skipEmptySpace = !a.noSkip;
+    renderOptions.walk = a.walk == "bricks"  ? fm::DrrExactWalk::Bricks
+                         : a.walk == "dense" ? fm::DrrExactWalk::Dense
+                                             : fm::DrrExactWalk::Auto;
 
     const int shownThreads = threads == 0 ? fm::defaultThreadCount() : threads;
     std::printf("render    %s, %s", a.intensity ? "intensity exp(-integral)" : "line integral",
@@ -266,8 +270,13 @@ void runDrr(const DrrArgs& a) {
     if (a.thresholdHU) std::printf(", threshold %g", *a.thresholdHU);
     if (a.mode == "approx") std::printf(" (step %g mm)", a.stepMm);
     if (a.noSkip) std::printf(", no empty-space skipping");
+    if (a.walk != "auto") std::printf(", %s walk", a.walk.c_str());
     std::printf(", %d thread%s\n", shownThreads, shownThreads == 1 ? "" : "s");
-    std::printf("prepare   %.2f ms\n", prepareMs);
+    const fm::DrrVolumeInfo info = fm::drrVolumeInfo(*prepared);
+    std::printf("prepare   %.2f ms (kept %d x %d x %d; bricks %d, %d mixed; %s walk)\n", prepareMs,
+                info.dims.x, info.dims.y, info.dims.z, info.bricksTotal,
+                info.bricksTotal - info.bricksEmpty - info.bricksUniform,
+                info.denseWalk ? "dense" : "bricks");
 
     if (batch) {
         // One prepared volume, an indexed list of jobs (engine/drr/DrrBatch).
@@ -353,6 +362,12 @@ FM_REGISTER_COMMAND("drr", 20, [](CLI::App& app) {
     cmd->add_option("--threads", a->threads, "Worker threads (0 = all cores)")
         ->capture_default_str();
     cmd->add_option("--repeat", a->repeat, "Render this many times and report the fastest (timing)")
+        ->capture_default_str();
+    cmd->add_option("--walk", a->walk,
+                    "Exact voxel walk: auto (dense on CTs with little empty space, where the CPU "
+                    "has AVX-512), bricks (skip empty bricks, one ray at a time) or dense (every "
+                    "voxel, 16 rays at a time); the same image up to rounding")
+        ->check(CLI::IsMember({"auto", "bricks", "dense"}))
         ->capture_default_str();
     cmd->add_flag("--no-skip", a->noSkip,
                   "Plain traversal of every voxel and pixel, without empty-space skipping (to "

@@ -48,6 +48,13 @@ enum class DrrTrace {
     Approx,
 };
 
+// How the exact trace walks the voxels; all give the same segments (docs/drr.md).
+enum class DrrExactWalk {
+    Auto,    // Dense where the volume has few empty/uniform bricks and the CPU has AVX-512
+    Bricks,  // one ray at a time, skipping empty and uniform bricks
+    Dense,   // every voxel, 16 rays at once in AVX-512 lanes (scalar where the CPU has none)
+};
+
 struct DrrRenderOptions {
     DrrOutput output = DrrOutput::LineIntegral;
     DrrTrace trace = DrrTrace::Exact;
@@ -56,6 +63,7 @@ struct DrrRenderOptions {
     // Added: false = plain traversal of every voxel of the (cropped) box and every pixel
     // (no bricks, no projected-box pixel limit). Same result up to summation order; for tests.
     bool skipEmptySpace = true;
+    DrrExactWalk walk = DrrExactWalk::Auto;  // with skipEmptySpace (without it: Dense)
 };
 
 // Linear attenuation coefficient of liquid water at an effective energy of 60 keV, in 1/mm:
@@ -101,6 +109,7 @@ struct DrrVolumeInfo {
     int bricksEmpty = 0;    // all values zero: skipped outright
     int bricksUniform = 0;  // all values equal and non-zero: one multiplication per ray
     bool empty = true;      // no non-zero value at all
+    bool denseWalk = false;  // DrrExactWalk::Auto walks every voxel (16 rays at once)
 };
 DrrVolumeInfo drrVolumeInfo(const DrrVolume& volume);
 

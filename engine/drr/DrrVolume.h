@@ -42,6 +42,9 @@ struct DrrVolume {
     glm::ivec3 brickDims{0};
     std::vector<float> brickValue;         // the common value of a uniform brick
     std::vector<std::uint8_t> brickMixed;  // 1 = voxels differ: walk the voxels
+    // Few bricks to skip (real CTs: air noise above -1000 HU): walking every voxel 16 rays at
+    // a time beats skipping one ray at a time (DenseWalk.h; measured in docs/drr.md).
+    bool preferDenseWalk = false;
 
     std::ptrdiff_t at(int i, int j, int k) const {
         return (i + 1) +
@@ -52,7 +55,10 @@ struct DrrVolume {
     }
 };
 
-// Fills brickDims, brickValue and brickMixed from `values` (per brick slab in parallel; the
+// Bricks at least this fraction of which are mixed make renderDrr walk densely (Auto).
+inline constexpr double kDenseWalkMixedFraction = 0.2;
+
+// Fills brickDims, brickValue, brickMixed and preferDenseWalk from `values` (per brick slab in parallel; the
 // same for any thread count).
 void buildDrrBricks(DrrVolume& v, int threads);
 

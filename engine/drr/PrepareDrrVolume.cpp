@@ -6,6 +6,7 @@
 
 #include "core/Error.h"
 #include "core/Parallel.h"
+#include "drr/DenseWalk.h"
 #include "drr/Drr.h"
 #include "drr/DrrVolume.h"
 
@@ -119,6 +120,8 @@ void buildDrrBricks(DrrVolume& v, int threads) {
                     }
         },
         4);
+    const auto mixed = static_cast<std::size_t>(std::count(v.brickMixed.begin(), v.brickMixed.end(), 1));
+    v.preferDenseWalk = double(mixed) >= kDenseWalkMixedFraction * double(count);
 }
 
 namespace {
@@ -225,6 +228,7 @@ DrrVolumeInfo drrVolumeInfo(const DrrVolume& v) {
     info.cropBegin = v.cropBegin;
     info.spacing = v.spacing;
     info.empty = v.empty;
+    info.denseWalk = v.preferDenseWalk && denseWalkSimdAvailable();
     info.bricksTotal = static_cast<int>(v.brickMixed.size());
     for (std::size_t b = 0; b < v.brickMixed.size(); ++b) {
         if (v.brickMixed[b]) continue;

@@ -1,0 +1,44 @@
+#pragma once
+// The plain Siddon/Jacobs voxel walk (no bricks) in two forms that give bit-identical sums:
+// one ray at a time (scalar), and sixteen rays at once in AVX-512 lanes where the CPU has it.
+//
+// Why a vector form: on real CTs almost every voxel is non-zero (air noise above -1000 HU),
+// so empty-space skipping passes over little and the cost is the walk itself. One ray's walk
+// is a chain of dependent steps (the axis chosen by a compare decides the next crossing), so a
+// scalar core waits on latencies and mispredicted 3-way branches; sixteen independent rays in
+// the lanes of two vectors fill that time. Each lane does exactly the scalar step's arithmetic
+// (same operations, same order, no fused multiply-add: this file's sources are compiled with
+// -ffp-contract=off), so a pixel never depends on which form traced it.
+#include <cstddef>
+#include <cstdint>
+
+namespace fm {
+
+// A ray ready to walk: the alpha range inside the kept box and, per axis, the alpha of the
+// next plane crossing, its increment and the step of the linear index into the padded values.
+// The walk ends when the next crossing is at or beyond aEnd. `steps` bounds it as well: the
+// crossings the ray has inside the box, plus one. Rounding near the exit face may take a ray
+// one voxel out, into the zero padding (adding exactly nothing); the bound and a clamp of
+// every read to [0, last] keep even absurd input from running on or reading outside.
+struct DenseRay {
+    double aBegin = 0.0, aEnd = 0.0;
+    double next[3] = {0.0, 0.0, 0.0};  // +inf for an axis the ray is parallel to
+    double delta[3] = {0.0, 0.0, 0.0};
+    std::int64_t linear = 0;  // index of the first voxel in the padded values
+    std::int64_t offset[3] = {0, 0, 0};
+    std::int64_t steps = 0;
+};
+
+// Sum over the ray's voxel segments of (alpha length) * value.
+// `last` is the index of the last padded value.
+double walkDense(const float* values, std::int64_t last, const DenseRay& ray);
+
+// The same for `count` (1..16) rays at once; sums[i] is bit-identical to walkDense(rays[i]).
+// Uses AVX-512 when denseWalkSimdAvailable(), else the scalar walk.
+void walkDense16(const float* values, std::int64_t last, const DenseRay* rays, int count,
+                double* sums);
+
+// True when this CPU (and OS) runs the AVX-512 form.
+bool denseWalkSimdAvailable();
+
+}  // namespace fm

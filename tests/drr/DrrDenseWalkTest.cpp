@@ -1,0 +1,127 @@
+// The dense walk (every voxel, 16 rays at once in AVX-512 lanes where the CPU has them) against
+// the scalar plain walk, pixel for pixel and bit for bit, and against the brick-skipping walk.
+#include <cstdint>
+#include <random>
+#include <utility>
+
+#include <gtest/gtest.h>
+
+#include "DrrTestUtil.h"
+#include "common/TestData.h"
+#include "drr/Drr.h"
+#include "geometry/Pose.h"
+#include "io/ReadVolume.h"
+
+namespace {
+
+fm::DrrRenderOptions withWalk(fm::DrrExactWalk walk, int threads = 0) {
+    fm::DrrRenderOptions o;
+    o.walk = walk;
+    o.threads = threads;
+    return o;
+}
+
+// Every pixel of the dense image equals the scalar plain walk of its ray (drrLineIntegral
+// without skipping), rounded to float: the vector lanes do the scalar arithmetic exactly.
+void expectDenseEqualsScalar(const fm::DrrVolume& v, const fm::ProjectionGeometry& g) {
+    const fm::Image dense = fm::renderDrr(v, g, withWalk(fm::DrrExactWalk::Dense));
+    int nonZero = 0, mismatches = 0;
+    for (int row = 0; row < g.detector.size.y; ++row)
+        for (int col = 0; col < g.detector.size.x; ++col) {
+            const float scalar = static_cast<float>(
+                fm::drrLineIntegral(v, g.source, g.detector.pixelCenter(col, row), false));
+            if (dense.at(col, row) != scalar) ++mismatches;
+            if (scalar != 0.0f) ++nonZero;
+        }
+    EXPECT_EQ(mismatches, 0);
+    EXPECT_GT(nonZero, g.detector.size.x * g.detector.size.y / 10) << "the volume is in view";
+}
+
+// Random values with exact zeros (air), on an oblique anisotropic grid, seen off-axis; the
+// detector width (37) leaves partial groups of 16 at the end of every row.
+TEST(DrrDenseWalk, EqualsTheScalarWalkBitForBit) {
+    fm::Volume volume = fm::test::makeVolume({23, 17, 19}, {1.3, 0.7, 2.1}, 0.0f, {-5.0, 3.0, 2.0},
+                                             fm::test::rotation(27.0, {1.0, 2.0, -0.5}));
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<float> value(-0.5f, 2.0f);
+    for (float& x : volume.values) x = rng() % 4 == 0 ? 0.0f : value(rng);
+    fm::DrrValueOptions raw;
+    raw.values = fm::DrrValues::Raw;
+    const fm::DrrVolumePtr v = fm::prepareDrrVolume(volume, raw);
+    for (double azimuth : {0.0, 33.0, 90.0, 211.0}) {
+        fm::ProjectionGeometry g =
+            fm::test::orbitGeometry(volume.center(), azimuth, 17.0, 200.0, 150.0, 37, 1.1);
+        g.detector.size.y = 29;
+        expectDenseEqualsScalar(*v, g);
+    }
+}
+
+// Axis-aligned grid and views along the axes: central rays parallel to two axes, rays on
+// voxel faces and through edges (ties between axes), where the lanes' masks must choose as the
+// scalar walk does.
+TEST(DrrDenseWalk, EqualsTheScalarWalkOnAxisAlignedRays) {
+    fm::Volume volume = fm::test::makeVolume({16, 12, 10}, {1.0, 1.0, 1.0}, 0.0f, {0.5, 0.5, 0.5});
+    for (std::size_t n = 0; n < volume.values.size(); ++n)
+        volume.values[n] = float((n * 7919) % 11) * 0.5f;
+    fm::DrrValueOptions raw;
+    raw.values = fm::DrrValues::Raw;
+    const fm::DrrVolumePtr v = fm::prepareDrrVolume(volume, raw);
+    for (auto [azimuth, elevation] : {std::pair{0.0, 0.0}, {90.0, 0.0}, {0.0, 90.0}, {45.0, 0.0}})
+        expectDenseEqualsScalar(*v, fm::test::orbitGeometry({8.0, 6.0, 5.0}, azimuth, elevation,
+                                                            100.0, 100.0, 33, 1.0));
+}
+
+TEST(DrrDenseWalk, EqualsTheScalarWalkOnARealCt) {
+    FM_REQUIRE_SHARED_DATA("totalseg-example-ct/example_ct.nii.gz");
+    const fm::Volume ct =
+        fm::readVolume(fm::test::sharedDataDir() / "totalseg-example-ct/example_ct.nii.gz");
+    const fm::DrrVolumePtr v = fm::prepareDrrVolume(ct, {});
+    fm::SceneSetup setup = fm::defaultSceneSetup();
+    setup.filmPixels = {61, 47};
+    fm::Pose pose;
+    pose.azimuthDeg = 20.0;
+    pose.elevationDeg = 10.0;
+    expectDenseEqualsScalar(*v, fm::sceneGeometry(pose, setup, ct.center()));
+    // Air noise above -1000 HU: nearly every brick is mixed, so Auto walks densely (on AVX-512).
+    EXPECT_GT(fm::drrVolumeInfo(*v).bricksTotal - fm::drrVolumeInfo(*v).bricksEmpty -
+                  fm::drrVolumeInfo(*v).bricksUniform,
+              fm::drrVolumeInfo(*v).bricksTotal * 9 / 10);
+}
+
+// The dense and the brick walk visit the same segments; uniform bricks are summed as one
+// product, so the sums differ by rounding only.
+TEST(DrrDenseWalk, AgreesWithTheBrickWalk) {
+    FM_REQUIRE_SHARED_DATA("totalseg-example-ct/example_ct.nii.gz");
+    const fm::Volume ct =
+        fm::readVolume(fm::test::sharedDataDir() / "totalseg-example-ct/example_ct.nii.gz");
+    fm::DrrValueOptions bone;
+    bone.thresholdHU = 200.0;  // mostly empty bricks: the brick walk skips a lot
+    for (const fm::DrrValueOptions& values : {fm::DrrValueOptions{}, bone}) {
+        const fm::DrrVolumePtr v = fm::prepareDrrVolume(ct, values);
+        const fm::ProjectionGeometry g =
+            fm::test::orbitGeometry(ct.center(), 40.0, -25.0, 600.0, 400.0, 53, 2.3);
+        const fm::Image dense = fm::renderDrr(*v, g, withWalk(fm::DrrExactWalk::Dense));
+        const fm::Image bricks = fm::renderDrr(*v, g, withWalk(fm::DrrExactWalk::Bricks));
+        const double peak = fm::test::maxAbs(bricks);
+        EXPECT_GT(peak, 0.1);
+        EXPECT_LE(fm::test::maxAbsDifference(dense, bricks), 1e-6 * peak);
+    }
+}
+
+TEST(DrrDenseWalk, ThreadCountDoesNotChangeAPixel) {
+    fm::Volume volume = fm::test::makeVolume({31, 29, 27}, {1.0, 1.0, 1.5}, 1.0f);
+    for (std::size_t n = 0; n < volume.values.size(); ++n)
+        volume.values[n] = float(n % 13) * 0.25f;
+    fm::DrrValueOptions raw;
+    raw.values = fm::DrrValues::Raw;
+    const fm::DrrVolumePtr v = fm::prepareDrrVolume(volume, raw);
+    const fm::ProjectionGeometry g =
+        fm::test::orbitGeometry(volume.center(), 12.0, 34.0, 150.0, 100.0, 45, 1.0);
+    const fm::Image one = fm::renderDrr(*v, g, withWalk(fm::DrrExactWalk::Dense, 1));
+    for (int threads : {2, 3}) {
+        const fm::Image many = fm::renderDrr(*v, g, withWalk(fm::DrrExactWalk::Dense, threads));
+        EXPECT_EQ(one.pixels, many.pixels) << threads << " threads";
+    }
+}
+
+}  // namespace
