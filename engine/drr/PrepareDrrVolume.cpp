@@ -1,5 +1,11 @@
 // Preparation of a volume for DRRs: value conversion, threshold, optional downsampling,
 // cropping to the non-zero content and the brick map for empty-space skipping.
+//
+// Two passes over the source and no volume-sized scratch array: (1) the bounding box of the
+// non-zero converted values, and the check for infinite values; (2) per slab of bricks in
+// parallel, the kept box converted into the padded array and that slab's bricks classified
+// while its values are fresh. (Before: a converted full-size copy, then a cropped copy of it,
+// then the bricks: three passes and two extra volume-sized arrays.)
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -24,27 +30,42 @@ double drrVoxelValue(double stored, const DrrValueOptions& options) {
 
 namespace {
 
-// Converted values of the whole source grid, downsampled by `f` (block means) if f > 1.
-// Returns the grid's dims, spacing and the world position of its voxel (0,0,0)'s centre.
-// In parallel over slices; every output value depends on its inputs only, and the error names
-// the first infinite voxel in memory order, so the result never depends on the thread count.
-std::vector<float> convertedValues(const Volume& volume, const DrrValueOptions& options,
-                                   int threads, glm::ivec3& dims, glm::dvec3& spacing,
-                                   glm::dvec3& origin) {
-    const int f = options.downsample;
+// The grid the DRR volume is cut from: the source volume's values converted on the fly, or
+// (downsampling) a converted block-mean grid.
+struct SourceGrid {
+    glm::ivec3 dims{0};
+    glm::dvec3 spacing{1.0};
+    glm::dvec3 origin{0.0};  // world position of voxel (0,0,0)'s centre
+    const Volume* volume = nullptr;  // converted on the fly when `coarse` is empty
+    const DrrValueOptions* options = nullptr;
+    std::vector<float> coarse;
+
+    float at(std::size_t n) const {
+        return coarse.empty() ? static_cast<float>(drrVoxelValue(volume->values[n], *options))
+                              : coarse[n];
+    }
+    std::size_t index(int i, int j, int k) const {
+        return static_cast<std::size_t>(i) +
+               static_cast<std::size_t>(dims.x) *
+                   (static_cast<std::size_t>(j) + static_cast<std::size_t>(dims.y) * k);
+    }
+};
+
+// Refuses infinite voxels, naming the first in memory order (per slice in parallel; the
+// result does not depend on the thread count).
+void checkFinite(const Volume& volume, int threads) {
     const std::size_t sliceSize = static_cast<std::size_t>(volume.dims.x) * volume.dims.y;
-    std::vector<float> fine(volume.voxelCount());
     constexpr std::size_t kNone = static_cast<std::size_t>(-1);
     std::vector<std::size_t> firstInfinite(volume.dims.z, kNone);
     parallelFor(
         volume.dims.z, threads,
         [&](int k0, int k1) {
             for (int k = k0; k < k1; ++k)
-                for (std::size_t n = k * sliceSize; n < (k + 1) * sliceSize; ++n) {
-                    const float stored = volume.values[n];
-                    if (std::isinf(stored) && firstInfinite[k] == kNone) firstInfinite[k] = n;
-                    fine[n] = static_cast<float>(drrVoxelValue(stored, options));
-                }
+                for (std::size_t n = k * sliceSize; n < (k + 1) * sliceSize; ++n)
+                    if (std::isinf(volume.values[n])) {
+                        firstInfinite[k] = n;
+                        break;
+                    }
         },
         4);
     for (std::size_t n : firstInfinite) {
@@ -54,95 +75,63 @@ std::vector<float> convertedValues(const Volume& volume, const DrrValueOptions& 
             << ": cannot compute a DRR";
         throw Error(msg.str());
     }
+}
+
+SourceGrid sourceGrid(const Volume& volume, const DrrValueOptions& options, int threads) {
+    SourceGrid g;
+    g.volume = &volume;
+    g.options = &options;
+    const int f = options.downsample;
     if (f == 1) {
-        dims = volume.dims;
-        spacing = volume.spacing;
-        origin = volume.origin;
-        return fine;
+        g.dims = volume.dims;
+        g.spacing = volume.spacing;
+        g.origin = volume.origin;
+        return g;
     }
-    dims = (volume.dims + (f - 1)) / f;
-    spacing = volume.spacing * double(f);
+    g.dims = (volume.dims + (f - 1)) / f;
+    g.spacing = volume.spacing * double(f);
     // Coarse voxel I covers fine voxels [I f, I f + f): its centre is at fine index I f + (f-1)/2.
-    origin = volume.indexToWorld(glm::dvec3((f - 1) * 0.5));
-    std::vector<float> coarse(static_cast<std::size_t>(dims.x) * dims.y * dims.z);
+    g.origin = volume.indexToWorld(glm::dvec3((f - 1) * 0.5));
+    std::vector<float> coarse(static_cast<std::size_t>(g.dims.x) * g.dims.y * g.dims.z);
     parallelFor(
-        dims.z, threads,
+        g.dims.z, threads,
         [&](int K0, int K1) {
             for (int K = K0; K < K1; ++K)
-                for (int J = 0; J < dims.y; ++J)
-                    for (int I = 0; I < dims.x; ++I) {
+                for (int J = 0; J < g.dims.y; ++J)
+                    for (int I = 0; I < g.dims.x; ++I) {
                         double sum = 0.0;
                         int count = 0;
                         for (int k = K * f; k < std::min(K * f + f, volume.dims.z); ++k)
                             for (int j = J * f; j < std::min(J * f + f, volume.dims.y); ++j)
                                 for (int i = I * f; i < std::min(I * f + f, volume.dims.x); ++i) {
-                                    sum += fine[volume.index(i, j, k)];
+                                    sum += static_cast<float>(
+                                        drrVoxelValue(volume.values[volume.index(i, j, k)], options));
                                     ++count;
                                 }
-                        coarse[I + static_cast<std::size_t>(dims.x) *
-                                       (J + static_cast<std::size_t>(dims.y) * K)] =
-                            static_cast<float>(sum / count);
+                        coarse[g.index(I, J, K)] = static_cast<float>(sum / count);
                     }
         },
         4);
-    return coarse;
+    g.coarse = std::move(coarse);
+    return g;
 }
-
-}  // namespace
-
-void buildDrrBricks(DrrVolume& v, int threads) {
-    const int b = v.brickSize;
-    v.brickDims = (v.dims + (b - 1)) / b;
-    const std::size_t count =
-        static_cast<std::size_t>(v.brickDims.x) * v.brickDims.y * v.brickDims.z;
-    v.brickValue.assign(count, 0.0f);
-    v.brickMixed.assign(count, 0);
-    parallelFor(
-        v.brickDims.z, threads,
-        [&](int bk0, int bk1) {
-            for (int bk = bk0; bk < bk1; ++bk)
-                for (int bj = 0; bj < v.brickDims.y; ++bj)
-                    for (int bi = 0; bi < v.brickDims.x; ++bi) {
-                        const std::size_t brick =
-                            bi + static_cast<std::size_t>(v.brickDims.x) *
-                                     (bj + static_cast<std::size_t>(v.brickDims.y) * bk);
-                        const float first = v.values[v.at(bi * b, bj * b, bk * b)];
-                        bool mixed = false;
-                        for (int k = bk * b; k < std::min(bk * b + b, v.dims.z) && !mixed; ++k)
-                            for (int j = bj * b; j < std::min(bj * b + b, v.dims.y) && !mixed; ++j)
-                                for (int i = bi * b; i < std::min(bi * b + b, v.dims.x); ++i)
-                                    if (v.values[v.at(i, j, k)] != first) {
-                                        mixed = true;
-                                        break;
-                                    }
-                        v.brickMixed[brick] = mixed ? 1 : 0;
-                        v.brickValue[brick] = mixed ? 0.0f : first;
-                    }
-        },
-        4);
-    const auto mixed = static_cast<std::size_t>(std::count(v.brickMixed.begin(), v.brickMixed.end(), 1));
-    v.preferDenseWalk = double(mixed) >= kDenseWalkMixedFraction * double(count);
-}
-
-namespace {
 
 // Bounding box [lo, hi] of the non-zero values; hi.x < 0 when there are none. Per slice in
 // parallel (min and max combine in any order), each row scanned from both ends.
-void nonZeroBox(const std::vector<float>& grid, glm::ivec3 dims, int threads, glm::ivec3& lo,
-                glm::ivec3& hi) {
+void nonZeroBox(const SourceGrid& grid, int threads, glm::ivec3& lo, glm::ivec3& hi) {
+    const glm::ivec3 dims = grid.dims;
     std::vector<glm::ivec3> sliceLo(dims.z, dims), sliceHi(dims.z, glm::ivec3(-1));
     parallelFor(
         dims.z, threads,
         [&](int k0, int k1) {
             for (int k = k0; k < k1; ++k)
                 for (int j = 0; j < dims.y; ++j) {
-                    const float* row = &grid[static_cast<std::size_t>(dims.x) *
-                                             (j + static_cast<std::size_t>(dims.y) * k)];
+                    const std::size_t row = grid.index(0, j, k);
                     int first = 0;
-                    while (first < dims.x && row[first] == 0.0f) ++first;
+                    while (first < dims.x && grid.at(row + first) == 0.0f) ++first;
                     if (first == dims.x) continue;
                     int last = dims.x - 1;
-                    while (row[last] == 0.0f) --last;
+                    while (grid.at(row + last) == 0.0f) --last;
                     sliceLo[k] = glm::min(sliceLo[k], glm::ivec3(first, j, k));
                     sliceHi[k] = glm::max(sliceHi[k], glm::ivec3(last, j, k));
                 }
@@ -156,7 +145,55 @@ void nonZeroBox(const std::vector<float>& grid, glm::ivec3 dims, int threads, gl
     }
 }
 
+// Classifies the bricks of slab bk (brick index bk along k) from v.values.
+void classifyBrickSlab(DrrVolume& v, int bk) {
+    const int b = v.brickSize;
+    for (int bj = 0; bj < v.brickDims.y; ++bj)
+        for (int bi = 0; bi < v.brickDims.x; ++bi) {
+            const std::size_t brick =
+                bi + static_cast<std::size_t>(v.brickDims.x) *
+                         (bj + static_cast<std::size_t>(v.brickDims.y) * bk);
+            const float first = v.values[v.at(bi * b, bj * b, bk * b)];
+            bool mixed = false;
+            for (int k = bk * b; k < std::min(bk * b + b, v.dims.z) && !mixed; ++k)
+                for (int j = bj * b; j < std::min(bj * b + b, v.dims.y) && !mixed; ++j)
+                    for (int i = bi * b; i < std::min(bi * b + b, v.dims.x); ++i)
+                        if (v.values[v.at(i, j, k)] != first) {
+                            mixed = true;
+                            break;
+                        }
+            v.brickMixed[brick] = mixed ? 1 : 0;
+            v.brickValue[brick] = mixed ? 0.0f : first;
+        }
+}
+
+void allocateBricks(DrrVolume& v) {
+    const int b = v.brickSize;
+    v.brickDims = (v.dims + (b - 1)) / b;
+    const std::size_t count =
+        static_cast<std::size_t>(v.brickDims.x) * v.brickDims.y * v.brickDims.z;
+    v.brickValue.assign(count, 0.0f);
+    v.brickMixed.assign(count, 0);
+}
+
+void decideWalk(DrrVolume& v) {
+    const auto mixed =
+        static_cast<std::size_t>(std::count(v.brickMixed.begin(), v.brickMixed.end(), 1));
+    v.preferDenseWalk = double(mixed) >= kDenseWalkMixedFraction * double(v.brickMixed.size());
+}
+
 }  // namespace
+
+void buildDrrBricks(DrrVolume& v, int threads) {
+    allocateBricks(v);
+    parallelFor(
+        v.brickDims.z, threads,
+        [&](int bk0, int bk1) {
+            for (int bk = bk0; bk < bk1; ++bk) classifyBrickSlab(v, bk);
+        },
+        4);
+    decideWalk(v);
+}
 
 DrrVolumePtr prepareDrrVolume(const Volume& volume, const DrrValueOptions& options) {
     const std::string what = "volume '" + volume.meta.source + "'";
@@ -178,19 +215,18 @@ DrrVolumePtr prepareDrrVolume(const Volume& volume, const DrrValueOptions& optio
     v->brickShift = -1;
     for (int shift = 0; shift < 9; ++shift)
         if ((1 << shift) == options.brickSize) v->brickShift = shift;
-    glm::ivec3 gridDims;
-    glm::dvec3 gridOrigin;
     const int threads = options.threads <= 0 ? defaultThreadCount() : options.threads;
-    std::vector<float> grid =
-        convertedValues(volume, options, threads, gridDims, v->spacing, gridOrigin);
+    checkFinite(volume, threads);
+    const SourceGrid grid = sourceGrid(volume, options, threads);
+    v->spacing = grid.spacing;
 
     // Bounding box of the non-zero values (everything outside contributes exactly nothing).
     glm::ivec3 lo, hi;
-    nonZeroBox(grid, gridDims, threads, lo, hi);
+    nonZeroBox(grid, threads, lo, hi);
     v->empty = hi.x < 0;
     if (!options.cropToContent) {
         lo = glm::ivec3(0);
-        hi = gridDims - 1;
+        hi = grid.dims - 1;
     } else if (v->empty) {
         lo = hi = glm::ivec3(0);  // keep one voxel so every size stays positive
     }
@@ -199,29 +235,33 @@ DrrVolumePtr prepareDrrVolume(const Volume& volume, const DrrValueOptions& optio
     v->paddedDims = v->dims + 2;
     v->values.assign(static_cast<std::size_t>(v->paddedDims.x) * v->paddedDims.y * v->paddedDims.z,
                      0.0f);
+    // The kept box converted, slab of bricks by slab of bricks, each slab's bricks classified
+    // right after its values are written.
+    allocateBricks(*v);
+    const int b = v->brickSize;
     parallelFor(
-        v->dims.z, threads,
-        [&](int k0, int k1) {
-            for (int k = k0; k < k1; ++k)
-                for (int j = 0; j < v->dims.y; ++j) {
-                    const float* src =
-                        &grid[lo.x +
-                              static_cast<std::size_t>(gridDims.x) *
-                                  (lo.y + j + static_cast<std::size_t>(gridDims.y) * (lo.z + k))];
-                    std::copy(src, src + v->dims.x, &v->values[v->at(0, j, k)]);
-                }
+        v->brickDims.z, threads,
+        [&](int bk0, int bk1) {
+            for (int bk = bk0; bk < bk1; ++bk) {
+                for (int k = bk * b; k < std::min(bk * b + b, v->dims.z); ++k)
+                    for (int j = 0; j < v->dims.y; ++j) {
+                        const std::size_t src = grid.index(lo.x, lo.y + j, lo.z + k);
+                        float* dst = &v->values[v->at(0, j, k)];
+                        for (int i = 0; i < v->dims.x; ++i) dst[i] = grid.at(src + i);
+                    }
+                classifyBrickSlab(*v, bk);
+            }
         },
         4);
+    decideWalk(*v);
 
-    v->origin = gridOrigin;
+    v->origin = grid.origin;
     v->direction = volume.direction;
     v->worldToLocal = glm::inverse(volume.direction);
     v->localShift = v->spacing * (0.5 - glm::dvec3(lo));
     v->invSpacing = 1.0 / v->spacing;
-    buildDrrBricks(*v, threads);
     return v;
 }
-
 DrrVolumeInfo drrVolumeInfo(const DrrVolume& v) {
     DrrVolumeInfo info;
     info.dims = v.dims;

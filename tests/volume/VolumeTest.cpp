@@ -1,6 +1,10 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
+#include <random>
+#include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -67,6 +71,36 @@ TEST(VolumeStats, PercentilesOfKnownValues) {
     EXPECT_EQ(s.percentiles[1], 1.0);
     EXPECT_EQ(s.percentiles[2], 50.0);
     EXPECT_EQ(s.percentiles[3], 99.0);
+}
+
+// The radix selection against a sorted copy (nearest rank), on values that stress the float
+// key order: negatives and positives, many duplicates (CT air), tiny and huge magnitudes, and
+// values whose upper 16 key bits are equal (they differ only in the lower bits).
+TEST(VolumeStats, PercentilesEqualThoseOfASortedCopy) {
+    fm::Volume v = fm::Volume::allocate({97, 31, 7});
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<float> hu(-1024.0f, 3000.0f);
+    for (std::size_t n = 0; n < v.values.size(); ++n) {
+        switch (rng() % 6) {
+            case 0: v.values[n] = -1000.0f; break;
+            case 1: v.values[n] = 1.0f + float(rng() % 1000) * 1e-7f; break;  // same upper bits
+            case 2: v.values[n] = float(rng() % 3) * 1e-39f - 1e-39f; break;   // denormals, 0
+            case 3: v.values[n] = (rng() % 2 ? 1.0f : -1.0f) * 3e37f * float(rng() % 9); break;
+            default: v.values[n] = hu(rng);
+        }
+    }
+    const std::vector<double> wanted = {0, 0.5, 1, 5, 33.3, 50, 95, 99, 99.9, 100};
+    const fm::VolumeStats s = fm::computeStats(v, wanted);
+    std::vector<float> sorted = v.values;
+    std::sort(sorted.begin(), sorted.end());
+    ASSERT_EQ(s.percentiles.size(), wanted.size());
+    for (std::size_t p = 0; p < wanted.size(); ++p) {
+        const double rank = wanted[p] / 100.0 * double(sorted.size() - 1);
+        EXPECT_EQ(s.percentiles[p], sorted[static_cast<std::size_t>(std::llround(rank))])
+            << wanted[p];
+    }
+    EXPECT_EQ(s.min, sorted.front());
+    EXPECT_EQ(s.max, sorted.back());
 }
 
 TEST(VolumeStats, NonFiniteVoxelsAreCountedAndLeftOut) {
