@@ -57,11 +57,14 @@ WorkspaceApp::WorkspaceApp(RenderBackend& backend, std::shared_ptr<WorkspaceMode
         radiographTextures_.push_back(std::make_unique<render::Texture>());
         modelTextures_.push_back(std::make_unique<render::Texture>());
     }
+    state_.tracking = model_->fromTrial();
+    if (state_.tracking) tracking_.init(*model_, state_);
     syncControls();
 }
 
 WorkspaceApp::~WorkspaceApp() {
     solver_.stop();
+    tracking_.stop();
     sceneRenderer_.reset();
     radiographTextures_.clear();
     modelTextures_.clear();
@@ -185,6 +188,15 @@ void WorkspaceApp::waitForSolve() {
     frame();
 }
 
+void WorkspaceApp::waitForTrack() {
+    while (tracking_.running()) {
+        frame();
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    frame();  // the last frame's pose into the poses
+    frame();  // ... and the panes on it
+}
+
 void WorkspaceApp::save() {
     try {
         const auto files = model_->save(state_.savePath, state_.poses);
@@ -233,6 +245,7 @@ void WorkspaceApp::drawScene() {}
 void WorkspaceApp::frame() {
     backend_.newFrame();
     pollSolver();
+    if (state_.tracking) tracking_.poll(*model_, state_);
     ImGui_ImplOpenGL3_NewFrame();
     ImGui::NewFrame();
     state_.interacting = false;
@@ -248,6 +261,7 @@ void WorkspaceApp::frame() {
 
     applyControls();
     processRequests();
+    if (state_.tracking) tracking_.process(model_, state_);
     syncControls();
     try {
         updateImages();
@@ -263,6 +277,8 @@ void WorkspaceApp::frame() {
     glClear(GL_COLOR_BUFFER_BIT);
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
     backend_.present();
+    // A Track run or playing needs no more than the idle frames (10 a second): the tracker keeps
+    // the cores.
     backend_.setIdle(!state_.interacting && !state_.solve.running && !ImGui::IsMouseDown(ImGuiMouseButton_Left));
     ++state_.frameCounter;
 }

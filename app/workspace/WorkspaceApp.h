@@ -12,6 +12,7 @@
 #include "workspace/WorkspaceModel.h"
 #include "workspace/WorkspaceSolver.h"
 #include "workspace/WorkspaceState.h"
+#include "workspace/WorkspaceTracking.h"
 #include "workspace/WorkspaceUi.h"
 
 namespace fm::render {
@@ -43,10 +44,13 @@ class WorkspaceApp : public ScriptableApp {
     const WorkspaceImages& images() const { return images_; }
     const WorkspaceUi& ui() const { return ui_; }
     const WorkspaceSolver& solver() const { return solver_; }
+    const WorkspaceTracking& tracking() const { return tracking_; }
     // The pose of `object` in the current frame (the controls' result).
     const std::optional<RigidTransform>& pose(int object) const;
     // Draws frames until a running Solve has ended and its result is shown (tests, headless).
     void waitForSolve();
+    // Draws frames until a running Track run has ended and its last frame is shown.
+    void waitForTrack();
 
   private:
     void goToFrame(int frame);
@@ -68,7 +72,8 @@ class WorkspaceApp : public ScriptableApp {
     std::unique_ptr<render::SceneRenderer> sceneRenderer_;
     int autoWindowFrame_ = -1;
     std::uint64_t solveVersion_ = 0;
-    // Last: joined first (its worker holds the model).
+    // Last: joined first (their workers hold the model).
+    WorkspaceTracking tracking_;
     WorkspaceSolver solver_;
 };
 

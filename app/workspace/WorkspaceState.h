@@ -10,6 +10,7 @@
 
 #include "scene/RigidTransform.h"
 #include "state/AppState.h"
+#include "workspace/TrackState.h"
 
 namespace fm::app {
 
@@ -105,6 +106,9 @@ struct WorkspaceState {
     bool interacting = false;
     std::uint64_t frameCounter = 0;
     WorkspaceRequests requests;
+    // The trial controls (play, keyframes, Track forward / back, the pose plot): trials only.
+    bool tracking = false;
+    TrackState track;
 };
 
 }  // namespace fm::app

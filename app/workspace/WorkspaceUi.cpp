@@ -29,10 +29,13 @@ std::string idOf(const std::string& prefix, const std::string& name) {
 
 }  // namespace
 
-WorkspaceLayout computeWorkspaceLayout(glm::vec2 display, int cameras) {
-    const float w = std::max(display.x, 300.0f), h = std::max(display.y, 200.0f);
+WorkspaceLayout computeWorkspaceLayout(glm::vec2 display, int cameras, bool timeline) {
+    const float w = std::max(display.x, 300.0f);
+    // A trial's timeline takes a strip at the bottom; the rest is laid out as without it.
+    const float strip = timeline ? std::max(140.0f, std::round(display.y * 0.22f)) : 0.0f;
+    const float h = std::max(display.y - strip, 200.0f);
     const float column = w / 3.0f;
-    const float top = std::min(h * 0.6f, (w - column) / std::max(1, cameras) + 60.0f);
+    const float top = std::min(h * (timeline ? 0.62f : 0.6f), (w - column) / std::max(1, cameras) + 60.0f);
     WorkspaceLayout l;
     const float cameraWidth = (w - column) / std::max(1, cameras);
     for (int c = 0; c < cameras; ++c) l.cameras.push_back({{c * cameraWidth, 0.0f}, {cameraWidth, top}});
@@ -40,6 +43,7 @@ WorkspaceLayout computeWorkspaceLayout(glm::vec2 display, int cameras) {
     l.objects = {{0.0f, top}, {column, h - top}};
     l.pose = {{column, top}, {column, h - top}};
     l.solve = {{2.0f * column, top}, {w - 2.0f * column, h - top}};
+    if (timeline) l.track = {{0.0f, h}, {w, strip}};
     return l;
 }
 
@@ -80,7 +84,7 @@ void WorkspaceUi::drawTooltip() {
 void WorkspaceUi::draw(WorkspaceState& state, const WorkspaceTextures& textures) {
     const ImVec2 display = ImGui::GetIO().DisplaySize;
     const WorkspaceLayout layout =
-        computeWorkspaceLayout({display.x, display.y}, static_cast<int>(state.cameraNames.size()));
+        computeWorkspaceLayout({display.x, display.y}, static_cast<int>(state.cameraNames.size()), state.tracking);
     state.readout.valid = false;
     for (std::size_t c = 0; c < layout.cameras.size(); ++c)
         cameraPane(state, textures, static_cast<int>(c), layout.cameras[c]);
@@ -88,6 +92,7 @@ void WorkspaceUi::draw(WorkspaceState& state, const WorkspaceTextures& textures)
     objectsPane(state, layout.objects);
     posePane(state, layout.pose);
     solvePane(state, layout.solve);
+    if (state.tracking) trackPane(state, layout.track);
     keyboard(state);
     drawTooltip();
 }

@@ -4,6 +4,8 @@
 //   top row:    one pane per camera (the prepared radiograph with the model over or beside it)
 //               | the 3D view
 //   bottom row: Objects and frames | Pose (six controls) | Solve and Save
+//   a trial's timeline strip below: the Track pane (TrackPanel.cpp: play, keyframes, Track
+//               forward / back, the pose plot)
 #include <map>
 #include <optional>
 #include <string>
@@ -27,8 +29,9 @@ struct WorkspaceTextures {
 struct WorkspaceLayout {
     std::vector<Pane> cameras;
     Pane scene3d, objects, pose, solve;
+    Pane track;  // empty without the timeline
 };
-WorkspaceLayout computeWorkspaceLayout(glm::vec2 display, int cameras);
+WorkspaceLayout computeWorkspaceLayout(glm::vec2 display, int cameras, bool timeline = false);
 
 class WorkspaceUi {
   public:
@@ -43,6 +46,8 @@ class WorkspaceUi {
     void objectsPane(WorkspaceState& state, const Pane& pane);
     void posePane(WorkspaceState& state, const Pane& pane);
     void solvePane(WorkspaceState& state, const Pane& pane);
+    void trackPane(WorkspaceState& state, const Pane& pane);  // TrackPanel.cpp
+    void posePlot(WorkspaceState& state);                     // ... its six curves
     void keyboard(WorkspaceState& state);
     void record(const std::string& id);
     void tooltip(const std::string& text);
