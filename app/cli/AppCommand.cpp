@@ -18,6 +18,7 @@ namespace {
 
 struct AppArgs {
     std::string volume = fm::kDefaultVolumeSpec;
+    std::string labels, labelTable;
     int frames = 0;
     bool requireWindow = false;
     std::string fallbackOut = "fluoromatch-screenshot.png";
@@ -69,6 +70,8 @@ void runApp(const AppArgs& args) {
                     error.c_str());
         fm::app::HeadlessOptions headless;
         headless.app.volumeSpec = args.volume;
+        headless.app.labelsSpec = args.labels;
+        headless.app.labelTable = args.labelTable;
         headless.app.showTimings = false;  // reproducible image
         fm::app::writeHeadlessScreenshot(headless, args.fallbackOut);
         return;
@@ -76,6 +79,8 @@ void runApp(const AppArgs& args) {
     std::printf("window: %s\n", backend->describe().c_str());
     fm::app::AppOptions options;
     options.volumeSpec = args.volume;
+    options.labelsSpec = args.labels;
+    options.labelTable = args.labelTable;
     options.seed =
         static_cast<std::uint64_t>(std::chrono::system_clock::now().time_since_epoch().count());
     fm::app::App app(*backend, options);
@@ -99,6 +104,13 @@ FM_REGISTER_COMMAND("app", 1, [](CLI::App& cli) {
     cmd->add_option("--volume", args->volume,
                     "CT file, DICOM folder or phantom:NAME to open at start")
         ->capture_default_str();
+    cmd->add_option("--labels", args->labels,
+                    "label map of the CT (any volume file, on its grid or resampled by nearest "
+                    "neighbour), phantom:knee or components[:HU]: its bones in the Bones tab");
+    cmd->add_option("--label-table", args->labelTable,
+                    "names of the labels to show as bones: JSON {\"name\": label} or CSV lines "
+                    "label,name")
+        ->needs(cmd->get_option("--labels"));
     cmd->add_option("--frames", args->frames,
                     "exit after N frames (smoke tests); 0 = run until "
                     "the window is closed")

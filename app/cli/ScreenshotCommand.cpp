@@ -20,6 +20,7 @@ struct ScreenshotArgs {
     std::string size = "1280x800";
     std::string volume = fm::kDefaultVolumeSpec;
     std::string pose, referencePose, view, compare = "difference";
+    std::string labels, labelTable;
     std::uint64_t seed = 1;
     bool match = false, help = false, timings = false;
     int threads = 0;
@@ -79,6 +80,8 @@ void runScreenshot(const ScreenshotArgs& args) {
     fm::app::HeadlessOptions options;
     options.size = parseSize(args.size);
     options.app.volumeSpec = args.volume;
+    options.app.labelsSpec = args.labels;
+    options.app.labelTable = args.labelTable;
     options.app.seed = args.seed;
     options.app.drrThreads = args.threads;
     if (!args.pose.empty()) options.app.userPose = fm::parsePose(args.pose);
@@ -118,6 +121,11 @@ FM_REGISTER_COMMAND("screenshot", 2, [](CLI::App& cli) {
     cmd->add_option("--size", a->size, "WIDTHxHEIGHT in pixels")->capture_default_str();
     cmd->add_option("--volume", a->volume, "CT file, DICOM folder or phantom:NAME")
         ->capture_default_str();
+    cmd->add_option("--labels", a->labels,
+                    "label map of the CT (or phantom:knee, components[:HU]): its bones in the "
+                    "Bones tab");
+    cmd->add_option("--label-table", a->labelTable, "names of the labels to show as bones")
+        ->needs(cmd->get_option("--labels"));
     cmd->add_option("--pose", a->pose, "your pose x,y,z,az,el,rot (mm, deg); default centred");
     cmd->add_option("--reference-pose", a->referencePose,
                     "the hidden reference pose x,y,z,az,el,rot; default: picked by --seed");

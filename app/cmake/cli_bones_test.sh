@@ -5,7 +5,9 @@
 #  2. info lists the labels with names, and the table's names the map lacks as "missing";
 #  3. bad input: an unknown bone name, an empty label, a label map of another scan, --bone
 #     without --labels: exit 1 with a message naming the problem, nothing written;
-#  4. the knee phantom's own labels and connected components: per-bone DRR and meshes.
+#  4. the knee phantom's own labels and connected components: per-bone DRR and meshes;
+#  5. the app's --labels (headless screenshot): bones in the app, or exit 1 naming the
+#     table's missing label, nothing written.
 set -uo pipefail
 FM=$1
 OUT=$(mktemp -d)
@@ -90,4 +92,15 @@ grep -q "1 components" "$OUT/mesh.log" || fail "the patella's mesh is not one pi
 "$FM" mesh "${KNEE[@]}" --bone femur --mask --out "$OUT/femur.ply" > /dev/null || fail "mesh --mask exited $?"
 msg=$("$FM" info phantom:knee,size=64x64x70 --labels components 2>&1) || fail "info --labels components exited $?"
 [ "$(grep -c 'component [0-9]' <<<"$msg")" -ge 4 ] || fail "components: fewer than 4 bones: $msg"
+"$FM" screenshot --volume phantom:knee,size=64x64x70 --labels components --size 640x400 \
+    --out "$OUT/app.png" > /dev/null || fail "screenshot --labels components exited $?"
+[ -s "$OUT/app.png" ] || fail "screenshot --labels wrote nothing"
+printf '{"femur": 1, "not_here": 200}' > "$OUT/knee_table.json"
+msg=$("$FM" screenshot --volume phantom:knee,size=64x64x70 --labels phantom:knee,size=64x64x70 \
+    --label-table "$OUT/knee_table.json" --size 640x400 --out "$OUT/bad.png" 2>&1)
+[ $? -eq 1 ] || fail "screenshot --label-table naming a missing label was accepted"
+grep -q "not_here (200)" <<<"$msg" || fail "missing label: unclear message: $msg"
+[ -e "$OUT/bad.png" ] && fail "a screenshot was written despite bad labels"
+msg=$("$FM" app --label-table "$OUT/knee_table.json" --frames 1 2>&1)
+[ $? -eq 2 ] || fail "app --label-table without --labels was accepted: $msg"
 echo PASS

@@ -52,15 +52,21 @@ BoneSceneOptions boneSceneOptions(const DrrValueOptions& values) {
     return options;
 }
 
-// One bone per selection: its own volume, surface, targets; pivots at their centroids.
+}  // namespace
+
 std::shared_ptr<SceneBones> bonesFromLabels(const Volume& ct, std::shared_ptr<const Volume> labels,
                                             const std::vector<BoneSelection>& selections,
-                                            const DrrValueOptions& values, double iso) {
+                                            const DrrValueOptions& values, double iso,
+                                            const BonesProgress& progress) {
     auto out = std::make_shared<SceneBones>();
     const BoneSceneOptions options = boneSceneOptions(values);
+    if (progress) progress("preparing the bones' DRR volumes", 0.1f);
     out->scene = makeBoneScene(ct, *labels, selections, options);
     out->selections = selections;
     for (const BoneSelection& b : selections) {
+        if (progress)
+            progress("meshing " + b.name,
+                     0.5f + 0.5f * float(out->bones.size()) / float(selections.size()));
         SceneBone bone;
         bone.name = b.name;
         auto volume = std::make_shared<Volume>(boneVolume(ct, *labels, b, options.volume));
@@ -77,10 +83,9 @@ std::shared_ptr<SceneBones> bonesFromLabels(const Volume& ct, std::shared_ptr<co
         out->bones.push_back(std::move(bone));
     }
     out->labels = std::move(labels);
+    out->iso = iso;
     return out;
 }
-
-}  // namespace
 
 std::shared_ptr<const SceneBones> buildSceneBones(const std::string& spec, const Volume& ct,
                                                   const DrrValueOptions& values, double iso) {

@@ -5,6 +5,7 @@
 // user does with them (shown, moved) is plain data in AppState::bones.
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -37,7 +38,19 @@ struct SceneBones {
     std::optional<KneeJoint> knee;
     int femur = -1, tibia = -1;  // indices into bones (knee)
     bool grown = false;          // made by region growing from clicks (more may be added)
+    double iso = 0.0;            // the level of the bones' surfaces
 };
+
+// Progress of building bones: stage name and fraction 0..1.
+using BonesProgress = std::function<void(const std::string& stage, float fraction)>;
+
+// One bone per selection of `labels` (on `ct`'s grid): its own DRR volume (the CT cropped, air
+// around), surface at `iso`, mTRE targets, pivot at its centroid; the rest of the CT as the
+// object "rest". Throws fm::Error for an empty bone or two bones sharing a label.
+std::shared_ptr<SceneBones> bonesFromLabels(const Volume& ct, std::shared_ptr<const Volume> labels,
+                                            const std::vector<BoneSelection>& selections,
+                                            const DrrValueOptions& values, double iso,
+                                            const BonesProgress& progress = {});
 
 // The articulated knee of the phantom named `spec` ("phantom:knee[,options]"), or null for any
 // other volume. `ct` is that phantom; `iso` the surface level.

@@ -173,6 +173,9 @@ struct Requests {
     bool newFlex = false;    // start the flex game, or draw another hidden flexion
     bool checkFlex = false;  // judge the tibia's motion against the hidden one
     bool endFlex = false;
+    // Bones from a label map (path, table: may be empty), or the CT's connected components.
+    std::optional<std::array<std::string, 2>> loadLabels;
+    bool components = false;
     // A click on your DRR while growing: column, row and the image's width and height.
     std::optional<std::array<int, 4>> growAtPixel;
 };
@@ -218,6 +221,7 @@ struct BonesState {
     bool restVisible = true;     // everything that is not one of the bones (soft tissue)
     int sliderTarget = -1;       // -1: the camera (the 2011 parameters); else a bone of `list`
     bool isKnee = false;         // femur and tibia with anatomical frames: joint angles
+    bool canGrow = true;         // no bones yet, or grown ones (not from labels or the knee)
     bool anglesValid = false;
     // The user's knee, live (kneeAngleArray order: medial shift, anterior drawer, distraction
     // mm; flexion, varus, internal rotation deg).
@@ -250,6 +254,18 @@ struct DrrThreshold {
     float level = 300.0f;
     bool valuesInHu = true;  // the volume's values are HU (else "value": stored units)
     double prepareMs = 0.0;  // the last preparation of the thresholded DRR volume
+};
+
+// Bones from a label map or the CT's connected components (the Bones tab, or --labels on the
+// command line), built on a worker; the scene stays as it was until they are ready.
+struct LabelsLoad {
+    std::string pathField, tableField;  // what the user typed (label map, label table)
+    bool loading = false;
+    std::string what, stage;  // what is being built, and its stage
+    float progress = 0.0f;
+    double elapsedSeconds = 0.0;
+    std::string loaded;  // where the bones shown come from ("" : none loaded)
+    std::string error;   // why the last one failed (nothing changed)
 };
 
 struct AppState {
@@ -288,6 +304,7 @@ struct AppState {
     Timings timings;
     SolveStatus solve;
     BonesState bones;
+    LabelsLoad labels;
 
     bool interacting = false;         // a parameter slider is being dragged: coarse preview
     bool coarseWhileDragging = true;  // off: exact DRRs even while dragging (for measuring)

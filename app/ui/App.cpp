@@ -54,6 +54,8 @@ App::App(RenderBackend& backend, AppOptions options)
     state_.toleranceAngleDeg = tolerances.angleDeg;
     state_.volumePathField = options_.volumeSpec;
     state_.requests.loadVolume = options_.volumeSpec;
+    state_.labels.pathField = options_.labelsSpec;
+    state_.labels.tableField = options_.labelTable;
 }
 
 App::~App() {
@@ -71,6 +73,9 @@ void App::waitForLoad() {
     processRequests();  // a load requested but not yet started
     if (auto result = loader_.wait()) installLoadResult(std::move(*result));
     state_.load.loading = false;
+    processRequests();  // the command line's labels, once their CT is there
+    if (auto result = bonesLoader_.wait()) installLabelledBones(std::move(*result));
+    pollLabels();
 }
 
 void App::installLoadResult(SceneLoader::Result result) {
@@ -98,6 +103,11 @@ void App::installLoadResult(SceneLoader::Result result) {
     state_.bone.level = static_cast<float>(scene_->isoValue);
     showBone(scene_->mesh, scene_->isoValue);
     installBones();
+    state_.labels.loaded.clear();
+    state_.labels.error.clear();
+    // The command line's label map is for the first CT.
+    if (firstScene_ && !options_.labelsSpec.empty())
+        state_.requests.loadLabels = {options_.labelsSpec, options_.labelTable};
     state_.timings.meshMs = scene_->meshSeconds * 1000.0;
     for (int a = 0; a < 3; ++a)
         state_.userPose.offset[a] = std::clamp(
@@ -374,6 +384,8 @@ void App::processRequests() {
     if (requests.newFlex) newFlex();
     if (requests.checkFlex) checkFlex();
     if (requests.growAtPixel) growAt(*requests.growAtPixel);
+    if (requests.loadLabels) startLabels((*requests.loadLabels)[0], (*requests.loadLabels)[1]);
+    if (requests.components) startComponents();
     refreshMatchTexts();
 }
 
@@ -495,6 +507,7 @@ void App::frame() {
         state_.requests.loadVolume = path;
     }
     if (auto result = loader_.poll()) installLoadResult(std::move(*result));
+    pollLabels();
     const SceneLoader::Progress progress = loader_.progress();
     state_.load.loading = progress.busy;
     state_.load.requestedSpec = progress.spec;
@@ -567,7 +580,8 @@ void App::frame() {
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
     backend_.present();
     // Nothing moving: the window may sleep until the next event instead of redrawing.
-    backend_.setIdle(!state_.load.loading && !fast && !state_.interacting && !state_.solve.running);
+    backend_.setIdle(!state_.load.loading && !state_.labels.loading && !fast &&
+                     !state_.interacting && !state_.solve.running);
     ++state_.frame;
     state_.timings.frameMs = msSince(start);
 }

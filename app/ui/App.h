@@ -13,6 +13,7 @@
 #include "render/ImageDisplay.h"
 #include "render/Screenshot.h"
 #include "render/SurfaceItem.h"
+#include "scene/BonesLoader.h"
 #include "scene/DrrCache.h"
 #include "scene/ObjectPoseParameterization.h"
 #include "scene/SceneLoader.h"
@@ -37,6 +38,8 @@ struct AppOptions {
     std::uint64_t seed = 1;   // reference choice; the window passes the clock
     int drrThreads = 0;       // 0 = all cores
     bool showTimings = true;  // golden images turn them off (they vary)
+    // Bones of the first scene from this label map (and table), built once it is loaded.
+    std::string labelsSpec, labelTable;
 };
 
 class App : public ScriptableApp {
@@ -98,6 +101,12 @@ class App : public ScriptableApp {
     void newFlex();
     void checkFlex();
     void growAt(const std::array<int, 4>& pixel);  // region growing from a clicked pixel
+    // AppLabels.cpp: bones from a label map or components, built on bonesLoader_.
+    void startLabels(const std::string& labels, const std::string& table);
+    void startComponents();
+    void pollLabels();
+    void installLabelledBones(BonesLoader::Result result);
+    void replaceBones(std::shared_ptr<const SceneBones> bones);  // a new scene with them
     // A bone game's verdict on `motion` of `bone` (the knee's tibia: on the joint angles; any
     // other: its motion numbers against the game's truth). Throws at the knee's gimbal lock.
     MatchVerdict judgeBoneMotion(int bone, const BoneMotion& motion) const;
@@ -155,6 +164,7 @@ class App : public ScriptableApp {
         bool operator==(const SceneKey&) const = default;
     } sceneKey_;
     int sceneDraws_ = 0;
+    BonesLoader bonesLoader_;  // joined before the scenes it reads go
     // Last: destroyed first, so its worker (which holds the scene) is joined before the rest.
     Solver solver_;
     std::uint64_t solveVersion_ = 0;

@@ -33,8 +33,9 @@ void App::installBones() {
     if (!scene_ || !scene_->bones) return;
     state_.bones.list = boneViews(*scene_->bones);
     state_.bones.isKnee = scene_->bones->knee.has_value();
+    state_.bones.canGrow = scene_->bones->grown;
     for (const SceneBone& b : scene_->bones->bones) boneSurfaces_.push_back(b.mesh);
-    showBone(nullptr, scene_->isoValue);  // per-bone surfaces instead of the CT's one
+    showBone(nullptr, scene_->bones->iso);  // per-bone surfaces instead of the CT's one
 }
 
 ObjectStates App::userObjects() const {

@@ -40,7 +40,12 @@ void Ui::kneeAnglesLine(const AppState& state) {
 
 void Ui::bonesTab(AppState& state) {
     BonesState& bones = state.bones;
-    if (!bones.isKnee) {
+    // Where bones come from: first while there are none, else after the list and the game.
+    if (bones.list.empty()) {
+        labelsSection(state);
+        ImGui::Separator();
+    }
+    if (bones.canGrow) {
         // Bones of a CT without labels: grown from a click, one at a time.
         ImGui::Checkbox("Grow a bone: click it in your DRR", &bones.growArmed);
         record("checkbox:grow");
@@ -52,8 +57,9 @@ void Ui::bonesTab(AppState& state) {
         if (!bones.growMessage.empty()) dimWrapped("%s", bones.growMessage.c_str());
     }
     if (bones.list.empty()) {
-        dimWrapped("This CT is one object until you grow a bone. The knee phantom (Knee) has "
-                   "its femur, tibia and patella as bones of their own.");
+        dimWrapped("This CT is one object until you open its label map, press Components or "
+                   "grow a bone. The knee phantom (Knee) has its femur, tibia and patella as "
+                   "bones of their own.");
         return;
     }
     int& target = bones.sliderTarget;
@@ -103,6 +109,8 @@ void Ui::bonesTab(AppState& state) {
     }
     kneeAnglesLine(state);
     boneGame(state);
+    ImGui::Separator();
+    labelsSection(state);
 }
 
 void Ui::boneGame(AppState& state) {

@@ -20,6 +20,9 @@ render::RgbaImage renderHeadless(const HeadlessOptions& options,
     if (!app.scene())
         throw Error(app.state().load.error.empty() ? "no volume loaded" : app.state().load.error);
     checkGivenPoses(options.app, app.state().translationRangeMm);
+    // The labels asked for must give bones: a picture without them would hide the failure.
+    if (!options.app.labelsSpec.empty() && !app.state().labels.error.empty())
+        throw Error(app.state().labels.error);
     app.state().display.compare = options.compare;
     app.state().showHelp = options.showHelp;
     if (options.pressMatch) app.state().requests.match = true;

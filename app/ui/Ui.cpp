@@ -267,10 +267,7 @@ void Ui::parameterPane(AppState& state, const Pane& pane) {
 
     const LoadStatus& load = state.load;
     if (load.loading) {
-        char overlay[160];
-        std::snprintf(overlay, sizeof(overlay), "%s (%.1f s)", load.stage.c_str(),
-                      load.elapsedSeconds);
-        ImGui::ProgressBar(load.progress, ImVec2(-1.0f, 0.0f), overlay);
+        stageProgressBar(load.progress, load.stage, load.elapsedSeconds);
         record("progress:load");
         elidedLine("text:loading", kDim, "Loading " + load.requestedSpec + " ...");
     } else {

@@ -63,7 +63,8 @@ class Ui {
     void solveSection(AppState& state);  // SolvePanel.cpp
     void solveTarget(AppState& state);   // SolvePanel.cpp: camera or a bone, biplane
     void bonesTab(AppState& state);      // BonesPanel.cpp: the bone list and ...
-    void boneGame(AppState& state);      // ... the bone game (the knee's flex game, the move game)
+    void boneGame(AppState& state);
+    void labelsSection(AppState& state);  // LabelsPanel.cpp: label map, table, components      // ... the bone game (the knee's flex game, the move game)
     void kneeAnglesLine(const AppState& state);  // BonesPanel.cpp: Grood-Suntay, live: ... and the computer's
     void helpWindow(AppState& state);    // HelpWindow.cpp
     void modeSwitch(AppState& state);    // ModeSwitch.cpp: X-ray / MRI slice

@@ -36,6 +36,12 @@ double& sliderValue(AppState& state, int parameter) {
     return poseValue(state.userPose, parameter);
 }
 
+void stageProgressBar(float fraction, const std::string& stage, double elapsedSeconds) {
+    char overlay[200];
+    std::snprintf(overlay, sizeof(overlay), "%s (%.1f s)", stage.c_str(), elapsedSeconds);
+    ImGui::ProgressBar(fraction, ImVec2(-1.0f, 0.0f), overlay);
+}
+
 void difficultyCombo(const char* id, Difficulty& difficulty) {
     static const char* kDifficulties[] = {"easy", "medium", "hard"};
     int index = static_cast<int>(difficulty);

@@ -68,6 +68,8 @@ void coloredWrapped(const ImVec4& color, const std::string& text);
 // an error's cause stay). True when it was cut: the caller shows the whole text in a tooltip
 // (Ui::elidedLine).
 bool elidedText(const ImVec4& color, const std::string& text);
+// A full-width progress bar of a background job: "stage (1.2 s)" over it.
+void stageProgressBar(float fraction, const std::string& stage, double elapsedSeconds);
 // "x offset" -> "x-offset" (widget ids for tests).
 std::string idName(const char* name);
 
