@@ -243,7 +243,73 @@ Bytes inflateFrom(InputFeed& feed, std::size_t maxOutput, const std::string& wha
     return out;
 }
 
+// inflateFrom's loop with a fixed chunk as output: bytes [skip, skip + length) go to consume.
+std::size_t inflateStreamed(InputFeed& feed, std::size_t skip, std::size_t length,
+                            const std::function<void(const std::uint8_t*, std::size_t)>& consume,
+                            const std::string& what) {
+    InflateStream s;
+    if (inflateInit2(&s.z, 15 + 32) != Z_OK) throw Error(what + ": cannot start decompression");
+    s.open = true;
+    const std::size_t maxOutput = skip + length;
+    std::size_t produced = 0, discarded = 0;
+    Bytes chunk(std::size_t(1) << 20);
+    bool ended = false;
+    const auto corrupt = [&](int rc) {
+        const std::string detail = s.z.msg ? s.z.msg : "error " + std::to_string(rc);
+        throw Error(what + ": corrupt compressed data (" + detail + ")");
+    };
+    while (true) {
+        const bool full = produced == maxOutput;
+        if (full && discarded > trailingAllowance(maxOutput))
+            throw Error(what + ": the compressed stream holds more than " +
+                        std::to_string(maxOutput + discarded) + " bytes, far beyond the " +
+                        std::to_string(maxOutput) + " the header promises");
+        if (!feed.refill(s.z)) break;
+        // Never past the skip boundary or the end of the wanted bytes within one call.
+        const std::size_t limit = full ? chunk.size()
+                                  : produced < skip ? std::min(chunk.size(), skip - produced)
+                                                    : std::min(chunk.size(), maxOutput - produced);
+        s.z.next_out = chunk.data();
+        s.z.avail_out = static_cast<uInt>(limit);
+        const int rc = inflate(&s.z, Z_NO_FLUSH);
+        const std::size_t got = limit - s.z.avail_out;
+        if (full) {
+            discarded += got;
+        } else {
+            if (produced >= skip && got > 0) consume(chunk.data(), got);
+            produced += got;
+        }
+        if (rc == Z_STREAM_END) {
+            ended = true;
+            if (!feed.refill(s.z)) break;
+            if (s.z.avail_in >= 1 && s.z.next_in[0] == 0x1f) {
+                if (inflateReset(&s.z) != Z_OK) corrupt(rc);
+                ended = false;
+                continue;
+            }
+            break;
+        }
+        if (rc == Z_BUF_ERROR) continue;
+        if (rc != Z_OK) corrupt(rc);
+    }
+    if (!ended && produced == maxOutput)
+        throw Error(what +
+                    ": the compressed stream is truncated: it ends before its checksum "
+                    "(the data cannot be verified)");
+    return produced;
+}
+
 }  // namespace
+
+std::size_t inflateFileStreamed(
+    const fs::path& path, std::size_t skip, std::size_t length,
+    const std::function<void(const std::uint8_t* data, std::size_t size)>& consume) {
+    fileSize(path);  // exists and is a regular file
+    std::ifstream in = openForReading(path);
+    InputFeed feed;
+    feed.file = &in;
+    return inflateStreamed(feed, skip, length, consume, quoted(path));
+}
 
 Bytes inflateFile(const fs::path& path, std::uintmax_t offset, std::size_t maxOutput,
                   InflateEnd end) {

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -54,6 +55,14 @@ enum class InflateEnd { Verified, PrefixOnly };
 // corrupt compressed data.
 Bytes inflateFile(const std::filesystem::path& path, std::uintmax_t offset, std::size_t maxOutput,
                   InflateEnd end = InflateEnd::Verified);
+// Inflates the stream from the start of the file like inflateFile (Verified: to the stream's
+// end, with the same checks and the same trailing allowance) but keeps no output: bytes
+// [skip, skip + length) are handed to `consume` in order, in pieces. Returns how many bytes the
+// stream produced, counted up to skip + length (fewer when it ends early: the caller checks). For readers that convert the
+// samples as they arrive instead of holding all the raw bytes next to the volume.
+std::size_t inflateFileStreamed(
+    const std::filesystem::path& path, std::size_t skip, std::size_t length,
+    const std::function<void(const std::uint8_t* data, std::size_t size)>& consume);
 // The same on a buffer in memory; `what` names the source in messages.
 Bytes inflateBuffer(const std::uint8_t* data, std::size_t size, std::size_t maxOutput,
                     const std::string& what, InflateEnd end = InflateEnd::Verified);

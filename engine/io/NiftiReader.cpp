@@ -41,6 +41,62 @@ std::uint32_t byteSwap32(std::uint32_t v) {
     return (v >> 24) | ((v >> 8) & 0xff00u) | ((v << 8) & 0xff0000u) | (v << 24);
 }
 
+// Deflate turns at most 258 bytes into about two bits (a ratio of 1032); a file promising more
+// than that (plus some slack) cannot hold its data.
+bool fitsCompressed(const fs::path& path, std::size_t promised) {
+    return double(promised) <= 1032.0 * double(fileSize(path)) + double(1 << 20);
+}
+
+std::string truncatedMessage(const fs::path& dataPath, std::size_t dataBytes, ScalarType type,
+                             std::size_t dataOffset, std::size_t decompressed) {
+    std::ostringstream msg;
+    msg << quoted(dataPath) << " is truncated: the header promises " << dataBytes << " bytes of "
+        << toString(type) << " data after byte " << dataOffset
+        << " but the decompressed file has only " << decompressed << " bytes";
+    return msg.str();
+}
+
+// A gzip NIfTI's samples converted to float as they are inflated: the raw bytes are never held
+// next to the volume (a 512x512x300 float32 CT peaked at two volume-sized arrays before).
+Volume inflateVolume(const fs::path& dataPath, std::size_t dataOffset, glm::ivec3 dims,
+                     ScalarType type, bool swapped, double slope, double intercept,
+                     const std::string& what) {
+    Volume v = Volume::allocate(dims);
+    const std::size_t sample = scalarSize(type), dataBytes = rawByteCount(dims, type);
+    std::size_t converted = 0, overflowed = 0, carried = 0;
+    std::uint8_t carry[8];
+    const auto convert = [&](const std::uint8_t* data, std::size_t count) {
+        overflowed += convertToFloat(data, count, type, swapped, v.values.data() + converted,
+                                     slope, intercept);
+        converted += count;
+    };
+    const std::size_t produced = inflateFileStreamed(
+        dataPath, dataOffset, dataBytes, [&](const std::uint8_t* data, std::size_t size) {
+            // A sample split between two pieces is completed from the carry first.
+            while (carried > 0 && size > 0) {
+                carry[carried++] = *data++;
+                --size;
+                if (carried == sample) {
+                    convert(carry, 1);
+                    carried = 0;
+                }
+            }
+            const std::size_t whole = size / sample;
+            convert(data, whole);
+            for (std::size_t b = whole * sample; b < size; ++b) carry[carried++] = data[b];
+        });
+    if (produced < dataOffset + dataBytes)
+        throw Error(truncatedMessage(dataPath, dataBytes, type, dataOffset, produced));
+    if (overflowed > 0) {
+        std::ostringstream msg;
+        msg << what << ": " << overflowed << " of " << v.voxelCount() << " " << toString(type)
+            << " samples fall outside float range once rescaled (slope " << slope
+            << ", intercept " << intercept << "): the header's scaling is absurd";
+        throw Error(msg.str());
+    }
+    return v;
+}
+
 NiftiHeader parseHeader(const Bytes& head, const std::string& what) {
     if (head.size() < 4) throw Error(what + ": file is too short to be NIfTI");
     std::uint32_t sizeofHdr;
@@ -300,23 +356,6 @@ Volume readNifti(const fs::path& path) {
         throw Error(what + ": vox_offset " + std::to_string(offset) + " is not a byte position");
     const auto dataOffset = static_cast<std::size_t>(offset);
 
-    Bytes raw;
-    std::size_t rawOffset = 0;
-    if (fileHasGzipMagic(dataPath)) {
-        const std::size_t total = dataOffset + dataBytes;
-        raw = inflateFile(dataPath, 0, total);  // capped at what the header promised
-        if (raw.size() < total) {
-            std::ostringstream msg;
-            msg << quoted(dataPath) << " is truncated: the header promises " << dataBytes
-                << " bytes of " << toString(type) << " data after byte " << dataOffset
-                << " but the decompressed file has only " << raw.size() << " bytes";
-            throw Error(msg.str());
-        }
-        rawOffset = dataOffset;
-    } else {
-        raw = readFileRange(dataPath, dataOffset, dataBytes);
-    }
-
     // scl_slope 0 or non-finite means "no scaling" (the standard); a finite slope with a
     // non-finite intercept uses intercept 0, as nifti1_io does.
     double slope = 1.0, intercept = 0.0;
@@ -325,7 +364,20 @@ Volume readNifti(const fs::path& path) {
         intercept = std::isfinite(h.sclInter) ? h.sclInter : 0.0;
     }
     // h.swapped: the file's byte order differs from the host's (sizeof_hdr read swapped).
-    Volume v = volumeFromRaw(dims, raw, rawOffset, type, h.swapped, what, slope, intercept);
+    Volume v;
+    const bool gzipped = fileHasGzipMagic(dataPath);
+    if (gzipped && fitsCompressed(dataPath, dataOffset + dataBytes)) {
+        v = inflateVolume(dataPath, dataOffset, dims, type, h.swapped, slope, intercept, what);
+    } else if (gzipped) {
+        // More than deflate can make of this file: inflated as far as it goes (growing with
+        // what arrives), then reported as truncated.
+        const std::size_t total = dataOffset + dataBytes;
+        const Bytes raw = inflateFile(dataPath, 0, total);  // capped at what the header promised
+        throw Error(truncatedMessage(dataPath, dataBytes, type, dataOffset, raw.size()));
+    } else {
+        const Bytes raw = readFileRange(dataPath, dataOffset, dataBytes);
+        v = volumeFromRaw(dims, raw, 0, type, h.swapped, what, slope, intercept);
+    }
 
     // Geometry: sform, qform, or pixdim only. A sheared sform cannot be a Volume; then the
     // qform (always rigid) is the fallback, as ITK does.
