@@ -10,7 +10,7 @@ if [ ! -f "$BUILD_DIR/CMakeCache.txt" ]; then
     cmake -S . -B "$BUILD_DIR" -G Ninja -DCMAKE_BUILD_TYPE=Release
 fi
 cmake --build "$BUILD_DIR" --target fm_test_app -j "$(nproc)"
-FM_UPDATE_GOLDENS=1 "$BUILD_DIR/tests/fm_test_app" --gtest_filter='GoldenUi.*:GoldenSliceUi.*'
+FM_UPDATE_GOLDENS=1 "$BUILD_DIR/tests/fm_test_app" --gtest_filter='GoldenUi.*:GoldenSliceUi.*:GoldenWorkspace.*'
 # Check: the fresh goldens must now pass as they are.
-"$BUILD_DIR/tests/fm_test_app" --gtest_filter='GoldenUi.*:GoldenSliceUi.*' --gtest_brief=1
+"$BUILD_DIR/tests/fm_test_app" --gtest_filter='GoldenUi.*:GoldenSliceUi.*:GoldenWorkspace.*' --gtest_brief=1
 git status --short data/golden 2>/dev/null || true

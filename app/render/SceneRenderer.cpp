@@ -11,12 +11,13 @@
 #include "scene/SliceImages.h"
 
 namespace fm::render {
-namespace {
 
 struct LineVertex {
     glm::vec3 position;
     glm::vec4 color;
 };
+
+namespace {
 
 const glm::vec4 kBoxColor{0.85f, 0.85f, 0.90f, 1.0f};
 const glm::vec4 kAxisColors[3] = {
@@ -341,24 +342,10 @@ void SceneRenderer::draw(const app::LoadedScene* scene, const std::vector<Surfac
             glDisable(GL_BLEND);
         }
         const bool apparatus = view.showApparatus && !slicePlane;
-        if (apparatus) {
-            const float markerRadius = float(radius) * 0.02f;
-            meshShader_.set("uModel", glm::scale(glm::translate(glm::mat4(1.0f), source),
-                                                 glm::vec3(markerRadius)));
-            meshShader_.set("uColor", kSourceColor);
-            meshShader_.set("uAmbient", 0.5f);
-            glBindVertexArray(sphereVao_);
-            glDrawElements(GL_TRIANGLES, sphereIndexCount_, GL_UNSIGNED_INT, nullptr);
-
-            // Film: a quad textured with the user's DRR; texture t = 0 is image row 0.
-            const float uv[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-            std::vector<float> quad;
-            for (int i : {0, 1, 2, 0, 2, 3}) {
-                const glm::vec3 p = toScene(corners[i]);
-                quad.insert(quad.end(), {p.x, p.y, p.z, uv[i][0], uv[i][1]});
-            }
-            drawFilm(quad, viewProjection, filmTexture);
-        }
+        if (apparatus)
+            drawSourceAndFilm(source, {toScene(corners[0]), toScene(corners[1]), toScene(corners[2]),
+                                       toScene(corners[3])},
+                              float(radius) * 0.02f, viewProjection, filmTexture);
 
         std::vector<LineVertex> lines;
         if (view.showBox) {
@@ -380,40 +367,77 @@ void SceneRenderer::draw(const app::LoadedScene* scene, const std::vector<Surfac
                 line(lines, toScene(cut[i]), toScene(cut[(i + 1) % cut.size()]), kSliceFrameColor);
             label(toScene(cut[0]), "slice", kSliceFrameColor);
         }
+        const std::array<glm::vec3, 4> film{toScene(corners[0]), toScene(corners[1]),
+                                            toScene(corners[2]), toScene(corners[3])};
         if (apparatus) {
-            for (int i = 0; i < 4; ++i) {
-                line(lines, source, toScene(corners[i]), kConeColor);
-                line(lines, toScene(corners[i]), toScene(corners[(i + 1) % 4]), kFilmFrameColor);
-            }
-            line(lines, source, toScene(d.center()), glm::vec4(glm::vec3(kConeColor), 0.35f));
+            coneLines(lines, source, film, toScene(d.center()));
             label(source, "source", glm::vec4(kSourceColor, 1.0f));
-            label(toScene(corners[2]), "film", kFilmFrameColor);
+            label(film[2], "film", kFilmFrameColor);
         }
         const std::size_t lineVertexCount = lines.size();
-        if (apparatus)  // translucent cone faces, drawn last without depth writes
-            for (int i = 0; i < 4; ++i) {
-                lines.push_back({source, kConeFaceColor});
-                lines.push_back({toScene(corners[i]), kConeFaceColor});
-                lines.push_back({toScene(corners[(i + 1) % 4]), kConeFaceColor});
-            }
-        lineShader_.use();
-        lineShader_.set("uViewProjection", viewProjection);
-        glBindVertexArray(lineVao_);
-        glBindBuffer(GL_ARRAY_BUFFER, lineVbo_);
-        glBufferData(GL_ARRAY_BUFFER, lines.size() * sizeof(LineVertex), lines.data(),
-                     GL_STREAM_DRAW);
-        glEnable(GL_BLEND);
-        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-        glDrawArrays(GL_LINES, 0, GLsizei(lineVertexCount));
-        glDepthMask(GL_FALSE);
-        glDrawArrays(GL_TRIANGLES, GLsizei(lineVertexCount),
-                     GLsizei(lines.size() - lineVertexCount));
-        glDepthMask(GL_TRUE);
-        glDisable(GL_BLEND);
-        glDisable(GL_DEPTH_TEST);
-        glBindVertexArray(0);
+        if (apparatus) coneFaces(lines, source, film);  // translucent, drawn last
+        drawLines(lines, lineVertexCount, viewProjection);
     }
+    finish(size, multisample);
+}
 
+void SceneRenderer::drawSourceAndFilm(const glm::vec3& source, const std::array<glm::vec3, 4>& film,
+                                      float markerRadius, const glm::mat4& viewProjection,
+                                      GLuint filmTexture) {
+    meshShader_.use();
+    meshShader_.set("uModel",
+                    glm::scale(glm::translate(glm::mat4(1.0f), source), glm::vec3(markerRadius)));
+    meshShader_.set("uColor", kSourceColor);
+    meshShader_.set("uAmbient", 0.5f);
+    glBindVertexArray(sphereVao_);
+    glDrawElements(GL_TRIANGLES, sphereIndexCount_, GL_UNSIGNED_INT, nullptr);
+    // Film: a quad textured with its image; texture t = 0 is image row 0.
+    const float uv[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    std::vector<float> quad;
+    for (int i : {0, 1, 2, 0, 2, 3})
+        quad.insert(quad.end(), {film[i].x, film[i].y, film[i].z, uv[i][0], uv[i][1]});
+    drawFilm(quad, viewProjection, filmTexture);
+}
+
+void SceneRenderer::coneLines(std::vector<LineVertex>& lines, const glm::vec3& source,
+                              const std::array<glm::vec3, 4>& film, const glm::vec3& filmCentre) {
+    for (int i = 0; i < 4; ++i) {
+        line(lines, source, film[i], kConeColor);
+        line(lines, film[i], film[(i + 1) % 4], kFilmFrameColor);
+    }
+    line(lines, source, filmCentre, glm::vec4(glm::vec3(kConeColor), 0.35f));
+}
+
+void SceneRenderer::coneFaces(std::vector<LineVertex>& lines, const glm::vec3& source,
+                              const std::array<glm::vec3, 4>& film) {
+    for (int i = 0; i < 4; ++i) {
+        lines.push_back({source, kConeFaceColor});
+        lines.push_back({film[i], kConeFaceColor});
+        lines.push_back({film[(i + 1) % 4], kConeFaceColor});
+    }
+}
+
+// Lines (the first `lineVertexCount` vertices), then translucent triangles without depth
+// writes.
+void SceneRenderer::drawLines(const std::vector<LineVertex>& lines, std::size_t lineVertexCount,
+                              const glm::mat4& viewProjection) {
+    lineShader_.use();
+    lineShader_.set("uViewProjection", viewProjection);
+    glBindVertexArray(lineVao_);
+    glBindBuffer(GL_ARRAY_BUFFER, lineVbo_);
+    glBufferData(GL_ARRAY_BUFFER, lines.size() * sizeof(LineVertex), lines.data(), GL_STREAM_DRAW);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    glDrawArrays(GL_LINES, 0, GLsizei(lineVertexCount));
+    glDepthMask(GL_FALSE);
+    glDrawArrays(GL_TRIANGLES, GLsizei(lineVertexCount), GLsizei(lines.size() - lineVertexCount));
+    glDepthMask(GL_TRUE);
+    glDisable(GL_BLEND);
+    glDisable(GL_DEPTH_TEST);
+    glBindVertexArray(0);
+}
+
+void SceneRenderer::finish(glm::ivec2 size, bool multisample) {
     if (multisample) {
         glBindFramebuffer(GL_READ_FRAMEBUFFER, msFbo_);
         glBindFramebuffer(GL_DRAW_FRAMEBUFFER, resolveFbo_);
@@ -421,6 +445,68 @@ void SceneRenderer::draw(const app::LoadedScene* scene, const std::vector<Surfac
                           GL_NEAREST);
     }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+void SceneRenderer::drawRig(const std::vector<RigCamera>& cameras,
+                            const std::vector<SurfaceItem>& surfaces, const glm::dvec3& centre,
+                            const app::View3d& view, glm::ivec2 size, bool multisample) {
+    size = glm::max(size, glm::ivec2(16));
+    resize(size);
+    labels_.clear();
+    glBindFramebuffer(GL_FRAMEBUFFER, multisample ? msFbo_ : resolveFbo_);
+    glViewport(0, 0, size.x, size.y);
+    glClearColor(0.11f, 0.12f, 0.14f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    // The rig's frame: the world moved so `centre` is the origin; framed to hold every source
+    // and film.
+    auto toScene = [&](const glm::dvec3& p) { return glm::vec3(p - centre); };
+    double radius = 1.0;
+    for (const RigCamera& c : cameras) {
+        radius = std::max(radius, double(glm::length(toScene(c.source))));
+        for (const auto& f : c.film) radius = std::max(radius, double(glm::length(toScene(f))));
+    }
+    const OrbitCamera camera = orbitCamera(view, radius, float(size.x) / float(size.y));
+    const glm::mat4 viewProjection = camera.projection * camera.view;
+    auto label = [&](glm::vec3 p, const std::string& text, glm::vec4 color) {
+        const glm::vec4 clip = viewProjection * glm::vec4(p, 1.0f);
+        if (clip.w <= 0.0f) return;
+        const glm::vec2 ndc = glm::vec2(clip) / clip.w;
+        labels_.push_back({{(ndc.x * 0.5f + 0.5f) * size.x, (0.5f - ndc.y * 0.5f) * size.y}, text, color});
+    };
+    glEnable(GL_DEPTH_TEST);
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_BLEND);
+    meshShader_.use();
+    meshShader_.set("uViewProjection", viewProjection);
+    meshShader_.set("uCameraPosition", camera.position);
+    meshShader_.set("uAlpha", 1.0f);
+    const glm::dmat4 shift = glm::translate(glm::dmat4(1.0), -centre);
+    for (std::size_t i = 0; view.showBone && i < surfaces.size(); ++i) {
+        const SurfaceItem& item = surfaces[i];
+        if (!item.mesh) continue;
+        const GpuMesh& gpu = uploadMesh(i, *item.mesh, item.generation);
+        meshShader_.set("uModel", glm::mat4(shift * item.worldFromObject));
+        meshShader_.set("uColor", item.color);
+        meshShader_.set("uAmbient", 0.25f);
+        glBindVertexArray(gpu.vao);
+        glDrawElements(GL_TRIANGLES, gpu.indexCount, GL_UNSIGNED_INT, nullptr);
+    }
+    std::vector<LineVertex> lines;
+    std::vector<std::array<glm::vec3, 4>> films;
+    for (const RigCamera& c : cameras) {
+        films.push_back({toScene(c.film[0]), toScene(c.film[1]), toScene(c.film[2]), toScene(c.film[3])});
+        if (!view.showApparatus) continue;
+        drawSourceAndFilm(toScene(c.source), films.back(), float(radius) * 0.02f, viewProjection, c.texture);
+        coneLines(lines, toScene(c.source), films.back(),
+                  0.25f * (films.back()[0] + films.back()[1] + films.back()[2] + films.back()[3]));
+        label(toScene(c.source), c.name, glm::vec4(kSourceColor, 1.0f));
+    }
+    const std::size_t lineVertexCount = lines.size();
+    for (std::size_t i = 0; view.showApparatus && i < cameras.size(); ++i)
+        coneFaces(lines, toScene(cameras[i].source), films[i]);
+    if (!lines.empty()) drawLines(lines, lineVertexCount, viewProjection);
+    glDisable(GL_DEPTH_TEST);
+    finish(size, multisample);
 }
 
 std::vector<std::uint8_t> SceneRenderer::readPixels() const {

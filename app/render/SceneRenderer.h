@@ -3,6 +3,7 @@
 // axes, the X-ray source, the film (textured with the user's DRR) and the ray cone, drawn
 // offscreen in the isocenter frame: the CT sits at its offset, the source and film turn with
 // azimuth, elevation and rotation. The result is a texture the UI shows.
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -23,6 +24,17 @@ struct LoadedScene;
 }
 
 namespace fm::render {
+
+struct LineVertex;
+
+// One camera of the real X-ray workspace's 3D view, in the world frame: its source, its film's
+// four corners (pixel (0, 0)'s outer corner first, then along the row, ...) and the texture on it.
+struct RigCamera {
+    glm::dvec3 source{0.0};
+    std::array<glm::dvec3, 4> film{};
+    GLuint texture = 0;
+    std::string name;
+};
 
 struct SceneLabel {
     glm::vec2 pixel;  // position in the view, pixels from the top-left
@@ -48,6 +60,12 @@ class SceneRenderer {
               const Pose& pose, const app::View3d& view, GLuint filmTexture, glm::ivec2 size,
               bool multisample = true, bool slicePlane = false);
 
+    // The workspace's 3D view: each camera (its source, its film textured with its radiograph,
+    // the ray cone) and the surfaces at their world poses, framed about `centre` (world mm).
+    void drawRig(const std::vector<RigCamera>& cameras, const std::vector<SurfaceItem>& surfaces,
+                 const glm::dvec3& centre, const app::View3d& view, glm::ivec2 size,
+                 bool multisample = true);
+
     GLuint texture() const { return resolveTexture_; }
     // The last drawn view as RGBA, row 0 = top (golden tests of the 3D view alone).
     std::vector<std::uint8_t> readPixels() const;
@@ -59,6 +77,17 @@ class SceneRenderer {
     void resize(glm::ivec2 size);
     void drawFilm(const std::vector<float>& vertices, const glm::mat4& viewProjection,
                   GLuint texture);
+    // Shared by both views: the source marker and the textured film, the cone's lines (and
+    // its translucent faces), drawing a line list, resolving the multisampled target.
+    void drawSourceAndFilm(const glm::vec3& source, const std::array<glm::vec3, 4>& film,
+                           float markerRadius, const glm::mat4& viewProjection, GLuint filmTexture);
+    static void coneLines(std::vector<LineVertex>& lines, const glm::vec3& source,
+                          const std::array<glm::vec3, 4>& film, const glm::vec3& filmCentre);
+    static void coneFaces(std::vector<LineVertex>& lines, const glm::vec3& source,
+                          const std::array<glm::vec3, 4>& film);
+    void drawLines(const std::vector<LineVertex>& lines, std::size_t lineVertexCount,
+                   const glm::mat4& viewProjection);
+    void finish(glm::ivec2 size, bool multisample);
     struct GpuMesh {
         GLuint vao = 0, vbo = 0, ebo = 0;
         GLsizei indexCount = 0;

@@ -23,14 +23,6 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-// Bone level: 300 HU for CTs; for volumes in other units (e.g. the VTK head, bone ~1150 of
-// 0..3926) a level 60% of the way from the median to the 99th percentile.
-double boneIsoValue(const Volume& volume) {
-    if (looksLikeHounsfield(volume)) return 300.0;
-    const VolumeStats s = computeStats(volume, {50, 99});
-    return s.percentiles[0] + 0.6 * (s.percentiles[1] - s.percentiles[0]);
-}
-
 // The level of the foreground surface of an MRI: the mean value (above it: head, not air).
 double foregroundLevel(const Volume& volume) {
     double sum = 0.0;
@@ -39,6 +31,12 @@ double foregroundLevel(const Volume& volume) {
 }
 
 }  // namespace
+
+double boneIsoValue(const Volume& volume) {
+    if (looksLikeHounsfield(volume)) return 300.0;
+    const VolumeStats s = computeStats(volume, {50, 99});
+    return s.percentiles[0] + 0.6 * (s.percentiles[1] - s.percentiles[0]);
+}
 
 std::uint64_t newSceneGeneration() {
     return nextGeneration++;

@@ -56,6 +56,10 @@ std::uint64_t newSceneGeneration();
 // True for HU volumes, and for volumes without units whose 1st percentile is air (<= -900).
 bool looksLikeHounsfield(const Volume& volume);
 
+// The bone surface's level: 300 HU for CTs; for volumes in other units (e.g. the VTK head, bone
+// ~1150 of 0..3926) a level 60% of the way from the median to the 99th percentile.
+double boneIsoValue(const Volume& volume);
+
 // An MRI file: modality MR; or, without a modality, a NIfTI file whose values are not HU
 // (research MRIs come as NIfTI; CTs in NIfTI hold HU, caught first). Phantoms are CTs.
 bool looksLikeMri(const Volume& volume);

@@ -8,6 +8,8 @@
 #include <thread>
 
 #include "core/Error.h"
+#include "mesh/MarchingCubes.h"
+#include "scene/LoadedScene.h"
 #include "platform/Gl.h"
 #include "render/SceneRenderer.h"
 #include "render/Texture.h"
@@ -60,6 +62,7 @@ WorkspaceApp::WorkspaceApp(RenderBackend& backend, std::shared_ptr<WorkspaceMode
     state_.tracking = model_->fromTrial();
     if (state_.tracking) tracking_.init(*model_, state_);
     syncControls();
+    buildSurfaces();
 }
 
 WorkspaceApp::~WorkspaceApp() {
@@ -122,7 +125,7 @@ void WorkspaceApp::processRequests() {
     WorkspaceRequests r = state_.requests;
     state_.requests = {};
     if (r.frame) goToFrame(*r.frame);
-    if (r.resetView) state_.view = View3d::framed();
+    if (r.resetView) state_.view = defaultRigView();
     if (r.stopSolve) solver_.stop();
     if (r.solve) {
         const auto& start = pose(state_.selected);
@@ -230,6 +233,7 @@ void WorkspaceApp::updateImages() {
             radiographTextures_[c]->upload(p.width, p.height, p.radiograph);
             if (!p.model.empty()) modelTextures_[c]->upload(p.width, p.height, p.model);
         }
+        ++imagesVersion_;
         state_.imageMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
         state_.iou.reset();
         const int k = state_.selected;
@@ -240,7 +244,69 @@ void WorkspaceApp::updateImages() {
     }
 }
 
-void WorkspaceApp::drawScene() {}
+void WorkspaceApp::buildSurfaces() {
+    // Meshes as they are; volume bones by their marching-cubes surface at the bone level.
+    const TrialScene& t = model_->trial();
+    for (int k = 0; k < model_->objectCount(); ++k) {
+        const std::string& name = model_->objectName(k);
+        std::shared_ptr<const Mesh> mesh;
+        if (const auto m = t.meshes.find(name); m != t.meshes.end()) {
+            mesh = m->second;
+        } else if (const auto v = t.volumes.find(name); v != t.volumes.end()) {
+            MarchingCubesOptions options;
+            options.isoValue = boneIsoValue(*v->second);
+            try {
+                mesh = std::make_shared<const Mesh>(marchingCubes(*v->second, options));
+            } catch (const Error& e) {
+                state_.warnings.push_back(name + ": no surface for the 3D view: " + e.what());
+            }
+        }
+        surfaces_.push_back(mesh);
+    }
+}
+
+void WorkspaceApp::drawScene() {
+    std::vector<render::SurfaceItem> surfaces;
+    glm::dvec3 centre(0.0);
+    int placed = 0;
+    for (int k = 0; k < model_->objectCount(); ++k) {
+        const auto& p = pose(k);
+        if (!p || !state_.objects[k].visible) continue;
+        glm::dmat4 m(p->rotation);
+        m[3] = glm::dvec4(p->translation, 1.0);
+        const auto c = state_.objects[k].color;
+        surfaces.push_back({surfaces_[k].get(), std::uint64_t(k + 1), m, glm::vec3(c[0], c[1], c[2])});
+        centre += p->applyToPoint(defaultPivot(*model_->scene().objects[k].model));
+        ++placed;
+    }
+    if (placed > 0)
+        centre /= double(placed);
+    else
+        centre = defaultPlacement(model_->scene(), 0).applyToPoint(defaultPivot(*model_->scene().objects[0].model));
+    std::vector<render::RigCamera> cameras;
+    for (int c = 0; c < model_->cameraCount(); ++c) {
+        const ProjectionGeometry& g = model_->scene().cameras[c];
+        const DetectorGeometry& d = g.detector;
+        const double w = d.size.x - 0.5, h = d.size.y - 0.5;
+        // A MayaCam film is a virtual plane metres away (focal length in pixels at 1 mm each):
+        // drawn along its cone at 1.25 times the objects' distance, the same rays, when nearer.
+        const double scale = std::min(1.0, 1.25 * glm::length(centre - g.source) / glm::length(d.center() - g.source));
+        auto onFilm = [&](double col, double row) { return g.source + scale * (d.pixelCenter(col, row) - g.source); };
+        cameras.push_back({g.source,
+                           {onFilm(-0.5, -0.5), onFilm(w, -0.5), onFilm(w, h), onFilm(-0.5, h)},
+                           radiographTextures_[c]->empty() ? 0 : radiographTextures_[c]->id(),
+                           state_.cameraNames[c]});
+    }
+    const bool fast = state_.interacting || ImGui::IsMouseDown(ImGuiMouseButton_Left);
+    SceneKey key{state_.frame, state_.poses[state_.frame], {}, state_.view.azimuthDeg, state_.view.elevationDeg,
+                 state_.view.zoom, state_.view.panX, state_.view.panY, state_.view.showBone,
+                 state_.view.showApparatus, ui_.sceneViewSize(), imagesVersion_, fast};
+    for (const WorkspaceObject& o : state_.objects) key.visible.push_back(o.visible);
+    if (sceneKey_ && *sceneKey_ == key) return;
+    sceneRenderer_->drawRig(cameras, surfaces, centre, state_.view, ui_.sceneViewSize(), !fast);
+    sceneKey_ = key;
+    ++sceneDraws_;
+}
 
 void WorkspaceApp::frame() {
     backend_.newFrame();
@@ -269,6 +335,7 @@ void WorkspaceApp::frame() {
         state_.error = e.what();
     }
     drawScene();
+    ui_.drawSceneLabels(sceneRenderer_->labels());
     ImGui::Render();
     const glm::ivec2 fb = backend_.framebufferSize();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);

@@ -5,6 +5,7 @@
 #include <memory>
 #include <vector>
 
+#include "mesh/Mesh.h"
 #include "platform/RenderBackend.h"
 #include "render/Screenshot.h"
 #include "ui/ScriptableApp.h"
@@ -45,6 +46,8 @@ class WorkspaceApp : public ScriptableApp {
     const WorkspaceUi& ui() const { return ui_; }
     const WorkspaceSolver& solver() const { return solver_; }
     const WorkspaceTracking& tracking() const { return tracking_; }
+    const render::SceneRenderer& sceneRenderer() const { return *sceneRenderer_; }
+    int sceneDraws() const { return sceneDraws_; }  // how often the 3D view was drawn
     // The pose of `object` in the current frame (the controls' result).
     const std::optional<RigidTransform>& pose(int object) const;
     // Draws frames until a running Solve has ended and its result is shown (tests, headless).
@@ -60,6 +63,7 @@ class WorkspaceApp : public ScriptableApp {
     void pollSolver();
     void save();
     void updateImages();
+    void buildSurfaces();
     void drawScene();
 
     RenderBackend& backend_;
@@ -70,6 +74,33 @@ class WorkspaceApp : public ScriptableApp {
     WorkspaceImages images_;
     std::vector<std::unique_ptr<render::Texture>> radiographTextures_, modelTextures_;
     std::unique_ptr<render::SceneRenderer> sceneRenderer_;
+    std::vector<std::shared_ptr<const Mesh>> surfaces_;  // per object, its own frame (null: none)
+    // What the 3D view shows, to redraw it only on change.
+    struct SceneKey {
+        int frame = -1;
+        std::vector<std::optional<RigidTransform>> poses;
+        std::vector<bool> visible;
+        float azimuth = 0, elevation = 0, zoom = 0, panX = 0, panY = 0;
+        bool models = true, cameras = true;
+        glm::ivec2 size{0};
+        std::uint64_t images = 0;
+        bool fast = false;
+        bool operator==(const SceneKey& o) const {
+            auto same = [](const std::optional<RigidTransform>& a, const std::optional<RigidTransform>& b) {
+                return a.has_value() == b.has_value() &&
+                       (!a || (a->rotation == b->rotation && a->translation == b->translation));
+            };
+            if (poses.size() != o.poses.size()) return false;
+            for (std::size_t i = 0; i < poses.size(); ++i)
+                if (!same(poses[i], o.poses[i])) return false;
+            return frame == o.frame && visible == o.visible && azimuth == o.azimuth && elevation == o.elevation &&
+                   zoom == o.zoom && panX == o.panX && panY == o.panY && models == o.models &&
+                   cameras == o.cameras && size == o.size && images == o.images && fast == o.fast;
+        }
+    };
+    std::optional<SceneKey> sceneKey_;
+    std::uint64_t imagesVersion_ = 0;
+    int sceneDraws_ = 0;
     int autoWindowFrame_ = -1;
     std::uint64_t solveVersion_ = 0;
     // Last: joined first (their workers hold the model).

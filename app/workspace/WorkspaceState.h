@@ -25,6 +25,14 @@ enum class PoseFrame {
 // What is drawn over (or beside) each radiograph.
 enum class ModelImage { Outline, Drr };
 
+// The 3D view the workspace opens with (and Reset view gives): about the objects, the cameras'
+// sources at the edge of the view.
+inline View3d defaultRigView() {
+    View3d v;
+    v.zoom = 1.0f;
+    return v;
+}
+
 struct WorkspaceObject {
     std::string name;
     std::string kind;  // "mesh, 12412 triangles", "volume 120 x 80 x 200"
@@ -92,7 +100,7 @@ struct WorkspaceState {
     std::vector<DisplaySettings> display;  // per camera: window/level of the radiograph
     ImageView imageView;                   // shared zoom and pan of the camera panes
     PixelReadout readout;
-    View3d view = View3d::framed();
+    View3d view = defaultRigView();
 
     WorkspaceSolve solve;
     std::string savePath;  // .tra (trial) or .jts (one model) / .tra (several) for one image

@@ -165,6 +165,8 @@ void WorkspaceUi::scenePane(WorkspaceState& state, const Pane& pane, unsigned te
         ImGui::GetWindowDrawList()->AddImage(toImTexture(texture), origin,
                                              ImVec2(origin.x + size.x, origin.y + size.y), ImVec2(0, 1), ImVec2(1, 0));
     sceneViewSize_ = {int(size.x), int(size.y)};
+    sceneOrigin_ = {origin.x, origin.y};
+    sceneDrawList_ = ImGui::GetWindowDrawList();
     if (ImGui::Button("Reset view")) state.requests.resetView = true;
     record("button:reset-view");
     ImGui::SameLine();
@@ -172,6 +174,17 @@ void WorkspaceUi::scenePane(WorkspaceState& state, const Pane& pane, unsigned te
     ImGui::SameLine();
     ImGui::Checkbox("Cameras", &state.view.showApparatus);
     ImGui::End();
+}
+
+void WorkspaceUi::drawSceneLabels(const std::vector<render::SceneLabel>& labels) {
+    if (!sceneDrawList_) return;
+    for (const render::SceneLabel& l : labels) {
+        if (l.pixel.x < 0 || l.pixel.y < 0 || l.pixel.x > sceneViewSize_.x || l.pixel.y > sceneViewSize_.y) continue;
+        sceneDrawList_->AddText(ImVec2(sceneOrigin_.x + l.pixel.x + 4.0f, sceneOrigin_.y + l.pixel.y - 6.0f),
+                                ImGui::ColorConvertFloat4ToU32(ImVec4(l.color.r, l.color.g, l.color.b, l.color.a)),
+                                l.text.c_str());
+    }
+    sceneDrawList_ = nullptr;
 }
 
 void WorkspaceUi::objectsPane(WorkspaceState& state, const Pane& pane) {

@@ -14,9 +14,12 @@
 #include <glm/glm.hpp>
 
 #include "core/Image.h"
+#include "render/SceneRenderer.h"
 #include "ui/Layout.h"
 #include "ui/Ui.h"
 #include "workspace/WorkspaceState.h"
+
+struct ImDrawList;
 
 namespace fm::app {
 
@@ -38,6 +41,8 @@ class WorkspaceUi {
     void draw(WorkspaceState& state, const WorkspaceTextures& textures);
     std::optional<WidgetRect> rect(const std::string& id) const;
     glm::ivec2 sceneViewSize() const { return sceneViewSize_; }
+    // The 3D view's labels (camera names at their sources), drawn over it after it is drawn.
+    void drawSceneLabels(const std::vector<render::SceneLabel>& labels);
     const std::string& shownTooltip() const { return shownTooltip_; }
 
   private:
@@ -56,6 +61,8 @@ class WorkspaceUi {
     std::map<std::string, WidgetRect> rects_;
     std::string tooltip_, shownTooltip_;
     glm::ivec2 sceneViewSize_{320, 320};
+    glm::vec2 sceneOrigin_{0.0f};
+    ImDrawList* sceneDrawList_ = nullptr;
 };
 
 }  // namespace fm::app

@@ -161,6 +161,7 @@ TrialScene loadTrialScene(const Trial& trial, const std::vector<std::string>& bo
         values.threads = threads;
         auto model = std::make_shared<VolumeXrayModel>(prepareDrrVolume(v, values));
         t.scene.objects.push_back({name, model, RigidTransform::identity(), true});
+        t.volumes[name] = std::make_shared<const Volume>(std::move(v));
     }
     return t;
 }

@@ -22,6 +22,7 @@
 #include "track/Tracker.h"
 #include "trial/ImageSequence.h"
 #include "trial/Trial.h"
+#include "volume/Volume.h"
 
 namespace fm {
 
@@ -36,6 +37,8 @@ struct TrialScene {
     // RenderResolution trades, resolution for time.
     int imageScale = 1;
     std::map<std::string, RigidTransform> autoscoperFromVolume;  // per loaded bone
+    // Volume bones: the volume as loaded (flipped; our volume frame), for display surfaces.
+    std::map<std::string, std::shared_ptr<const Volume>> volumes;
     // Mesh-only bones: the model's triangles (welded, its own frame), for display.
     std::map<std::string, std::shared_ptr<const Mesh>> meshes;
     // Bones with label masks (TrialBone::masks): one file per frame, camera 1's size.
