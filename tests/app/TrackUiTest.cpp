@@ -16,6 +16,7 @@
 #include <thread>
 
 #include "GoldenImage.h"
+#include "WorkspaceFixture.h"
 #include "common/TestData.h"
 #include "io/TextFile.h"
 #include "pose/AutoscoperTra.h"
@@ -31,28 +32,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-class TrackUi : public ::testing::Test {
+class TrackUi : public WorkspaceFixture {
   public:
-    void SetUp() override {
-        if (!sharedDataBesideRepo()) {
-            if (underCI()) FAIL() << "under CI the shared data must be ../shared/data beside the repository";
-            GTEST_SKIP() << "FM_DATA_DIR is not ../shared/data beside the repository";
-        }
-        app::WorkspaceSource source;
-        source.trial = repoDir() / "data/trials/wrist.json";
-        model = app::WorkspaceModel::open(source, 2);
-        backend = app::createOsmesaBackend({1280, 800});
-        app::WorkspaceOptions options;
-        options.showTimings = false;
-        app = std::make_unique<app::WorkspaceApp>(*backend, model, options);
-        script = std::make_unique<app::UiScript>(*app);
-        script->idle(2);
-    }
-    void TearDown() override {
-        script.reset();
-        app.reset();
-        backend.reset();
-    }
+    void SetUp() override { openTrial("data/trials/wrist.json"); }
     int object(const std::string& name) const {
         for (int k = 0; k < model->objectCount(); ++k)
             if (model->objectName(k) == name) return k;
@@ -73,10 +55,6 @@ class TrackUi : public ::testing::Test {
         }
         ASSERT_TRUE(done());
     }
-    std::shared_ptr<app::WorkspaceModel> model;
-    std::unique_ptr<app::RenderBackend> backend;
-    std::unique_ptr<app::WorkspaceApp> app;
-    std::unique_ptr<app::UiScript> script;
 };
 
 std::vector<std::string> lines(const std::string& text) {

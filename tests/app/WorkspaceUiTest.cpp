@@ -6,6 +6,7 @@
 
 #include <imgui.h>
 
+#include "WorkspaceFixture.h"
 #include "common/TestData.h"
 #include "pose/AutoscoperTra.h"
 #include "scene/ObjectPoseParameterization.h"
@@ -19,28 +20,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-class WorkspaceUi : public ::testing::Test {
+class WorkspaceUi : public WorkspaceFixture {
   protected:
     void SetUp() override {
         FM_REQUIRE_SHARED_DATA("jtml-kneel-tka-fluoro");
-        if (!sharedDataBesideRepo()) {
-            if (underCI()) FAIL() << "under CI the shared data must be ../shared/data beside the repository";
-            GTEST_SKIP() << "FM_DATA_DIR is not ../shared/data beside the repository";
-        }
-        app::WorkspaceSource source;
-        source.trial = repoDir() / "data/trials/jtml-knee.json";
-        model = app::WorkspaceModel::open(source, 2);
-        backend = app::createOsmesaBackend({1280, 800});
-        app::WorkspaceOptions options;
-        options.showTimings = false;
-        app = std::make_unique<app::WorkspaceApp>(*backend, model, options);
-        script = std::make_unique<app::UiScript>(*app);
-        script->idle(2);
-    }
-    void TearDown() override {
-        script.reset();
-        app.reset();
-        backend.reset();
+        openTrial("data/trials/jtml-knee.json");
     }
     RigidTransform jts(int object, int frame) const {
         const fs::path d = sharedDataDir() / "jtml-kneel-tka-fluoro";
@@ -49,10 +33,6 @@ class WorkspaceUi : public ::testing::Test {
     glm::dvec3 centre(int object) const {
         return app->pose(object)->applyToPoint(defaultPivot(*model->scene().objects[object].model));
     }
-    std::shared_ptr<app::WorkspaceModel> model;
-    std::unique_ptr<app::RenderBackend> backend;
-    std::unique_ptr<app::WorkspaceApp> app;
-    std::unique_ptr<app::UiScript> script;
 };
 
 TEST_F(WorkspaceUi, OpensAtTheJtsPosesAndTheFrameSliderGoesToTheNextFramesKeyframes) {
