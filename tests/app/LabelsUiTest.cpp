@@ -28,7 +28,7 @@ namespace {
 
 using LabelsUi = HeadlessApp;
 
-const std::filesystem::path kDataDir = std::filesystem::path(FM_GOLDEN_DIR).parent_path();
+const std::filesystem::path kDataDir = fm::test::repoDir() / "data";
 
 TEST_F(LabelsUi, ComponentsSplitTheKneePhantomIntoItsFourBones) {
     start(testAppOptions(), {1280, 800});  // room for the labels' row under the knee's list
