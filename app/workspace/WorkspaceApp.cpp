@@ -14,6 +14,7 @@
 #include "render/SceneRenderer.h"
 #include "render/Texture.h"
 #include "scene/ObjectPoseParameterization.h"
+#include "workspace/ShownPose.h"
 #include "workspace/WorkspacePose.h"
 #include "xray/CameraPoseDifference.h"
 #include "xray/ObjectRegistration.h"
@@ -51,6 +52,8 @@ WorkspaceApp::WorkspaceApp(RenderBackend& backend, std::shared_ptr<WorkspaceMode
         for (int f = 0; f < state_.frameCount; ++f) state_.frameNames.back().push_back(seq.frameName(f));
     }
     state_.poses = model_->initialPoses();
+    for (int k = 0; k < model_->objectCount(); ++k)
+        state_.placements.push_back(defaultPlacement(model_->scene(), static_cast<std::size_t>(k)));
     state_.poseFrame = model_->cameraCount() > 1 ? PoseFrame::World : PoseFrame::Camera;
     state_.display.assign(static_cast<std::size_t>(model_->cameraCount()), DisplaySettings{});
     state_.savePath = model_->defaultSavePath().string();
@@ -76,9 +79,7 @@ WorkspaceApp::~WorkspaceApp() {
     ImGui::DestroyContext();
 }
 
-const std::optional<RigidTransform>& WorkspaceApp::pose(int object) const {
-    return state_.poses.at(static_cast<std::size_t>(state_.frame)).at(static_cast<std::size_t>(object));
-}
+std::optional<RigidTransform> WorkspaceApp::pose(int object) const { return shownPose(state_, state_.frame, object); }
 
 void WorkspaceApp::goToFrame(int frame) {
     if (frame == state_.frame || frame < 0 || frame >= state_.frameCount) return;
@@ -88,11 +89,8 @@ void WorkspaceApp::goToFrame(int frame) {
         state_.error = e.what();
         return;
     }
-    // Objects without a pose there start from where they are now.
-    auto& to = state_.poses[static_cast<std::size_t>(frame)];
-    const auto& from = state_.poses[static_cast<std::size_t>(state_.frame)];
-    for (std::size_t k = 0; k < to.size(); ++k)
-        if (!to[k]) to[k] = from[k];
+    // Objects without a pose there are shown where the nearest set pose puts them (ShownPose.h);
+    // nothing is copied into the frame, so it stays untracked until set.
     state_.frame = frame;
     state_.error.clear();
 }
@@ -110,7 +108,7 @@ void WorkspaceApp::syncControls() {
     const PoseControls& c = state_.controls;
     const int object = state_.selected;
     if (object < 0 || object >= model_->objectCount()) return;
-    const auto& pose = state_.poses[static_cast<std::size_t>(state_.frame)][static_cast<std::size_t>(object)];
+    const std::optional<RigidTransform> pose = shownPose(state_, state_.frame, object);
     if (!pose) return;
     const bool same = c.object == object && c.frameIndex == state_.frame && c.frame == state_.poseFrame &&
                       c.camera == state_.poseCamera;
@@ -128,7 +126,7 @@ void WorkspaceApp::processRequests() {
     if (r.resetView) state_.view = defaultRigView();
     if (r.stopSolve) solver_.stop();
     if (r.solve) {
-        const auto& start = pose(state_.selected);
+        const auto start = pose(state_.selected);
         if (start) solver_.start(model_, state_.selected, state_.frame, *start);
         solveVersion_ = 0;
     }
@@ -270,7 +268,7 @@ void WorkspaceApp::drawScene() {
     glm::dvec3 centre(0.0);
     int placed = 0;
     for (int k = 0; k < model_->objectCount(); ++k) {
-        const auto& p = pose(k);
+        const auto p = pose(k);
         if (!p || !state_.objects[k].visible) continue;
         glm::dmat4 m(p->rotation);
         m[3] = glm::dvec4(p->translation, 1.0);
@@ -298,7 +296,7 @@ void WorkspaceApp::drawScene() {
                            state_.cameraNames[c]});
     }
     const bool fast = state_.interacting || ImGui::IsMouseDown(ImGuiMouseButton_Left);
-    SceneKey key{state_.frame, state_.poses[state_.frame], {}, state_.view.azimuthDeg, state_.view.elevationDeg,
+    SceneKey key{state_.frame, shownPoses(state_, state_.frame), {}, state_.view.azimuthDeg, state_.view.elevationDeg,
                  state_.view.zoom, state_.view.panX, state_.view.panY, state_.view.showBone,
                  state_.view.showApparatus, ui_.sceneViewSize(), imagesVersion_, fast};
     for (const WorkspaceObject& o : state_.objects) key.visible.push_back(o.visible);

@@ -48,8 +48,9 @@ class WorkspaceApp : public ScriptableApp {
     const WorkspaceTracking& tracking() const { return tracking_; }
     const render::SceneRenderer& sceneRenderer() const { return *sceneRenderer_; }
     int sceneDraws() const { return sceneDraws_; }  // how often the 3D view was drawn
-    // The pose of `object` in the current frame (the controls' result).
-    const std::optional<RigidTransform>& pose(int object) const;
+    // Where `object` is shown in the current frame: its own pose there, else the one carried
+    // over (ShownPose.h).
+    std::optional<RigidTransform> pose(int object) const;
     // Draws frames until a running Solve has ended and its result is shown (tests, headless).
     void waitForSolve();
     // Draws frames until a running Track run has ended and its last frame is shown.

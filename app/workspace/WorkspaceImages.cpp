@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "track/PoseOverlay.h"
+#include "workspace/ShownPose.h"
 
 namespace fm::app {
 
@@ -66,7 +67,7 @@ bool WorkspaceImages::update(const WorkspaceModel& model, const WorkspaceState& 
     entries_.resize(static_cast<std::size_t>(cameras));
     versions_.resize(static_cast<std::size_t>(cameras));
     const bool footprintOnly = state.modelImage == ModelImage::Outline;
-    const auto& poses = state.poses.at(static_cast<std::size_t>(state.frame));
+    const std::vector<std::optional<RigidTransform>> poses = shownPoses(state, state.frame);
     Key key;
     key.frame = state.frame;
     key.selected = state.selected;

@@ -117,7 +117,9 @@ std::vector<std::vector<std::optional<RigidTransform>>> WorkspaceModel::initialP
         } else if (starts_[k]) {
             poses[0][k] = *starts_[k];
         }
-        if (!poses[0][k]) poses[0][k] = defaultPlacement(trial_.scene, static_cast<std::size_t>(k));
+        // One radiograph: the model starts at its placement, which Save writes as shown. A trial's
+        // frames without a keyframe stay without a pose (shown where the nearest keyframe is).
+        if (!fromTrial_ && !poses[0][k]) poses[0][k] = defaultPlacement(trial_.scene, static_cast<std::size_t>(k));
     }
     return poses;
 }

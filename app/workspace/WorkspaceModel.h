@@ -59,7 +59,8 @@ class WorkspaceModel {
     const std::vector<RegistrationView>& prepared(int frame) const;
 
     // The poses the workspace starts with: [frame][object], from the trial's keyframes or the
-    // given starts; an object with none at frame 0 is placed where the cameras look.
+    // given starts; for one radiograph, an object without a start is placed where the camera
+    // looks (defaultPlacement); a trial's frames without a keyframe have none.
     std::vector<std::vector<std::optional<RigidTransform>>> initialPoses() const;
 
     // `object` alone at `pose` in camera `camera`: its line integrals, or (`footprintOnly`)

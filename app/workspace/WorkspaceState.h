@@ -88,9 +88,11 @@ struct WorkspaceState {
     bool allObjects = true;  // draw every shown object's image, or the selected one's only
     int frame = 0, frameCount = 1;
     std::vector<std::vector<std::string>> frameNames;  // [camera][frame]: the file (or page)
-    // poses[frame][object]: worldFromObject (the object's own frame to the world); nullopt:
-    // none yet (a frame is given the pose of the frame it is reached from).
+    // poses[frame][object]: worldFromObject (the object's own frame to the world) where one was
+    // set (keyframe, edit, Solve, Track, load); nullopt: none, and Save writes NaN. What a frame
+    // shows without one is derived (ShownPose.h), never written here.
     std::vector<std::vector<std::optional<RigidTransform>>> poses;
+    std::vector<RigidTransform> placements;  // per object: shown where no frame sets a pose
     PoseFrame poseFrame = PoseFrame::Camera;
     int poseCamera = 0;
     PoseControls controls;

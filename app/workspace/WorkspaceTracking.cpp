@@ -4,6 +4,7 @@
 
 #include "core/Error.h"
 #include "scene/TrialPoseFiles.h"
+#include "workspace/ShownPose.h"
 
 namespace fm::app {
 
@@ -81,8 +82,11 @@ void WorkspaceTracking::start(const std::shared_ptr<const WorkspaceModel>& model
                               bool backwards) {
     const int object = state.selected;
     const std::string& name = model->objectName(object);
-    TrackRequest request = trackRequestFrom(name, bonePosesOf(state, object), state.frame, backwards,
-                                            model->threads());
+    // Track starts from the pose shown in the current frame, set there or carried over.
+    BonePoses poses = bonePosesOf(state, object);
+    if (!poses.pose(state.frame))
+        if (const auto shown = shownPose(state, state.frame, object)) poses.setPose(state.frame, *shown);
+    TrackRequest request = trackRequestFrom(name, poses, state.frame, backwards, model->threads());
     runner_.start(std::shared_ptr<const TrialScene>(model, &model->trial()), std::move(request));
     runObject_ = object;
     state.track.playing = false;
@@ -124,8 +128,11 @@ void WorkspaceTracking::process(const std::shared_ptr<const WorkspaceModel>& mod
         lastStep_ = std::chrono::steady_clock::now();
     }
     if (r.setKeyframe)
-        if (const auto& p = state.poses.at(static_cast<std::size_t>(state.frame)).at(object))
+        if (const auto p = shownPose(state, state.frame, state.selected)) {
+            // A keyframe is a set pose of its frame, carried over or not.
             t.keyframes.at(object)[state.frame] = *p;
+            state.poses.at(static_cast<std::size_t>(state.frame)).at(object) = *p;
+        }
     if (r.clearKeyframe) t.keyframes.at(object).erase(state.frame);
     if (r.stop) runner_.stop();
     try {

@@ -10,6 +10,7 @@
 #include <imgui.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <sstream>
@@ -184,6 +185,62 @@ TEST_F(TrackUi, KeyframesSetClearAndSaveAndPlayStepsTheFrames) {
     script->idle(3);
     EXPECT_EQ(app->state().frame, paused);
     EXPECT_FALSE(app->state().track.playing);
+}
+
+// Frames where a bone has no pose show it where the nearest set pose puts it, and store nothing:
+// after playing through them, Save .tra writes NaN there and the plot has no point (before, the
+// pose of the frame played from was copied in and saved as if tracked).
+TEST_F(TrackUi, PlayingThroughUntrackedFramesStoresNoPose) {
+    const int radius = object("radius"), mc3 = object("mc3");
+    // The trial: radius keyframes at frames 0 and 1, none at 2; mc3 none at all.
+    ASSERT_TRUE(poseAt(0, radius) && poseAt(1, radius));
+    ASSERT_FALSE(poseAt(2, radius));
+    for (int f = 0; f < 3; ++f) ASSERT_FALSE(poseAt(f, mc3)) << f;
+
+    script->clickWidget("select:object-radius");
+    script->clickWidget("button:play");
+    std::vector<int> seen;
+    idleUntil([&] {
+        if (seen.empty() || seen.back() != app->state().frame) seen.push_back(app->state().frame);
+        return seen.size() >= 5;  // 0 1 2 0 1: every frame left and reached again
+    });
+    script->clickWidget("button:play");  // Pause
+    script->idle(1);
+    EXPECT_FALSE(poseAt(2, radius));
+    for (int f = 0; f < 3; ++f) EXPECT_FALSE(poseAt(f, mc3)) << f;
+    EXPECT_EQ(poseAt(1, radius)->translation, keyframe("radius", 1).translation);
+
+    // Shown at frame 2: the nearest earlier set pose, frame 1's keyframe.
+    for (int f = app->state().frame; f < 2; ++f) {  // next stops at the last frame
+        script->clickWidget("button:frame-next");
+        script->idle(1);
+    }
+    ASSERT_EQ(app->state().frame, 2);
+    ASSERT_TRUE(app->pose(radius));
+    EXPECT_EQ(app->pose(radius)->translation, keyframe("radius", 1).translation);
+    ASSERT_TRUE(app->pose(mc3));  // shown at its placement, where the cameras look
+    EXPECT_FALSE(poseAt(2, radius));
+
+    const fs::path dir = scratchDir("track-ui-untracked");
+    app->state().track.traPath = (dir / "radius.tra").string();
+    script->clickWidget("button:save-tra");
+    script->idle(1);
+    ASSERT_FALSE(app->state().track.messageFailed) << app->state().track.message;
+    const auto rows = lines(io::readTextFile(dir / "radius.tra", 1 << 20, "radius.tra"));
+    ASSERT_EQ(rows.size(), 3u);
+    EXPECT_NE(rows[0].substr(0, 3), "NaN");
+    EXPECT_NE(rows[1].substr(0, 3), "NaN");
+    EXPECT_EQ(rows[2].substr(0, 3), "NaN") << rows[2];
+    for (std::size_t i = 0; i < 6; ++i) EXPECT_TRUE(std::isnan(app->state().track.curves.values[i][2])) << i;
+
+    script->clickWidget("select:object-mc3");
+    script->idle(1);
+    app->state().track.traPath = (dir / "mc3.tra").string();
+    script->clickWidget("button:save-tra");
+    script->idle(1);
+    ASSERT_FALSE(app->state().track.messageFailed) << app->state().track.message;
+    for (const std::string& row : lines(io::readTextFile(dir / "mc3.tra", 1 << 20, "mc3.tra")))
+        EXPECT_EQ(row.substr(0, 3), "NaN") << row;
 }
 
 // The "first pose by hand in the app, then refined": the bone is moved off its keyframe
