@@ -50,6 +50,7 @@ void runWorkspace(const AppArgs& args) {
         return;
     }
     std::printf("window: %s\n", backend->describe().c_str());
+    backend->drawContinuously(args.frames > 0);  // a counted run: no event would wake it
     fm::app::WorkspaceApp app(*backend, model);
     app.state().requests.frame = frame;
     int frames = 0;
@@ -77,6 +78,7 @@ void runApp(const AppArgs& args) {
         return;
     }
     std::printf("window: %s\n", backend->describe().c_str());
+    backend->drawContinuously(args.frames > 0);  // a counted run: no event would wake it
     fm::app::AppOptions options;
     options.volumeSpec = args.volume;
     options.labelsSpec = args.labels;

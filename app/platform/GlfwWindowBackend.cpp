@@ -50,15 +50,26 @@ class GlfwWindowBackend final : public RenderBackend {
 
     void initImGui() override { ImGui_ImplGlfw_InitForOpenGL(window_, true); }
     void shutdownImGui() override { ImGui_ImplGlfw_Shutdown(); }
-    void setIdle(bool idle) override { idle_ = idle; }
+    void setActivity(Activity activity) override { activity_ = activity; }
+    void drawContinuously(bool on) override { continuous_ = on; }
     void newFrame() override {
-        // ImGui needs a few frames to settle after an event, so idle frames still come at
-        // 10 Hz; any event (mouse, key, resize, drop) wakes the loop at once.
-        if (idle_ && ++idleFrames_ > 3)
-            glfwWaitEventsTimeout(0.1);
-        else
-            glfwPollEvents();
-        if (!idle_) idleFrames_ = 0;
+        // Any event (mouse, key, resize, expose, drop) wakes the loop at once.
+        switch (continuous_ ? EventWait::Poll : waits_.next(activity_, woken_)) {
+            case EventWait::Poll:
+                glfwPollEvents();
+                woken_ = false;
+                break;
+            case EventWait::Timeout: {
+                const double before = glfwGetTime();
+                glfwWaitEventsTimeout(1.0 / kBackgroundHz);
+                woken_ = glfwGetTime() - before < 0.9 / kBackgroundHz;  // returned early: an event
+                break;
+            }
+            case EventWait::Forever:
+                glfwWaitEvents();
+                woken_ = true;
+                break;
+        }
         ImGui_ImplGlfw_NewFrame();
     }
     void present() override { glfwSwapBuffers(window_); }
@@ -72,8 +83,10 @@ class GlfwWindowBackend final : public RenderBackend {
   private:
     GLFWwindow* window_;
     std::vector<std::string> dropped_;
-    bool idle_ = false;
-    int idleFrames_ = 0;
+    Activity activity_ = Activity::Busy;
+    EventWaitPolicy waits_;
+    bool woken_ = false;
+    bool continuous_ = false;
 };
 
 }  // namespace

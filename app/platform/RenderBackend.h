@@ -7,6 +7,8 @@
 
 #include <glm/glm.hpp>
 
+#include "platform/EventWait.h"
+
 namespace fm::app {
 
 // Input for one headless frame (scripted UI tests): ImGui 1.86 takes the mouse and keys as
@@ -40,9 +42,11 @@ class RenderBackend {
     // After drawing: show (swap buffers) or finish the offscreen image.
     virtual void present() = 0;
 
-    // Idle: nothing animates, so a window may wait for the next event (up to a short timeout)
-    // instead of redrawing continuously.
-    virtual void setIdle(bool) {}
+    // What the app is doing after this frame: a window waits for input accordingly (EventWait.h:
+    // an idle app sleeps until the next event). Headless backends draw when asked.
+    virtual void setActivity(Activity) {}
+    // Never sleep between frames (a run of a counted number of frames: no event would come).
+    virtual void drawContinuously(bool) {}
     // Files or folders dropped onto the window since the last call.
     virtual std::vector<std::string> takeDroppedPaths() { return {}; }
     // Headless only: the input the next frame sees.

@@ -579,9 +579,10 @@ void App::frame() {
     glClear(GL_COLOR_BUFFER_BIT);
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
     backend_.present();
-    // Nothing moving: the window may sleep until the next event instead of redrawing.
-    backend_.setIdle(!state_.load.loading && !state_.labels.loading && !fast &&
-                     !state_.interacting && !state_.solve.running);
+    // Nothing moving: the window sleeps until the next event instead of redrawing.
+    backend_.setActivity(fast || state_.interacting                                          ? Activity::Busy
+                         : state_.load.loading || state_.labels.loading || state_.solve.running ? Activity::Background
+                                                                                               : Activity::Idle);
     ++state_.frame;
     state_.timings.frameMs = msSince(start);
 }

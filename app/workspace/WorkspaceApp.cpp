@@ -342,9 +342,11 @@ void WorkspaceApp::frame() {
     glClear(GL_COLOR_BUFFER_BIT);
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
     backend_.present();
-    // A Track run or playing needs no more than the idle frames (10 a second): the tracker keeps
-    // the cores.
-    backend_.setIdle(!state_.interacting && !state_.solve.running && !ImGui::IsMouseDown(ImGuiMouseButton_Left));
+    // A Solve, a Track run or playing needs no more than the background frames (10 a second:
+    // the workers keep the cores); nothing moving: sleep until the next event.
+    const bool busy = state_.interacting || ImGui::IsMouseDown(ImGuiMouseButton_Left);
+    const bool background = state_.solve.running || tracking_.running() || state_.track.playing;
+    backend_.setActivity(busy ? Activity::Busy : background ? Activity::Background : Activity::Idle);
     ++state_.frameCounter;
 }
 
