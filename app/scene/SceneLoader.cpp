@@ -1,8 +1,10 @@
 #include "scene/SceneLoader.h"
 
+#include <chrono>
 #include <deque>
-#include <exception>
 #include <filesystem>
+#include <mutex>
+#include <thread>
 
 namespace fm::app {
 namespace {
@@ -35,18 +37,9 @@ RecentScenes& recentScenes() {
 
 }  // namespace
 
-SceneLoader::~SceneLoader() {
-    {
-        std::lock_guard lock(mutex_);
-        queued_.reset();
-    }
-    if (worker_.joinable()) worker_.join();
-}
-
 void SceneLoader::start(const std::string& spec) {
-    std::lock_guard lock(mutex_);
-    if (busy_ || finished_) {
-        queued_ = spec;
+    if (!job_.idle()) {
+        queued_ = spec;  // replaces any queued one; starts when the current result is taken
         return;
     }
     launch(spec);
@@ -65,56 +58,36 @@ std::string sceneCacheKey(const std::string& spec) {
 }
 
 void SceneLoader::launch(const std::string& spec) {
-    if (worker_.joinable()) worker_.join();  // the previous worker has finished: busy_ is false
-    const std::string key = sceneCacheKey(spec);
-    if (auto scene = recentScenes().find(key)) {
-        finished_ = Result{spec, std::move(scene), {}};
+    if (auto scene = recentScenes().find(sceneCacheKey(spec))) {
+        job_.finish(Result{spec, std::move(scene), {}});
         return;
     }
-    busy_ = true;
-    spec_ = spec;
-    stage_ = "starting";
-    fraction_ = 0.0f;
-    started_ = std::chrono::steady_clock::now();
-    worker_ = std::thread([this, spec] {
-        Result result{spec, nullptr, {}};
-        try {
-            result.scene = buildScene(spec, [this](const std::string& stage, float fraction) {
-                std::lock_guard lock(mutex_);
-                stage_ = stage;
-                fraction_ = fraction;
-            });
-        } catch (const std::exception& e) {
-            result.error = e.what();
-        } catch (...) {
-            result.error = "unknown error while loading " + spec;
-        }
-        std::lock_guard lock(mutex_);
-        if (result.scene) recentScenes().add(sceneCacheKey(spec), result.scene);
-        finished_ = std::move(result);
-        busy_ = false;
-    });
+    job_.start(
+        spec,
+        [spec](const JobReport& report) {
+            Result result{spec, buildScene(spec, report), {}};
+            recentScenes().add(sceneCacheKey(spec), result.scene);
+            return result;
+        },
+        [spec](const std::string& error) {
+            return Result{spec, nullptr, error.empty() ? "unknown error while loading " + spec : error};
+        });
 }
 
 SceneLoader::Progress SceneLoader::progress() const {
-    std::lock_guard lock(mutex_);
+    const JobProgress job = job_.progress();
     Progress p;
-    p.busy = busy_ || queued_.has_value();
-    p.spec = busy_ ? spec_ : queued_.value_or(spec_);
-    p.stage = busy_ ? stage_ : "queued";
-    p.fraction = busy_ ? fraction_ : 0.0f;
-    p.elapsedSeconds =
-        busy_ ? std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count()
-              : 0.0;
+    p.busy = job.busy || queued_.has_value();
+    p.spec = job.busy ? job.what : queued_.value_or(job.what);
+    p.stage = job.busy ? job.stage : "queued";
+    p.fraction = job.busy ? job.fraction : 0.0f;
+    p.elapsedSeconds = job.elapsedSeconds;
     return p;
 }
 
 std::optional<SceneLoader::Result> SceneLoader::poll() {
-    std::lock_guard lock(mutex_);
-    if (busy_ || !finished_) return std::nullopt;
-    std::optional<Result> out = std::move(finished_);
-    finished_.reset();
-    if (queued_) {
+    std::optional<Result> out = job_.poll();
+    if (out && queued_) {
         const std::string next = *queued_;
         queued_.reset();
         launch(next);
@@ -126,13 +99,10 @@ std::optional<SceneLoader::Result> SceneLoader::wait() {
     std::optional<Result> last;
     for (;;) {
         if (auto r = poll()) last = std::move(r);
-        {
-            std::lock_guard lock(mutex_);
-            if (!busy_ && !finished_ && !queued_) break;
-        }
+        if (job_.idle() && !queued_) break;
         std::this_thread::sleep_for(std::chrono::milliseconds(5));
     }
-    if (worker_.joinable()) worker_.join();
+    job_.join();
     return last;
 }
 

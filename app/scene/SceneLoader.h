@@ -3,13 +3,11 @@
 // a request made while busy replaces any queued one and starts when the current one ends.
 // The two most recent scenes are kept process-wide (volume, DRR volume, mesh): re-opening one
 // whose file has not changed (same size and modification time) is instant.
-#include <chrono>
 #include <memory>
-#include <mutex>
 #include <optional>
 #include <string>
-#include <thread>
 
+#include "scene/BackgroundJob.h"
 #include "scene/LoadedScene.h"
 
 namespace fm::app {
@@ -17,7 +15,6 @@ namespace fm::app {
 class SceneLoader {
   public:
     SceneLoader() = default;
-    ~SceneLoader();
     SceneLoader(const SceneLoader&) = delete;
     SceneLoader& operator=(const SceneLoader&) = delete;
 
@@ -43,16 +40,11 @@ class SceneLoader {
     std::optional<Result> wait();
 
   private:
-    void launch(const std::string& spec);  // mutex held by caller
+    void launch(const std::string& spec);
 
-    mutable std::mutex mutex_;
-    std::thread worker_;
-    bool busy_ = false;
-    std::string spec_, stage_;
-    float fraction_ = 0.0f;
-    std::chrono::steady_clock::time_point started_;
+    // Touched by the owner's thread only (the job guards what the worker writes).
     std::optional<std::string> queued_;
-    std::optional<Result> finished_;
+    BackgroundJob<Result> job_;  // last: joined before the queue goes
 };
 
 // What identifies a loaded file's content cheaply: the spec plus, for paths, size and time.
