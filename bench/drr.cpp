@@ -1,9 +1,10 @@
 // DRR run time against error. Two modes:
 //   fm_bench_drr [google benchmark flags]   Google Benchmark on the default knee phantom
-//   fm_bench_drr --table [--csv=FILE] [--quick]
+//   fm_bench_drr --table [--csv=FILE] [--quick] [--volumes=NAME,NAME]
 //       for the knee phantom and the real CTs in the shared data folder (FM_DATA_DIR, default
 //       ../shared/data beside the repository), at 256x256 and 512x512 films, 1 and 2 threads,
-//       exact and approximate modes: ms per DRR (median of timed runs after one warm-up run,
+//       exact and approximate modes (volume downsampling, detector downsampling, trilinear
+//       sampling): ms per DRR (median of timed runs after one warm-up run,
 //       volume loading and preparation excluded; wall and CPU time) and the error against the slow
 //       reference renderer (long-double Siddon 1985 on the original grid): max and RMS of |DRR -
 //       ref| divided by the reference's peak value. Prints a table and writes CSV.
@@ -59,7 +60,8 @@ fm::ProjectionGeometry sceneView(const fm::Volume& volume, int pixels) {
 struct Mode {
     std::string name;
     fm::DrrRenderOptions render;
-    int downsample = 1;
+    int downsample = 1;  // volume: exact on f^3 block means
+    int film = 1;        // detector: exact on f x f coarser pixels, compared bilinearly upsampled
 };
 
 std::vector<Mode> modes() {
@@ -71,6 +73,8 @@ std::vector<Mode> modes() {
     m.push_back({"exact-noskip", plain});
     m.push_back({"exact-down2", exact, 2});
     m.push_back({"exact-down4", exact, 4});
+    m.push_back({"exact-film2", exact, 1, 2});
+    m.push_back({"exact-film4", exact, 1, 4});
     for (double step : {1.0, 2.0, 4.0}) {
         fm::DrrRenderOptions approx;
         approx.trace = fm::DrrTrace::Approx;
@@ -114,6 +118,25 @@ Timing timeRuns(const std::function<void()>& run, double budgetSeconds) {
     return {median(wall), median(cpu)};
 }
 
+// The coarse image at the fine pixel centres (bilinear; clamped at the film's edge): what a
+// detector-downsampled DRR shows when drawn at full size.
+fm::Image upsampled(const fm::Image& coarse, int factor, int width, int height) {
+    fm::Image out(width, height);
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            const double u = std::clamp((x + 0.5) / factor - 0.5, 0.0, coarse.width - 1.0);
+            const double v = std::clamp((y + 0.5) / factor - 0.5, 0.0, coarse.height - 1.0);
+            const int x0 = std::min(static_cast<int>(u), std::max(coarse.width - 2, 0));
+            const int y0 = std::min(static_cast<int>(v), std::max(coarse.height - 2, 0));
+            const int x1 = std::min(x0 + 1, coarse.width - 1), y1 = std::min(y0 + 1, coarse.height - 1);
+            const double fx = u - x0, fy = v - y0;
+            const double top = (1 - fx) * coarse.at(x0, y0) + fx * coarse.at(x1, y0);
+            const double bottom = (1 - fx) * coarse.at(x0, y1) + fx * coarse.at(x1, y1);
+            out.at(x, y) = static_cast<float>((1 - fy) * top + fy * bottom);
+        }
+    return out;
+}
+
 struct ErrorStats {
     double maxRel = 0, rmsRel = 0;
 };
@@ -130,9 +153,12 @@ ErrorStats compare(const fm::Image& image, const fm::Image& ref) {
     return {maxDiff / peak, std::sqrt(sum2 / ref.pixels.size()) / peak};
 }
 
-std::vector<Scene> loadScenes(bool quick) {
+std::vector<Scene> loadScenes(bool quick, const std::vector<std::string>& only) {
+    const auto wanted = [&](const std::string& name) {
+        return only.empty() || std::find(only.begin(), only.end(), name) != only.end();
+    };
     std::vector<Scene> scenes;
-    scenes.push_back({"knee-phantom", fm::makePhantom("knee"), {}});
+    if (wanted("knee-phantom")) scenes.push_back({"knee-phantom", fm::makePhantom("knee"), {}});
     if (quick) return scenes;
     const std::filesystem::path dir = dataDir();
     struct Real {
@@ -147,6 +173,7 @@ std::vector<Scene> loadScenes(bool quick) {
         {"vtk-headsq-raw", "vtk-headsq-quarter/quarter.nhdr", false},
     };
     for (const Real& r : reals) {
+        if (!wanted(r.name)) continue;
         const auto path = dir / r.path;
         if (!std::filesystem::exists(path)) {
             std::fprintf(stderr, "skipping %s: %s not found (set FM_DATA_DIR)\n", r.name,
@@ -166,14 +193,14 @@ std::vector<Scene> loadScenes(bool quick) {
     return scenes;
 }
 
-int runTable(const std::string& csvPath, bool quick) {
+int runTable(const std::string& csvPath, bool quick, const std::vector<std::string>& only) {
     std::ostringstream csv;  // written atomically at the end (io/AtomicFile)
     csv << "volume,dims,kept_dims,detector,mode,threads,ms_median,cpu_ms_median,max_rel_error,"
            "rms_rel_error\n";
     std::printf("%-20s %-12s %-12s %-8s %-16s %3s %9s %9s %11s %11s\n", "volume", "dims", "kept",
                 "film", "mode", "thr", "ms/DRR", "cpu ms", "max rel err", "RMS rel err");
     const std::vector<int> filmSizes = quick ? std::vector<int>{256} : std::vector<int>{256, 512};
-    for (const Scene& scene : loadScenes(quick)) {
+    for (const Scene& scene : loadScenes(quick, only)) {
         std::map<int, fm::DrrVolumePtr> prepared;
         for (int down : {1, 2, 4}) {
             fm::DrrValueOptions o = scene.values;
@@ -204,9 +231,11 @@ int runTable(const std::string& csvPath, bool quick) {
                     fm::DrrRenderOptions ro = mode.render;
                     ro.threads = threads;
                     const fm::DrrVolume& v = *prepared[mode.downsample];
+                    const fm::ProjectionGeometry gm = g.downsampled(mode.film);
                     fm::Image image;
                     const Timing t =
-                        timeRuns([&] { image = fm::renderDrr(v, g, ro); }, quick ? 0.3 : 1.0);
+                        timeRuns([&] { image = fm::renderDrr(v, gm, ro); }, quick ? 0.3 : 1.0);
+                    if (mode.film > 1) image = upsampled(image, mode.film, ref.width, ref.height);
                     const ErrorStats e = compare(image, ref);
                     std::printf("%-20s %-12s %-12s %-8s %-16s %3d %9.2f %9.2f %11.2e %11.2e\n",
                                 scene.name.c_str(), dims, kept,
@@ -230,7 +259,7 @@ void registerBenchmarks() {
     static const fm::Volume knee = fm::makePhantom("knee");
     static const fm::DrrVolumePtr prepared = fm::prepareDrrVolume(knee, {});
     for (const Mode& mode : modes()) {
-        if (mode.downsample != 1) continue;
+        if (mode.downsample != 1 || mode.film != 1) continue;
         for (int film : {256, 512})
             for (int threads : {1, 2}) {
                 const std::string name = "DRR/knee/" + mode.name + "/" + std::to_string(film) +
@@ -255,6 +284,7 @@ void registerBenchmarks() {
 int main(int argc, char** argv) {
     bool table = false, quick = false;
     std::string csv = "drr-bench.csv";
+    std::vector<std::string> only;
     std::vector<char*> rest{argv[0]};
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
@@ -264,11 +294,15 @@ int main(int argc, char** argv) {
             quick = true;
         else if (arg.rfind("--csv=", 0) == 0)
             csv = arg.substr(6);
+        else if (arg.rfind("--volumes=", 0) == 0) {
+            std::istringstream names(arg.substr(10));
+            for (std::string n; std::getline(names, n, ',');) only.push_back(n);
+        }
         else
             rest.push_back(argv[i]);
     }
     try {
-        if (table) return runTable(csv, quick);
+        if (table) return runTable(csv, quick, only);
         int n = static_cast<int>(rest.size());
         benchmark::Initialize(&n, rest.data());
         registerBenchmarks();
