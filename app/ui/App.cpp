@@ -14,6 +14,7 @@
 #include "platform/Gl.h"
 #include "render/SceneRenderer.h"
 #include "render/Texture.h"
+#include "ui/PresentFrame.h"
 #include "scene/Matching.h"
 #include "scene/SliceImages.h"
 
@@ -570,15 +571,7 @@ void App::frame() {
         colors.push_back(l.color);
     }
     ui_.drawSceneLabels(labels, colors);
-    ImGui::Render();
-
-    const glm::ivec2 fb = backend_.framebufferSize();
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glViewport(0, 0, fb.x, fb.y);
-    glClearColor(0.06f, 0.06f, 0.07f, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT);
-    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-    backend_.present();
+    presentImGuiFrame(backend_);
     // Nothing moving: the window sleeps until the next event instead of redrawing.
     backend_.setActivity(fast || state_.interacting                                          ? Activity::Busy
                          : state_.load.loading || state_.labels.loading || state_.solve.running ? Activity::Background
@@ -587,10 +580,6 @@ void App::frame() {
     state_.timings.frameMs = msSince(start);
 }
 
-render::RgbaImage App::capture() const {
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    const glm::ivec2 fb = backend_.framebufferSize();
-    return render::readFramebuffer(fb.x, fb.y);
-}
+render::RgbaImage App::capture() const { return captureFrame(backend_); }
 
 }  // namespace fm::app

@@ -13,6 +13,7 @@
 #include "platform/Gl.h"
 #include "render/SceneRenderer.h"
 #include "render/Texture.h"
+#include "ui/PresentFrame.h"
 #include "scene/ObjectPoseParameterization.h"
 #include "workspace/ShownPose.h"
 #include "workspace/WorkspacePose.h"
@@ -334,14 +335,7 @@ void WorkspaceApp::frame() {
     }
     drawScene();
     ui_.drawSceneLabels(sceneRenderer_->labels());
-    ImGui::Render();
-    const glm::ivec2 fb = backend_.framebufferSize();
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glViewport(0, 0, fb.x, fb.y);
-    glClearColor(0.06f, 0.06f, 0.07f, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT);
-    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-    backend_.present();
+    presentImGuiFrame(backend_);
     // A Solve, a Track run or playing needs no more than the background frames (10 a second:
     // the workers keep the cores); nothing moving: sleep until the next event.
     const bool busy = state_.interacting || ImGui::IsMouseDown(ImGuiMouseButton_Left);
@@ -350,10 +344,6 @@ void WorkspaceApp::frame() {
     ++state_.frameCounter;
 }
 
-render::RgbaImage WorkspaceApp::capture() const {
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    const glm::ivec2 fb = backend_.framebufferSize();
-    return render::readFramebuffer(fb.x, fb.y);
-}
+render::RgbaImage WorkspaceApp::capture() const { return captureFrame(backend_); }
 
 }  // namespace fm::app
