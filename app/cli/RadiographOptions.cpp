@@ -26,7 +26,7 @@ RadiographPreparation preparationFrom(const RadiographOptions& o, int bitsPerSam
     p.logTransform = o.log;
     p.i0 = o.i0;
     if (o.i0 < 0.0 || !std::isfinite(o.i0)) throw Error("--i0 must be positive");
-    p.fullScale = bitsPerSample >= 32 ? 1.0 : std::pow(2.0, bitsPerSample) - 1.0;
+    p.fullScale = radiographFullScale(bitsPerSample);
     p.erodePixels = o.erode;
     if (!o.excludeBelow.empty()) p.excludeBelow = io::parseFinite(o.excludeBelow, "--exclude-below");
     if (!o.roi.empty()) {

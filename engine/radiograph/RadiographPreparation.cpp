@@ -18,6 +18,10 @@ Mask complement(const Mask& m) {
 
 }  // namespace
 
+double radiographFullScale(int bitsPerSample) {
+    return bitsPerSample >= 32 ? 1.0 : std::pow(2.0, bitsPerSample) - 1.0;
+}
+
 PreparedRadiograph prepareRadiograph(const Image& radiograph, const RadiographPreparation& o) {
     if (radiograph.empty()) throw Error("radiograph preparation: the image is empty");
     if (o.invert && o.logTransform)

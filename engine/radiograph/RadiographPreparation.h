@@ -32,6 +32,11 @@ struct PreparedRadiograph {
     Mask valid;
 };
 
+// The largest value of a radiograph file's samples, what invert and log's default I0 count
+// from: 2^bits - 1 for integer samples (255, 4095, 65535), 1.0 for floating-point ones (32 or
+// 64 bits). One rule for the CLI's images and a trial's frames.
+double radiographFullScale(int bitsPerSample);
+
 // fm::Error naming the option for invert with log, a non-positive I0 or full scale, a negative
 // erosion, an roi outside the image.
 PreparedRadiograph prepareRadiograph(const Image& radiograph, const RadiographPreparation& options);

@@ -191,7 +191,7 @@ FrameViews trialFrameViews(const TrialScene& trial, const RadiographPreparation&
             checkImageSize(trial.cameras[c], io::quoted(trial.trial.cameras[c].calibration), r.image.width,
                            r.image.height, io::quoted(file));
             RadiographPreparation p = preparation;
-            p.fullScale = r.bitsPerSample == 16 ? 65535.0 : 255.0;
+            p.fullScale = radiographFullScale(r.bitsPerSample);
             PreparedRadiograph prepared = prepareRadiograph(r.image, p);
             const int f = trial.imageScale;
             views.push_back({c, downsampleBy(prepared.image, f), downsampleMaskBy(prepared.valid, f)});

@@ -84,3 +84,25 @@ TEST(Preparation, NonsenseIsRefused) {
 }
 
 }  // namespace
+
+namespace fm {
+namespace {
+
+// One full scale for every path that prepares a radiograph (the CLI's images and a trial's
+// frames used to disagree for float TIFFs: 1.0 against 255).
+TEST(Preparation, FullScaleOfEachSampleFormat) {
+    EXPECT_EQ(radiographFullScale(8), 255.0);
+    EXPECT_EQ(radiographFullScale(12), 4095.0);
+    EXPECT_EQ(radiographFullScale(16), 65535.0);
+    EXPECT_EQ(radiographFullScale(32), 1.0);  // float samples: 0..1
+    EXPECT_EQ(radiographFullScale(64), 1.0);
+    // Inverting a float image at its full scale: 0.25 -> 0.75.
+    Image image(2, 1, 0.25f);
+    RadiographPreparation p;
+    p.invert = true;
+    p.fullScale = radiographFullScale(32);
+    EXPECT_FLOAT_EQ(prepareRadiograph(image, p).image.at(0, 0), 0.75f);
+}
+
+}  // namespace
+}  // namespace fm
