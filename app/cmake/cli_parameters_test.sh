@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Parameters that used to be taken silently are refused, naming the option and the limit:
 # --budget 0, --polish-budget -1, --seed -1 (would wrap), --start / --pose / --distance / --film
-# 1e308, --component-near nan, --step 1e-9 and 1e-5 (work bounded), a geometry JSON with a
+# 1e308, --component-near nan, --mode approx (removed), a geometry JSON with a
 # duplicate key or a source at 1e308. No output file is written for any of them.
 set -uo pipefail
 FM=$1
@@ -26,8 +26,7 @@ refused "--component-near: must be a finite number" "$FM" mesh --component-near 
 refused "pose x offset 1e+308 mm is beyond" "$FM" drr --pose 1e308,0,0,0,0,0 --out "$OUT/d.png"
 refused "source-to-isocenter distance must be positive and at most" "$FM" drr --distance 1e308 --out "$OUT/d.png"
 refused "film width must be positive and at most" "$FM" drr --film 1e308x1e308 --out "$OUT/d.png"
-refused "use a step of at least" "$FM" drr --mode approx --step 1e-9 --out "$OUT/d.png"
-refused "use a step of at least" "$FM" drr --mode approx --step 1e-5 --out "$OUT/d.png"
+refused "--mode approx was removed" "$FM" drr --mode approx --out "$OUT/d.png"
 "$FM" geometry --pose 0,0,0,0,0,0 --center 0,0,0 --out "$OUT/g.json" > /dev/null || fail "geometry exited $?"
 sed 's/"source": \[/"source": [1e308, 0, 0], "source": [/' "$OUT/g.json" > "$OUT/g-dup.json"
 refused "duplicate key" "$FM" drr --geometry "$OUT/g-dup.json" --out "$OUT/d.png"

@@ -12,9 +12,8 @@ ProjectionGeometry appGeometry(const LoadedScene& scene, const Pose& pose, int d
     return downsample > 1 ? g.downsampled(downsample) : g;
 }
 
-DrrRender DrrCache::get(const LoadedScene& scene, const Pose& pose, int downsample, DrrTrace trace,
-                        int threads, ImagingMode mode, const ObjectStates& objects) {
-    const DrrKey key{scene.generation, pose.toArray(), downsample, trace, mode, objects};
+DrrRender DrrCache::get(const LoadedScene& scene, const Pose& pose, int downsample, int threads, ImagingMode mode, const ObjectStates& objects) {
+    const DrrKey key{scene.generation, pose.toArray(), downsample, mode, objects};
     auto hit =
         std::find_if(entries_.begin(), entries_.end(), [&](const auto& e) { return e.key == key; });
     if (hit != entries_.end()) {
@@ -23,11 +22,7 @@ DrrRender DrrCache::get(const LoadedScene& scene, const Pose& pose, int downsamp
         return out;
     }
     DrrRenderOptions options;
-    options.trace = trace;
     options.threads = threads;
-    // Approx steps at about the voxel size: accurate enough for a preview while dragging.
-    const Volume& v = *scene.volume;
-    options.approxStepMm = std::min({v.spacing.x, v.spacing.y, v.spacing.z}) * double(downsample);
     const auto start = std::chrono::steady_clock::now();
     Image image;
     Mask dataMask;
@@ -40,8 +35,6 @@ DrrRender DrrCache::get(const LoadedScene& scene, const Pose& pose, int downsamp
     } else {
         XrayRenderSettings settings;
         settings.threads = threads;
-        settings.trace = trace;
-        settings.approxStepMm = options.approxStepMm;
         image = renderObjects(*scene.bones, objects, appGeometry(scene, pose, downsample),
                               settings);
     }

@@ -1,7 +1,6 @@
 #pragma once
-// DRRs (or slices) keyed by everything they depend on (scene, pose, detector resampling, trace
-// mode, the bones shown and their poses), so a
-// DRR is rendered only when one of those changes. Holds the few most recent images.
+// DRRs (or slices) keyed by everything they depend on (scene, pose, detector resampling, the
+// bones shown and their poses), so a DRR is rendered only when one of those changes. Holds the few most recent images.
 #include <array>
 #include <cstdint>
 #include <deque>
@@ -19,7 +18,6 @@ struct DrrKey {
     std::uint64_t sceneGeneration = 0;
     std::array<double, 6> pose{};
     int downsample = 1;  // detector factor (coarse preview > 1)
-    DrrTrace trace = DrrTrace::Exact;
     ImagingMode mode = ImagingMode::Xray;  // a DRR, or a slice (scene/SliceImages.h)
     ObjectStates objects;                  // empty: the CT as loaded
     bool operator==(const DrrKey&) const = default;
@@ -41,8 +39,7 @@ class DrrCache {
     // In the slice mode the image is the trilinear slice at `pose` (no-data pixels 0).
     // `objects` (objectStates of scene.bones, X-ray mode): the bones shown and where; empty:
     // the whole CT.
-    DrrRender get(const LoadedScene& scene, const Pose& pose, int downsample, DrrTrace trace,
-                  int threads = 0, ImagingMode mode = ImagingMode::Xray,
+    DrrRender get(const LoadedScene& scene, const Pose& pose, int downsample, int threads = 0, ImagingMode mode = ImagingMode::Xray,
                   const ObjectStates& objects = {});
     std::size_t renders() const { return renders_; }  // how many were actually rendered
     void clear() { entries_.clear(); }

@@ -259,7 +259,7 @@ void App::startSolve() {
 
 void App::startXraySolve(int method) {
     const Image reference =
-        referenceCache_.get(*scene_, state_.referencePose, 1, DrrTrace::Exact, options_.drrThreads)
+        referenceCache_.get(*scene_, state_.referencePose, 1, options_.drrThreads)
             .image;
     solver_.start(scene_, reference, state_.userPose,
                   appSolveSettings(parseSearchMethod(kSolveMethods[method]), options_.drrThreads));
@@ -368,11 +368,11 @@ void App::processRequests() {
     } else if (requests.match && scene_) {
         // Judge the exact images, whatever the preview showed.
         const Image user = userCache_
-                               .get(*scene_, state_.userPose, 1, DrrTrace::Exact,
+                               .get(*scene_, state_.userPose, 1,
                                     options_.drrThreads, ImagingMode::Xray, userObjects())
                                .image;
         const Image reference = referenceCache_
-                                    .get(*scene_, state_.referencePose, 1, DrrTrace::Exact,
+                                    .get(*scene_, state_.referencePose, 1,
                                          options_.drrThreads, ImagingMode::Xray,
                                          referenceObjects())
                                     .image;
@@ -425,10 +425,10 @@ void App::updateImages() {
     const ImagingMode mode = state_.mode;
     const Pose& referencePose = referenceCamera();
     const ObjectStates referenceObjectStates = referenceObjects();
-    const DrrKey referenceKey{scene_->generation, referencePose.toArray(), 1, DrrTrace::Exact,
+    const DrrKey referenceKey{scene_->generation, referencePose.toArray(), 1,
                               mode, referenceObjectStates};
     if (referenceKey_ != referenceKey) {
-        DrrRender r = referenceCache_.get(*scene_, referencePose, 1, DrrTrace::Exact, threads,
+        DrrRender r = referenceCache_.get(*scene_, referencePose, 1, threads,
                                           mode, referenceObjectStates);
         referenceDrr_ = std::move(r.image);
         referenceDataMask_ = std::move(r.dataMask);
@@ -438,17 +438,16 @@ void App::updateImages() {
         state_.referenceEdges = edgeLetters(referencePose);
     }
 
-    // While a slider is dragged: a coarser film and sampled rays; exact again on release.
+    // While a slider is dragged: a coarser film, traced exactly; the full film again on release.
     const bool coarse = state_.interacting && state_.coarseWhileDragging;
     const int factor = coarse ? state_.timings.coarseFactor : 1;
-    const DrrTrace trace = DrrTrace::Exact;
     const Pose& userPose = shownUserPose();
     const ObjectStates userObjectStates = userObjects();
-    const DrrKey userKey{scene_->generation, userPose.toArray(), factor, trace, mode,
+    const DrrKey userKey{scene_->generation, userPose.toArray(), factor, mode,
                          userObjectStates};
     if (userKey_ != userKey) {
         DrrRender r =
-            userCache_.get(*scene_, userPose, factor, trace, threads, mode, userObjectStates);
+            userCache_.get(*scene_, userPose, factor, threads, mode, userObjectStates);
         userDrr_ = std::move(r.image);
         userDataMask_ = std::move(r.dataMask);
         state_.timings.userDrrMs = r.milliseconds;
@@ -480,7 +479,7 @@ void App::updateImages() {
         userDrr_.width == referenceDrr_.width
             ? referenceDrr_
             : referenceCache_
-                  .get(*scene_, referencePose, factor, DrrTrace::Exact, threads, mode,
+                  .get(*scene_, referencePose, factor, threads, mode,
                        referenceObjectStates)
                   .image;
     std::vector<std::uint8_t> rgba;

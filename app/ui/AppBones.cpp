@@ -203,7 +203,7 @@ void App::startBoneSolve(int method, int bone) {
     for (const Pose& camera : cameras) {
         scene.cameras.push_back(appGeometry(*scene_, camera));
         references.push_back(referenceCache_
-                                 .get(*scene_, camera, 1, DrrTrace::Exact, options_.drrThreads,
+                                 .get(*scene_, camera, 1, options_.drrThreads,
                                       ImagingMode::Xray, referenceObjects())
                                  .image);
     }

@@ -41,13 +41,6 @@ enum class DrrOutput {
     Intensity,     // exp(-line integral): radiograph look (only meaningful for Mu)
 };
 
-enum class DrrTrace {
-    Exact,  // Siddon/Jacobs exact voxel traversal with empty-space skipping
-    // Trilinear sampling at approxStepMm. Measured slower than Exact on the CPU at 1-4 mm
-    // steps (docs/benchmarks-drr.md); for fast previews prefer DrrValueOptions::downsample.
-    Approx,
-};
-
 // How the exact trace walks the voxels; all give the same segments (docs/drr.md).
 enum class DrrExactWalk {
     Auto,    // Dense where the volume has few empty/uniform bricks and the CPU has AVX-512
@@ -57,8 +50,9 @@ enum class DrrExactWalk {
 
 struct DrrRenderOptions {
     DrrOutput output = DrrOutput::LineIntegral;
-    DrrTrace trace = DrrTrace::Exact;
-    double approxStepMm = 1.0;  // sample spacing along the ray for Approx
+    // Always the exact trace. Trilinear sampling was removed: 2.6-22x slower than the exact
+    // trace at a larger error (docs/benchmarks-drr.md); fast previews trace a downsampled
+    // volume (DrrValueOptions::downsample, coarsenDrrVolume) or film (downsampled()) exactly.
     int threads = 0;            // 0 = all cores; the image is bit-identical for any count
     // Added: false = plain traversal of every voxel of the (cropped) box and every pixel
     // (no bricks, no projected-box pixel limit). Same result up to summation order; for tests.

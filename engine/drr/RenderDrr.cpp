@@ -15,7 +15,6 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
-#include <sstream>
 
 #include "core/Error.h"
 #include "core/Parallel.h"
@@ -238,31 +237,6 @@ void walkSkipping(const DrrVolume& v, const LocalRay& r, double aBegin, double a
     }
 }
 
-// Trilinear interpolation with voxel centres at (i + 0.5) * spacing; zero outside the grid.
-double trilinear(const DrrVolume& v, const glm::dvec3& q) {
-    // Samples lie in the box grown by half a voxel (clipped), so x is in [-1, n]: the lower
-    // corner i0 is clamped to [-1, n-1] and all eight neighbours are inside the zero padding,
-    // with no bounds checks. Clamping only moves weight between a voxel and the padding at the
-    // outermost half voxel, where both interpolate towards zero anyway.
-    double f[3];
-    int i0[3];
-    for (int a = 0; a < 3; ++a) {
-        const double x = q[a] * v.invSpacing[a] - 0.5;
-        const double fl = std::clamp(std::floor(x), -1.0, double(v.dims[a] - 1));
-        i0[a] = static_cast<int>(fl);
-        f[a] = std::clamp(x - fl, 0.0, 1.0);
-    }
-    const float* p = v.values.data() + v.at(i0[0], i0[1], i0[2]);
-    const std::ptrdiff_t sy = v.paddedDims.x, sz = std::ptrdiff_t(v.paddedDims.x) * v.paddedDims.y;
-    const double c00 = p[0] + f[0] * (double(p[1]) - p[0]);
-    const double c10 = p[sy] + f[0] * (double(p[sy + 1]) - p[sy]);
-    const double c01 = p[sz] + f[0] * (double(p[sz + 1]) - p[sz]);
-    const double c11 = p[sz + sy] + f[0] * (double(p[sz + sy + 1]) - p[sz + sy]);
-    const double c0 = c00 + f[1] * (c10 - c00);
-    const double c1 = c01 + f[1] * (c11 - c01);
-    return c0 + f[2] * (c1 - c0);
-}
-
 struct PixelRange {
     int col0, col1, row0, row1;  // [col0, col1) x [row0, row1)
 };
@@ -360,54 +334,21 @@ std::uint64_t drrTraversalSteps(const DrrVolume& v, const ProjectionGeometry& g)
     return steps;
 }
 
-namespace {
-
-// Bounds of the work a step implies for Approx: no ray crosses more than the box diagonal, so
-// samples per ray <= diagonal / step (this also keeps the count within int) and samples in all
-// <= pixels * that. At roughly 5-10 ns a sample, the total limit is some tens of CPU seconds.
-constexpr double kMaxApproxSamplesPerRay = 1e6;
-constexpr double kMaxApproxSamples = 4e9;
-
-void checkApproxWork(double diagonalMm, const PixelRange& range, double stepMm) {
-    const double pixels =
-        double(range.col1 - range.col0) * double(range.row1 - range.row0);
-    const double perRay = diagonalMm / stepMm;
-    if (perRay <= kMaxApproxSamplesPerRay && perRay * pixels <= kMaxApproxSamples) return;
-    const double minStep =
-        diagonalMm * std::max(1.0 / kMaxApproxSamplesPerRay, pixels / kMaxApproxSamples);
-    std::ostringstream msg;
-    msg << "DRR approximate step " << stepMm << " mm implies up to " << perRay
-        << " samples per ray over " << pixels << " pixels (volume diagonal " << diagonalMm
-        << " mm), beyond the limit of " << kMaxApproxSamplesPerRay << " per ray and "
-        << kMaxApproxSamples << " in all: use a step of at least " << minStep << " mm";
-    throw Error(msg.str());
-}
-
-}  // namespace
-
 Image renderDrr(const DrrVolume& v, const ProjectionGeometry& g, const DrrRenderOptions& options) {
     g.validate("DRR geometry");
-    const bool approx = options.trace == DrrTrace::Approx;
-    if (approx && !(std::isfinite(options.approxStepMm) && options.approxStepMm > 0.0))
-        throw Error("DRR approximate step must be a positive number of mm");
     const bool intensity = options.output == DrrOutput::Intensity;
     const DetectorGeometry& det = g.detector;
     Image image(det.size.x, det.size.y, intensity ? 1.0f : 0.0f);
     image.spacing = det.spacing;
     if (v.empty) return image;
 
-    // Trilinear samples see up to half a voxel beyond the kept box (fading to zero).
-    const glm::dvec3 boxLo = approx ? -0.5 * v.spacing : glm::dvec3(0.0);
-    const glm::dvec3 boxHi =
-        glm::dvec3(v.dims) * v.spacing + (approx ? 0.5 * v.spacing : glm::dvec3(0.0));
-    const PixelRange range = options.skipEmptySpace ? projectedBox(v, g, boxLo, boxHi)
+    const glm::dvec3 boxExtent = glm::dvec3(v.dims) * v.spacing;
+    const PixelRange range = options.skipEmptySpace ? projectedBox(v, g, glm::dvec3(0.0), boxExtent)
                                                     : PixelRange{0, det.size.x, 0, det.size.y};
     if (range.col0 >= range.col1 || range.row0 >= range.row1) return image;
-    if (approx) checkApproxWork(glm::length(boxHi - boxLo), range, options.approxStepMm);
 
     const glm::dvec3 q0 = v.worldToLocalPoint(g.source);
-    const bool dense = !approx && useDenseWalk(v, options);
-    const glm::dvec3 boxExtent = glm::dvec3(v.dims) * v.spacing;
+    const bool dense = useDenseWalk(v, options);
     // Dense walk: the rays of a row that meet the box, sixteen at a time (DenseWalk.h).
     auto denseBody = [&](int rowBegin, int rowEnd) {
         DenseRay rays[16];
@@ -443,22 +384,7 @@ Image renderDrr(const DrrVolume& v, const ProjectionGeometry& g, const DrrRender
                 const glm::dvec3 pixel = det.pixelCenter(col, row);
                 const double length = glm::length(pixel - g.source);
                 const LocalRay ray = makeRay(q0, v.worldToLocalPoint(pixel));
-                double acc = 0.0;
-                if (!approx) {
-                    acc = traceExact(v, ray, options.skipEmptySpace);
-                } else {
-                    double aMin, aMax;
-                    if (!clipRay(ray, boxLo, boxHi, aMin, aMax)) continue;
-                    const double span = (aMax - aMin) * length;
-                    // span <= the diagonal: checkApproxWork bounded this below int range.
-                    const int samples =
-                        std::max(1, static_cast<int>(std::ceil(span / options.approxStepMm)));
-                    const double dAlpha = (aMax - aMin) / samples;
-                    for (int s = 0; s < samples; ++s)
-                        acc += trilinear(v, ray.q0 + (aMin + (s + 0.5) * dAlpha) * ray.d);
-                    acc *= dAlpha;
-                }
-                const double integral = acc * length;
+                const double integral = traceExact(v, ray, options.skipEmptySpace) * length;
                 image.at(col, row) = static_cast<float>(intensity ? std::exp(-integral) : integral);
             }
         }

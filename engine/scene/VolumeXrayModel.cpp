@@ -43,8 +43,6 @@ void VolumeXrayModel::addLineIntegrals(const ProjectionGeometry& geometryInObjec
                     std::to_string(size.x) + "x" + std::to_string(size.y));
     DrrRenderOptions options;
     options.output = DrrOutput::LineIntegral;
-    options.trace = settings.trace;
-    options.approxStepMm = settings.approxStepMm;
     options.threads = settings.threads;
     const Image drr = renderDrr(*volume_, geometryInObject, options);
     for (std::size_t i = 0; i < image.pixels.size(); ++i) image.pixels[i] += drr.pixels[i];

@@ -26,8 +26,6 @@ struct Box3 {
 
 struct XrayRenderSettings {
     int threads = 0;                     // 0 = all cores; the image is the same for any count
-    DrrTrace trace = DrrTrace::Exact;    // volumes only
-    double approxStepMm = 1.0;           // volumes only, with DrrTrace::Approx
     // The caller needs only where the image is > 0 (edge measures): meshes then add their
     // attenuation on their rasterised silhouette instead of tracing chords (meshdrr/
     // RasterSilhouette.h); volumes render as usual.

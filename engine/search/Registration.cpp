@@ -228,7 +228,6 @@ double Registration::viewCost(const Scene& scene, const View& view, int levelInd
     }
     g = cropDetector(g, rect.col0, rect.row0, rect.cols, rect.rows);
     XrayRenderSettings render;
-    render.trace = settings_.trace;
     render.threads = threads;
     // The edge measure looks only at the footprint's outline.
     render.footprintOnly = settings_.similarity == SimilarityMeasure::EdgeDistance;

@@ -70,7 +70,6 @@ struct RegistrationSettings {
     int threads = 0;            // 0 = all cores
     int footprintDilation = 1;  // pixels added around the DRR footprint mask
     int roiMargin = 4;          // pixels added around the reference footprint box
-    DrrTrace trace = DrrTrace::Exact;
     // Render each candidate only inside the box its visible objects' bounds project to (plus
     // roiMargin), within the level's region: what a real radiograph needs (it has no zero
     // background to crop to). Off for DRR references (the reference footprint already bounds).

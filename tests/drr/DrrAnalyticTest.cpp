@@ -1,6 +1,6 @@
 // Analytic truths beyond the box of ones: convergence to the line integral of a voxelized
 // sphere/ellipsoid, mass conservation of one bright voxel, HU -> mu and thresholds, the same
-// object stored LPS and RAS, and the approximate modes converging to the exact one.
+// object stored LPS and RAS, and a downsampled volume staying close to the exact one.
 #include <cmath>
 #include <cstdio>
 #include <random>
@@ -195,7 +195,7 @@ TEST(DrrAnalytic, LpsAndRasStorageOfTheSameObjectGiveTheSameDrr) {
     }
 }
 
-TEST(DrrAnalytic, ApproximateModesConvergeToTheExactDrr) {
+TEST(DrrAnalytic, ADownsampledVolumeStaysCloseToTheExactDrr) {
     const fm::EllipsoidShape shape{{0, 0, 0}, {30, 20, 25}};
     fm::Volume v =
         fm::voxelize(shape, fm::centeredGrid({40, 30, 34}, {1.6, 1.5, 1.6}), 1.0f, 0.0f, 3, 2);
@@ -209,23 +209,6 @@ TEST(DrrAnalytic, ApproximateModesConvergeToTheExactDrr) {
             sum2 += std::pow(double(image.pixels[i]) - exact.pixels[i], 2);
         return std::sqrt(sum2 / image.pixels.size()) / peak;
     };
-    std::vector<double> errors;
-    for (double step : {4.0, 1.0, 0.25}) {
-        fm::DrrRenderOptions o;
-        o.trace = fm::DrrTrace::Approx;
-        o.approxStepMm = step;
-        errors.push_back(rmsError(fm::renderDrr(*prepared, g, o)));
-    }
-    // Trilinear sampling converges to the integral of the trilinear interpolant, not to the
-    // piecewise-constant one: the error levels off at the interpolation error (~1e-2 here),
-    // but a finer step must never be worse, and the coarse step must be visibly worse.
-    // Bounds: the fine step may not be worse than the middle one beyond 5% (noise of the
-    // level-off); the levelled-off error is ~1e-2 RMS of the peak here, 3e-2 leaves margin.
-    constexpr double kLevelOffSlack = 1.05;
-    constexpr double kTrilinearRmsBound = 0.03;
-    EXPECT_GT(errors[0], errors[2]);
-    EXPECT_LE(errors[2], errors[1] * kLevelOffSlack);
-    EXPECT_LT(errors[2], kTrilinearRmsBound);
     // Downsampled volume, traced exactly: error grows with the factor but stays moderate.
     fm::DrrValueOptions coarse = rawValues();
     coarse.downsample = 2;

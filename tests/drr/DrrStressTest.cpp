@@ -327,9 +327,9 @@ TEST(DrrStress, ThreadCountDoesNotChangeAPixel) {
     const fm::Volume ct = ctLikeVolume();
     const auto prepared = fm::prepareDrrVolume(ct, {});
     const fm::ProjectionGeometry g = fm::test::orbitGeometry(ct.center(), 10, 5, 400, 300, 64, 2.0);
-    for (fm::DrrTrace trace : {fm::DrrTrace::Exact, fm::DrrTrace::Approx}) {
+    for (fm::DrrExactWalk walk : {fm::DrrExactWalk::Bricks, fm::DrrExactWalk::Dense}) {
         fm::DrrRenderOptions o;
-        o.trace = trace;
+        o.walk = walk;
         o.threads = 1;
         const fm::Image one = fm::renderDrr(*prepared, g, o);
         o.threads = 2;
@@ -388,10 +388,10 @@ TEST(DrrStress, EveryPixelFiniteInAwkwardGeometries) {
     geometries.push_back(
         fm::test::orbitGeometry(ct.indexToWorld({-0.5, -0.5, -0.5}), 0, 0, 0, 20, 32, 0.5));
     for (const auto& g : geometries)
-        for (fm::DrrTrace trace : {fm::DrrTrace::Exact, fm::DrrTrace::Approx})
+        for (fm::DrrExactWalk walk : {fm::DrrExactWalk::Bricks, fm::DrrExactWalk::Dense})
             for (fm::DrrOutput output : {fm::DrrOutput::LineIntegral, fm::DrrOutput::Intensity}) {
                 fm::DrrRenderOptions o;
-                o.trace = trace;
+                o.walk = walk;
                 o.output = output;
                 const fm::Image image = fm::renderDrr(*prepared, g, o);
                 EXPECT_TRUE(fm::test::allFinite(image));
@@ -468,11 +468,6 @@ TEST(DrrStress, BadInputsThrowErrors) {
     fm::ProjectionGeometry g = fm::test::orbitGeometry(v.center(), 0, 0, 100, 100, 8, 1.0);
     g.source.x = std::nan("");
     EXPECT_THROW(fm::renderDrr(*prepared, g, {}), fm::Error);
-    g = fm::test::orbitGeometry(v.center(), 0, 0, 100, 100, 8, 1.0);
-    fm::DrrRenderOptions approx;
-    approx.trace = fm::DrrTrace::Approx;
-    approx.approxStepMm = 0.0;
-    EXPECT_THROW(fm::renderDrr(*prepared, g, approx), fm::Error);
 }
 
 }  // namespace
