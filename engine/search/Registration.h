@@ -35,7 +35,6 @@
 
 #include "geometry/Pose.h"
 #include "scene/MassCentre.h"
-#include "scene/MassCentre.h"
 #include "scene/Scene.h"
 #include "scene/SceneParameterization.h"
 #include "search/Optimizer.h"
