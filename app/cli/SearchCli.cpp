@@ -52,7 +52,8 @@ void addSearchOptions(CLI::App* cmd, SearchArgs& a, bool withMethod) {
     cmd->add_option("--budget", a.budget, "Evaluations of the global search (default 600)")
         ->check(CLI::Range(1, kMaxEvaluations));
     cmd->add_option("--polish-budget", a.polishBudget,
-                    "Evaluations of the local polish per level (default 100; 0 = no polish)")
+                    "Evaluations of the local polish at every level (default 100, 30 at the finest "
+                    "level; 0 = no polish)")
         ->check(CLI::Range(0, kMaxEvaluations));
     cmd->add_option("--levels", a.levels,
                     "Detector downsampling factors, coarse to fine (default 4,2,1)");
@@ -76,7 +77,7 @@ RegistrationSettings registrationSettings(const SearchArgs& a, RegistrationSetti
     s.seed = a.seed;
     if (a.budget < 0) throw Error("--budget must be positive");
     if (a.budget > 0) s.globalEvaluations = a.budget;
-    if (a.polishBudget >= 0) s.polishEvaluations = a.polishBudget;
+    if (a.polishBudget >= 0) s.polishEvaluations = s.finestPolishEvaluations = a.polishBudget;
     if (a.threads < 0) throw Error("--threads must be 0 (all cores) or more");
     s.threads = a.threads;
     if (!a.levels.empty()) {
@@ -110,6 +111,8 @@ std::string describeLevels(const RegistrationSettings& s) {
         text += (i ? "," : " ") + std::to_string(s.levelFactors[i]);
     text += ", budget " + std::to_string(s.globalEvaluations) + " + " +
             std::to_string(s.polishEvaluations) + " per polish";
+    const int finest = s.finestPolishEvaluations >= 0 ? s.finestPolishEvaluations : s.polishEvaluations;
+    if (finest != s.polishEvaluations) text += " (" + std::to_string(finest) + " at the finest)";
     return text;
 }
 

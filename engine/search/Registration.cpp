@@ -10,6 +10,7 @@
 #include "geometry/DetectorCrop.h"
 #include "scene/CoarseVolumes.h"
 #include "search/AxisLineSearch.h"
+#include "search/PivotedSearch.h"
 #include "similarity/ImagePyramid.h"
 
 namespace fm {
@@ -99,6 +100,15 @@ Registration::Registration(Scene scene, SceneParameterizationPtr parameterizatio
     if (settings_.depthRounds < 0 || !(settings_.depthStepMm > 0.0))
         throw Error("registration: depth rounds must be >= 0 and the depth step positive");
 
+    if (settings_.tiltRounds < 0 || !(settings_.tiltStepDeg > 0.0) ||
+        settings_.finestPolishEvaluations < -1)
+        throw Error("registration: tilt rounds must be >= 0, the tilt step positive and the "
+                    "finest polish budget >= 0 (or -1: as the other levels)");
+    if (settings_.turnAboutMassCentre)
+        for (const SceneObject& object : scene_.objects)
+            massCentres_.push_back(object.visible && object.model
+                                       ? massCentre(*object.model, settings_.threads)
+                                       : std::nullopt);
     // Parameterizations move cameras but never resize them: the zero numbers show the sizes.
     const Scene probe = sceneAt(scene_, *parameterization_, SceneParams{});
     if (settings_.dropLevelsFinerThanVoxels) {
@@ -189,10 +199,19 @@ Registration::Registration(Scene scene, SceneParameterizationPtr parameterizatio
     }
 }
 
+int Registration::finestPolishBudget() const {
+    return settings_.finestPolishEvaluations >= 0 ? settings_.finestPolishEvaluations
+                                                  : settings_.polishEvaluations;
+}
+
 int Registration::totalBudget() const {
-    const int polishLevels = levelCount() - 1 + (settings_.polishCoarsest ? 1 : 0);
+    // Polished levels other than the finest (which may be the coarsest too).
+    const int polishLevels = std::max(0, levelCount() - 2 + (settings_.polishCoarsest ? 1 : 0));
+    const int finest = levelCount() > 1 || settings_.polishCoarsest ? finestPolishBudget() : 0;
     const int depth = settings_.depthRounds > 0 ? 5 * settings_.depthRounds + 1 : 0;
-    return settings_.globalEvaluations + polishLevels * settings_.polishEvaluations + depth;
+    const int tilt = settings_.tiltRounds > 0 ? 2 * (5 * settings_.tiltRounds + 1) : 0;
+    return settings_.globalEvaluations + polishLevels * settings_.polishEvaluations + finest +
+           depth + tilt;
 }
 
 double Registration::viewCost(const Scene& scene, const View& view, int levelIndex,
@@ -277,8 +296,16 @@ RegistrationResult Registration::run(const SceneParams& start,
     // the start camera's axes, a depth step of a start 10 deg off also moves the image
     // sideways by sin(10 deg) of the step, and the in-plane match then pins the depth.
     SceneParams anchor = start;
+    // Angle changes turn about the mass centre of what moves (PivotedSearch.h), if it is known.
+    const PivotedSearchCoordinates coordinates(scene_, parameterization_, views_.front().camera,
+                                               start, massCentres_);
+    // Only the refinements turn about it: the global search keeps the parameterization's own
+    // coordinates (its radius spans what the start may be off by, about the centre it names).
+    bool aboutPivot = false;
     auto toParams = [&](const Point& p) {
-        return parameterization_->fromSearchPoint(anchor, {p[0], p[1], p[2], p[3], p[4], p[5]});
+        const std::array<double, 6> point{p[0], p[1], p[2], p[3], p[4], p[5]};
+        return aboutPivot ? coordinates.toParams(anchor, point)
+                          : parameterization_->fromSearchPoint(anchor, point);
     };
     RegistrationResult result;
     Rng seeds(settings_.seed);
@@ -297,10 +324,14 @@ RegistrationResult Registration::run(const SceneParams& start,
         anchor = toParams(current);
         for (int d = 0; d < 6; ++d) anchorOffset[d] += current[d];
         std::fill(current.begin(), current.end(), 0.0);
+        aboutPivot = true;  // the zero point is the anchor in both coordinates
     };
 
+    // lineAxis >= 0: a parabola line search along that search coordinate, first spacing
+    // lineStep; otherwise `method`.
     auto runStage = [&](int levelIndex, SearchMethod method, double radiusScale, int maxEvals,
-                        const char* stage) {
+                        const char* stage, int lineAxis = -1, double lineStep = 0.0,
+                        int lineRounds = 0) {
         const int factor = settings_.levelFactors[levelIndex];
         BatchCost cost = [&](const std::vector<Point>& points, std::vector<double>& costs) {
             if (points.size() == 1) {
@@ -326,9 +357,7 @@ RegistrationResult Registration::run(const SceneParams& start,
             upper[d] = std::max(0.0, startUpper[d] - anchorOffset[d]);
             current[d] = std::clamp(current[d], lower[d], upper[d]);
         }
-        const bool depthStage = std::string(stage) == "depth";
-        if (depthStage)
-            radius[2] = 2.0 * settings_.depthStepMm;  // the line search starts at radius / 2
+        if (lineAxis >= 0) radius[lineAxis] = 2.0 * lineStep;  // the line search starts at radius / 2
         OptimizerOptions options;
         options.maxEvaluations = std::max(1, maxEvals);
         options.seed = seeds.split();
@@ -352,10 +381,10 @@ RegistrationResult Registration::run(const SceneParams& start,
             progress(r);
         };
         SearchProblem problem(cost, current, radius, {lower, upper}, options);
-        if (depthStage) {
+        if (lineAxis >= 0) {
             AxisLineSearchSettings line;
-            line.axis = 2;
-            line.rounds = settings_.depthRounds;
+            line.axis = lineAxis;
+            line.rounds = lineRounds;
             runAxisLineSearch(problem, line);
         } else {
             runOptimizer(method, problem);
@@ -367,14 +396,24 @@ RegistrationResult Registration::run(const SceneParams& start,
         result.similarity = -r.bestCost;
     };
 
-    const int depthEvaluations = settings_.depthRounds > 0 ? 5 * settings_.depthRounds + 1 : 0;
+    auto lineSearch = [&](int level, int axis, double step, int rounds, const char* stage) {
+        reanchor();
+        if (rounds > 0 && !result.stopped)
+            runStage(level, settings_.polishMethod, 1.0, 5 * rounds + 1, stage, axis, step, rounds);
+    };
     auto polish = [&](int level, double scale) {
+        const bool finest = level == levelCount() - 1;
+        // The out-of-plane angles (search coordinates 3 and 4) first: coarse levels barely see
+        // them, and a line search moves along one in a few batches where a simplex creeps.
+        if (finest) {
+            lineSearch(level, 3, settings_.tiltStepDeg, settings_.tiltRounds, "tilt");
+            lineSearch(level, 4, settings_.tiltStepDeg, settings_.tiltRounds, "tilt");
+        }
         reanchor();
-        if (settings_.polishEvaluations > 0 && !result.stopped)
-            runStage(level, settings_.polishMethod, scale, settings_.polishEvaluations, "polish");
-        reanchor();
-        if (depthEvaluations > 0 && !result.stopped && level == levelCount() - 1)
-            runStage(level, settings_.polishMethod, scale, depthEvaluations, "depth");
+        const int budget = finest ? finestPolishBudget() : settings_.polishEvaluations;
+        if (budget > 0 && !result.stopped)
+            runStage(level, settings_.polishMethod, scale, budget, "polish");
+        if (finest) lineSearch(level, 2, settings_.depthStepMm, settings_.depthRounds, "depth");
     };
     runStage(0, settings_.method, 1.0, settings_.globalEvaluations, "global");
     double polishScale = settings_.polishRadiusFraction;

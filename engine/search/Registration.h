@@ -34,6 +34,7 @@
 #include <optional>
 
 #include "geometry/Pose.h"
+#include "scene/MassCentre.h"
 #include "scene/Scene.h"
 #include "scene/SceneParameterization.h"
 #include "search/Optimizer.h"
@@ -54,6 +55,9 @@ struct RegistrationSettings {
     std::vector<int> levelFactors{4, 2, 1};
     int globalEvaluations = 600;  // budget of the global search
     int polishEvaluations = 100;  // budget of the Nelder-Mead polish at each level
+    // Budget of the polish at the finest level (-1: polishEvaluations). The tilt line searches
+    // before it and the turn about the mass centre leave it little to do (docs/search.md).
+    int finestPolishEvaluations = 30;
     bool polishCoarsest = true;   // also polish at the coarsest level after the global search
     SearchMethod polishMethod = SearchMethod::NelderMead;  // local refinement at each level
     double polishRadiusFraction = 0.15;  // polish radius = searchRadius * this, halved per level
@@ -64,8 +68,13 @@ struct RegistrationSettings {
     // single-view matching is weakest along depth and simplex methods stall there.
     // The first round spaces its points depthStepMm apart (reach +-2 steps, then 1/3 of that
     // per round): wide enough to correct the ~1 mm depth errors coarse levels leave.
-    int depthRounds = 4;
+    int depthRounds = 3;
     double depthStepMm = 1.5;
+    // Before the finest polish, the same line searches along the two out-of-plane angles
+    // (search coordinates 3 and 4), first spacing tiltStepDeg: the coarse levels leave them
+    // about 1 deg off (they barely change a coarse image), and a simplex creeps that far.
+    int tiltRounds = 3;
+    double tiltStepDeg = 1.5;
     std::uint64_t seed = 1;
     int threads = 0;            // 0 = all cores
     int footprintDilation = 1;  // pixels added around the DRR footprint mask
@@ -86,6 +95,10 @@ struct RegistrationSettings {
     // kept. Only for scenes of volumes (a mesh has no voxel size). Off by default; on in
     // `fluoromatch register` / `evaluate` on a CT unless --levels is given.
     bool dropLevelsFinerThanVoxels = false;
+    // Angle changes turn the scene about the mass centre of what the parameters move
+    // (PivotedSearch.h) instead of the parameterization's own centre: angles and translations
+    // then barely couple, and the simplexes converge in fewer evaluations.
+    bool turnAboutMassCentre = true;
 };
 
 // One image of the registration: which camera of the scene took it, the image, and which of
@@ -100,7 +113,7 @@ struct RegistrationProgress {
     int level = 0;  // index into levelFactors
     int levelCount = 0;
     int factor = 1;          // detector downsampling of this level
-    const char* stage = "";  // "global" or "polish"
+    const char* stage = "";  // "global", "polish", "tilt" (finest level) or "depth"
     int evaluations = 0;     // total so far
     int evaluationBudget = 0;
     double bestCost = 0.0;  // -similarity at this level (lower is better)
@@ -147,6 +160,7 @@ class Registration {
     const SceneParameterization& parameterization() const { return *parameterization_; }
     int levelCount() const { return static_cast<int>(settings_.levelFactors.size()); }
     int totalBudget() const;
+    int finestPolishBudget() const;
 
   private:
     struct ViewLevel {
@@ -168,6 +182,7 @@ class Registration {
     SceneParameterizationPtr parameterization_;
     RegistrationSettings settings_;
     std::vector<View> views_;
+    std::vector<std::optional<MassCentre>> massCentres_;  // per object of scene_; empty = off
 };
 
 // The detector pixels of `camera` that `box` (in `object`'s frame, moved by its pose) can

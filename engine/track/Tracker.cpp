@@ -22,6 +22,11 @@ RegistrationSettings TrackSettings::defaultTrackingRegistration() {
     s.polishEvaluations = 200;
     // Biplane constrains depth as well as the film axes: no separate depth line search.
     s.depthRounds = 0;
+    // Nor a tilt search: the second view sees the out-of-plane angles in its plane. The
+    // 200-evaluation polish at every level, the finest included.
+    s.tiltRounds = 0;
+    s.finestPolishEvaluations = -1;
+    s.turnAboutMassCentre = false;  // not measured on tracking
     s.cropToModel = true;
     return s;
 }
