@@ -101,9 +101,14 @@ Registration::Registration(Scene scene, SceneParameterizationPtr parameterizatio
         throw Error("registration: depth rounds must be >= 0 and the depth step positive");
 
     if (settings_.tiltRounds < 0 || !(settings_.tiltStepDeg > 0.0) ||
-        settings_.finestPolishEvaluations < -1)
+        settings_.finestPolishEvaluations < -1 || !(settings_.hypothesisTiltDeg >= 0.0) ||
+        !std::isfinite(settings_.hypothesisTiltDeg) ||
+        !(settings_.hypothesisRadiusFraction > 0.0) ||
+        !std::isfinite(settings_.hypothesisRadiusFraction) ||
+        settings_.hypothesisEvaluations < 1 || settings_.hypothesesKept < 1)
         throw Error("registration: tilt rounds must be >= 0, the tilt step positive and the "
-                    "finest polish budget >= 0 (or -1: as the other levels)");
+                    "finest polish budget >= 0 (or -1: as the other levels); the hypothesis tilt "
+                    ">= 0, its budget and the hypotheses kept >= 1");
     if (settings_.turnAboutMassCentre)
         for (const SceneObject& object : scene_.objects)
             massCentres_.push_back(object.visible && object.model
@@ -210,8 +215,15 @@ int Registration::totalBudget() const {
     const int finest = levelCount() > 1 || settings_.polishCoarsest ? finestPolishBudget() : 0;
     const int depth = settings_.depthRounds > 0 ? 5 * settings_.depthRounds + 1 : 0;
     const int tilt = settings_.tiltRounds > 0 ? 2 * (5 * settings_.tiltRounds + 1) : 0;
+    int hypotheses = 0;
+    if (settings_.hypothesisTiltDeg > 0.0 && levelCount() > 1) {
+        // Four polished hypotheses, five scores at the next level, more polishes there.
+        const int next = levelCount() == 2 ? finest + depth + tilt : settings_.polishEvaluations;
+        hypotheses = 4 * settings_.hypothesisEvaluations + 5 +
+                     (std::clamp(settings_.hypothesesKept, 1, 5) - 1) * next;
+    }
     return settings_.globalEvaluations + polishLevels * settings_.polishEvaluations + finest +
-           depth + tilt;
+           depth + tilt + hypotheses;
 }
 
 double Registration::viewCost(const Scene& scene, const View& view, int levelIndex,
@@ -418,7 +430,62 @@ RegistrationResult Registration::run(const SceneParams& start,
     runStage(0, settings_.method, 1.0, settings_.globalEvaluations, "global");
     double polishScale = settings_.polishRadiusFraction;
     if (settings_.polishCoarsest) polish(0, polishScale);
-    for (int k = 1; k < levelCount() && !result.stopped; ++k) {
+    int nextLevel = 1;
+    if (settings_.hypothesisTiltDeg > 0.0 && levelCount() > 1 && !result.stopped) {
+        // A branch of the search: its anchor, its point around it and the anchor's offset.
+        struct Branch {
+            SceneParams anchor;
+            Point current, anchorOffset;
+            double similarity = 0.0;
+        };
+        auto save = [&]() { return Branch{anchor, current, anchorOffset, result.similarity}; };
+        auto restore = [&](const Branch& b) {
+            anchor = b.anchor, current = b.current, anchorOffset = b.anchorOffset;
+            result.similarity = b.similarity;
+        };
+        reanchor();
+        const Branch found = save();
+        std::vector<Branch> branches{found};
+        for (int axis = 3; axis <= 4; ++axis)
+            for (double sign : {-1.0, 1.0}) {
+                restore(found);
+                current[axis] = sign * settings_.hypothesisTiltDeg;
+                if (!result.stopped)
+                    runStage(0, settings_.polishMethod,
+                             settings_.hypothesisRadiusFraction * polishScale,
+                             settings_.hypothesisEvaluations, "hypothesis");
+                branches.push_back(save());
+            }
+        // The next level's verdict on each, one evaluation each (in parallel).
+        std::vector<SceneParams> params;
+        for (const Branch& b : branches) {
+            restore(b);
+            params.push_back(toParams(current));
+        }
+        std::vector<double> costs(params.size());
+        parallelFor(
+            static_cast<int>(params.size()), settings_.threads,
+            [&](int begin, int end) {
+                for (int i = begin; i < end; ++i) costs[i] = levelCost(params[i], 1, 1);
+            },
+            1);
+        evaluationsBefore += static_cast<int>(params.size());
+        std::vector<int> order(branches.size());
+        for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
+        std::stable_sort(order.begin(), order.end(),
+                         [&](int a, int b) { return costs[a] < costs[b]; });
+        const std::size_t kept = std::clamp<std::size_t>(settings_.hypothesesKept, 1, order.size());
+        std::optional<Branch> best;
+        for (std::size_t i = 0; i < kept && !result.stopped; ++i) {
+            restore(branches[order[i]]);
+            polish(1, 0.5 * polishScale);
+            if (!best || result.similarity > best->similarity) best = save();
+        }
+        if (best) restore(*best);
+        polishScale *= 0.5;
+        nextLevel = 2;
+    }
+    for (int k = nextLevel; k < levelCount() && !result.stopped; ++k) {
         polishScale *= 0.5;
         polish(k, polishScale);
     }

@@ -99,6 +99,18 @@ struct RegistrationSettings {
     // (PivotedSearch.h) instead of the parameterization's own centre: angles and translations
     // then barely couple, and the simplexes converge in fewer evaluations.
     bool turnAboutMassCentre = true;
+    // Single-view out-of-plane hypotheses (docs/real-xray.md, "Proof on the JTML frames"): a
+    // coarse image barely tells a pose from the same pose turned a few degrees out of the film
+    // plane and shifted in depth, and the coarsest level's optimum can sit in the wrong one of
+    // two such basins. With hypothesisTiltDeg > 0 the best pose of the coarsest level and that
+    // pose turned by +-hypothesisTiltDeg about each out-of-plane search coordinate (3 and 4)
+    // are each polished at the coarsest level (hypothesisEvaluations, hypothesisRadiusFraction
+    // of its polish radius), the next level scores the five once, polishes the best hypothesesKept, and the
+    // search goes on from the best of those. 0 = off (the default).
+    double hypothesisTiltDeg = 0.0;
+    int hypothesisEvaluations = 40;
+    double hypothesisRadiusFraction = 0.25;
+    int hypothesesKept = 2;
 };
 
 // One image of the registration: which camera of the scene took it, the image, and which of

@@ -14,7 +14,8 @@ namespace fm {
 // The search for a real radiograph and a mesh (docs/real-xray.md gives the figures):
 // edge-distance similarity (implants) or gradient NCC (CT volumes), levels 4, 2, 1 of a
 // 1024-pixel image, a start within 5 mm in-plane, 20 mm in depth and 5 deg, each candidate
-// rendered only where the model projects.
+// rendered only where the model projects; for edge distance also out-of-plane hypotheses
+// after the coarsest level and wider polishes.
 RegistrationSettings realXraySettings(SimilarityMeasure similarity = SimilarityMeasure::EdgeDistance);
 
 struct ObjectRegistrationResult {

@@ -1,5 +1,6 @@
 // Registration on the knee phantom, the geometry helpers it relies on, and the target error.
 #include <cmath>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -246,6 +247,42 @@ TEST(Registration, DeterministicForASeedAndStoppable) {
     EXPECT_LT(c.evaluations, a.evaluations);
 }
 
+TEST(Registration, OutOfPlaneHypothesesKeepTheSearchDeterministicAndInBudget) {
+    // The hypotheses (realXraySettings turns them on) on the knee: the same result for 1 and 2
+    // threads, the evaluations within totalBudget, the stage reported, the truth still found.
+    const Pose truth = parsePose("0,0,0,10,5,0");
+    const Image reference = render(knee().model(truth));
+    const Pose start = parsePose("3,-3,2,13.5,2,-3");
+    RegistrationSettings s;
+    s.levelFactors = {4, 2};
+    s.globalEvaluations = 200;
+    s.polishEvaluations = 60;
+    s.hypothesisTiltDeg = 6.0;
+    s.hypothesisEvaluations = 20;
+    std::vector<RegistrationResult> runs;
+    int hypothesisReports = 0;
+    for (int threads : {1, 2}) {
+        s.threads = threads;
+        const Registration reg = knee().registration(reference, s);
+        runs.push_back(reg.run(start.toArray(), [&](const RegistrationProgress& p) {
+            hypothesisReports += std::string(p.stage) == "hypothesis";
+            EXPECT_LE(p.evaluations, p.evaluationBudget);
+        }));
+        EXPECT_LE(runs.back().evaluations, reg.totalBudget());
+        // At least the 4 hypotheses' polishes and the 5 scores more than without them.
+        RegistrationSettings off = s;
+        off.hypothesisTiltDeg = 0.0;
+        EXPECT_GT(reg.totalBudget(), knee().registration(reference, off).totalBudget() + 4 * 20 + 5);
+    }
+    EXPECT_EQ(runs[0].params, runs[1].params);
+    EXPECT_EQ(runs[0].costHistory, runs[1].costHistory);
+    EXPECT_GT(hypothesisReports, 0);
+    const double mtre = targetRegistrationError(knee().model(truth), knee().model(runs[0].pose()),
+                                                registrationTargets(knee().volume))
+                            .meanMm;
+    EXPECT_LT(mtre, kSuccessMtreMm) << formatPose(runs[0].pose());
+}
+
 TEST(Registration, RejectsBadInput) {
     const Image reference = render(knee().model(Pose{}));
     RegistrationSettings s;
@@ -259,6 +296,15 @@ TEST(Registration, RejectsBadInput) {
     s.levelFactors = {3};
     EXPECT_THROW(knee().registration(reference, s), Error);
     s.levelFactors = {4, 2};
+    for (double tilt : {-1.0, std::nan(""), HUGE_VAL}) {
+        RegistrationSettings h = s;
+        h.hypothesisTiltDeg = tilt;
+        EXPECT_THROW(knee().registration(reference, h), Error) << tilt;
+    }
+    RegistrationSettings h = s;
+    h.hypothesisTiltDeg = 6.0;
+    h.hypothesesKept = 0;
+    EXPECT_THROW(knee().registration(reference, h), Error);
     s.searchRadius[2] = 0.0;
     EXPECT_THROW(knee().registration(reference, s), Error);
 }
