@@ -1,10 +1,9 @@
 // Tracking through biplane sequences with real geometry: the radius of Autoscoper's sample
 // wrist seen through the two real wrist calibrations (their 1760-pixel images at 512 x 512, the
 // trial's RenderResolution, as tracking renders them), moving along a smooth known trajectory
-// with noise. Every frame must
-// come back within 0.25 mm (bone centre) and 0.25 deg; a stretch where the bone leaves one
-// camera's view is tracked on the other and reported as single-view; a resumed run gives the
-// same poses as an uninterrupted one.
+// with noise. Every frame must come back within 0.25 mm (bone centre) and 0.25 deg; a stretch
+// where the bone leaves one camera's view is tracked on the other and reported as single-view;
+// a resumed run gives the same poses as an uninterrupted one.
 #include <cmath>
 
 #include <gtest/gtest.h>
