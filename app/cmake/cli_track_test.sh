@@ -44,13 +44,13 @@ head -1 "$T/whole.csv" | grep -q "cost_cam1,cost_cam2,evaluations,time_ms" || fa
 grep -q "1 frames of radius already in" "$T/out" || fail "resume did not say what it kept"
 cmp "$T/whole.tra" "$T/resumed.tra" || fail "resumed run differs from the uninterrupted one"
 
-# overlay: one PNG per camera at the trial's tracking size (440 x 440), refusals named.
+# overlay: one PNG per camera at the trial's tracking size (512 x 512, its RenderResolution), refusals named.
 "$FM" overlay --trial "$TRIAL" --bone radius --tra "$T/whole.tra" --frame 1 --out "$T/ov.png" >"$T/out" 2>&1 \
     || { cat "$T/out"; fail "overlay failed"; }
 for c in 1 2; do
     [ "$(head -c 8 "$T/ov_cam$c.png" | od -An -tx1 | tr -d ' \n')" = "89504e470d0a1a0a" ] || fail "ov_cam$c.png is not a PNG"
-    [ "$(od -An -tu1 -j16 -N8 "$T/ov_cam$c.png" | tr -s ' ' | sed 's/^ //')" = "0 0 1 184 0 0 1 184" ] \
-        || fail "ov_cam$c.png is not 440 x 440"
+    [ "$(od -An -tu1 -j16 -N8 "$T/ov_cam$c.png" | tr -s ' ' | sed 's/^ //')" = "0 0 2 0 0 0 2 0" ] \
+        || fail "ov_cam$c.png is not 512 x 512"
 done
 expect_error "no pose of radius at frame 2" "$FM" overlay --trial "$TRIAL" --bone radius --tra "$T/whole.tra" --frame 2 --out "$T/o.png"
 expect_error "one --tra per --bone" "$FM" overlay --trial "$TRIAL" --bone radius --bone ulna --tra "$T/whole.tra" --tra "$T/whole.tra" --tra "$T/whole.tra" --out "$T/o.png"

@@ -152,4 +152,18 @@ void checkImageSize(const PinholeCamera& camera, const std::string& cameraWhat, 
                     std::to_string(width) + "x" + std::to_string(height));
 }
 
+PinholeCamera resizedCamera(PinholeCamera c, glm::ivec2 size) {
+    if (size.x < 1 || size.y < 1)
+        throw Error("camera: cannot resize its images to " + std::to_string(size.x) + "x" +
+                    std::to_string(size.y) + " pixels");
+    const double sx = double(c.imageSize.x) / size.x, sy = double(c.imageSize.y) / size.y;
+    c.fx /= sx;
+    c.fy /= sy;
+    c.cx = (c.cx + 0.5) / sx - 0.5;
+    c.cy = (c.cy + 0.5) / sy - 0.5;
+    c.imageSize = size;
+    c.pixelPitch *= sx;
+    return c;
+}
+
 }  // namespace fm

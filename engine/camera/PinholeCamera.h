@@ -83,6 +83,12 @@ ProjectionGeometry toProjectionGeometry(const PinholeCamera& camera);
 // positive focal lengths describes it.
 PinholeCamera cameraFromGeometry(const ProjectionGeometry& geometry, const std::string& what);
 
+// The camera of its images resampled to `size` by area averaging (similarity/AreaResample.h):
+// new pixel c covers old pixels [c s, (c + 1) s), s = old width / new width (rows alike), so
+// its centre is old column (c + 0.5) s - 0.5: fx / s, cx' = (cx + 0.5) / s - 0.5. The detector
+// plane stays where it was (pitch times s). Throws fm::Error for a size below 1.
+PinholeCamera resizedCamera(PinholeCamera camera, glm::ivec2 size);
+
 // Refuses an image whose size differs from the calibration's: fm::Error naming both files and
 // the "image size" field.
 void checkImageSize(const PinholeCamera& camera, const std::string& cameraWhat, int width,

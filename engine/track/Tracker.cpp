@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 
 #include "core/Error.h"
 #include "core/Random.h"
@@ -17,9 +18,10 @@ RegistrationSettings TrackSettings::defaultTrackingRegistration() {
     s.similarity = SimilarityMeasure::GradientNcc;
     s.searchRadius = {3.0, 3.0, 3.0, 3.0, 3.0, 3.0};
     s.boundsFactor = 2.0;
-    s.levelFactors = {4, 2, 1};
+    // The coarse search only: full resolution is the fresh simplex of step 3b.
+    s.levelFactors = {4, 2};
     s.globalEvaluations = 240;
-    s.polishEvaluations = 200;
+    s.polishEvaluations = 100;
     // Biplane constrains depth as well as the film axes: no separate depth line search.
     s.depthRounds = 0;
     // Nor a tilt search: the second view sees the out-of-plane angles in its plane. The
@@ -113,28 +115,32 @@ FrameRecord Tracker::trackFrame(int frame, const RigidTransform& start,
     if (singleView) rs.searchRadius[2] = settings_.singleViewDepthRadius;  // depth: see header
     std::vector<std::size_t> used;
     for (const RegistrationView& v : views) used.push_back(v.camera);
-    const Registration reg(scene_, param, views, rs);
-    RegistrationResult r = reg.run(param->referenceParams(), {}, stop);
+    const Registration coarse(scene_, param, views, rs);
+    RegistrationResult r = coarse.run(param->referenceParams(), {}, stop);
     int evaluations = r.evaluations;
+    const Registration* answeredBy = &coarse;
+    std::optional<Registration> fine;
     if (settings_.refineEvaluations > 0 && !r.stopped) {
-        // 3b. Restart the simplex at full resolution around the answer.
-        RegistrationSettings fine = rs;
-        fine.levelFactors = {1};
-        fine.method = SearchMethod::NelderMead;
-        fine.searchRadius.fill(settings_.refineRadius);
-        if (singleView) fine.searchRadius[2] = settings_.singleViewDepthRadius;
-        fine.globalEvaluations = settings_.refineEvaluations;
-        fine.polishEvaluations = 0;
-        fine.polishCoarsest = false;
-        const Registration refine(scene_, param, std::move(views), fine);
-        const RegistrationResult f = refine.run(r.params, {}, stop);
-        evaluations += f.evaluations;
-        if (f.similarity >= r.similarity || f.stopped) r = f;
+        // 3b. Full resolution: a fresh simplex around the coarse answer. Its answer is taken
+        // as it is: the coarse cost is at another resolution (not comparable), and the simplex
+        // starts with the coarse answer as a vertex, so it never ends worse at full resolution.
+        RegistrationSettings full = rs;
+        full.levelFactors = {1};
+        full.method = SearchMethod::NelderMead;
+        full.searchRadius.fill(settings_.refineRadius);
+        if (singleView) full.searchRadius[2] = settings_.singleViewDepthRadius;
+        full.globalEvaluations = settings_.refineEvaluations;
+        full.polishEvaluations = 0;
+        full.polishCoarsest = false;
+        fine.emplace(scene_, param, std::move(views), full);
+        r = fine->run(r.params, {}, stop);
+        evaluations += r.evaluations;
+        answeredBy = &*fine;
     }
 
     // 4. The record.
     record.worldFromBone = param->worldFromObject(r.params);
-    const std::vector<double> costs = reg.viewCosts(r.params, reg.levelCount() - 1);
+    const std::vector<double> costs = answeredBy->viewCosts(r.params, answeredBy->levelCount() - 1);
     for (std::size_t i = 0; i < used.size(); ++i) record.viewCost[used[i]] = costs[i];
     record.camerasUsed = static_cast<int>(used.size());
     record.evaluations = evaluations;

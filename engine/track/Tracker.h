@@ -11,7 +11,7 @@
 //      skipped
 //   3. the registration: the bone's pose in the first taking camera's frame
 //      (ObjectPoseParameterization, pivot at the bone's centre), search around the start;
-//      3b. a Nelder-Mead restart at full resolution from its result
+//      (coarse levels only), 3b. a fresh Nelder-Mead simplex at full resolution from its result
 //   4. the record: pose, cost per camera (NaN where not used), evaluations, time
 // Frames inside a run stay sequential: each one starts from the poses before it.
 // Deterministic: frame k's seed is a function of (seed, k) only, so a resumed run gives the
@@ -40,18 +40,22 @@ struct TrackSettings {
     // A camera takes part when at least this fraction of the bone's projected box lies on its
     // image at the start pose.
     double minInViewFraction = 0.5;
-    // Step 3b: a Nelder-Mead restart at full resolution from the result, with this radius (mm
-    // and deg) and budget (0 = none). A simplex that has collapsed along one direction (the
-    // rotation about a long bone's axis) stalls there; a fresh one does not.
-    double refineRadius = 0.5;
+    // Step 3b: the full-resolution search, a fresh Nelder-Mead simplex around the coarse
+    // levels' answer with this radius (mm and deg: the coarse levels leave up to 0.3 mm and
+    // 1.3 deg, docs/tracking.md) and budget (0 = none: the coarse answer is the frame's).
+    // A fresh simplex of that size moves there in fewer evaluations than a polish that
+    // shrinks on from the coarse levels' simplexes, and it does not stall where those have
+    // collapsed along one direction (the rotation about a long bone's axis).
+    double refineRadius = 1.0;
+    int refineEvaluations = 150;
     // A frame seen by one camera keeps the predicted depth along that camera's view (searched
     // within this radius, mm): one view hardly constrains depth, and a depth that drifts would
     // be carried into the next frames' starts by the extrapolation.
     double singleViewDepthRadius = 0.25;
-    int refineEvaluations = 150;
 
     // Local search around the start: Autoscoper's PSO box is +-3 mm / +-3 deg; CMA-ES global
-    // search at 1/4 and 1/2 resolution, polish at full, cropped to the bone.
+    // search at 1/4 resolution, Nelder-Mead polish at 1/4 and 1/2, cropped to the bone (then
+    // step 3b at full resolution).
     static RegistrationSettings defaultTrackingRegistration();
 };
 

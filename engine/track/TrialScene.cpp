@@ -17,7 +17,7 @@
 #include "scene/MeshXrayModel.h"
 #include "radiograph/Radiograph.h"
 #include "scene/XrayModel.h"
-#include "similarity/ImagePyramid.h"
+#include "similarity/AreaResample.h"
 #include "volume/AutoscoperVolumeFrame.h"
 
 namespace fm {
@@ -36,26 +36,6 @@ void flipVolume(Volume& v, const glm::ivec3& flip) {
                 out.at(flip.x ? v.dims.x - 1 - i : i, flip.y ? v.dims.y - 1 - j : j,
                        flip.z ? v.dims.z - 1 - k : k) = v.at(i, j, k);
     v.values = std::move(out.values);
-}
-
-// The camera of images reduced by `f` (ImagePyramid's block means: coarse pixel c' is centred
-// on full pixels f c' + (f - 1) / 2).
-PinholeCamera reducedCamera(PinholeCamera c, int f) {
-    c.fx /= f;
-    c.fy /= f;
-    c.cx = (c.cx + 0.5) / f - 0.5;
-    c.cy = (c.cy + 0.5) / f - 0.5;
-    c.imageSize /= f;
-    c.pixelPitch *= f;
-    return c;
-}
-
-int scaleFor(const glm::ivec2& image, const glm::ivec2& render) {
-    const double ratio = std::min(double(image.x) / render.x, double(image.y) / render.y);
-    int f = 1;
-    while (f * 2 <= 64 && std::abs(std::log2(ratio) - std::log2(f * 2.0)) < std::abs(std::log2(ratio) - std::log2(f)))
-        f *= 2;
-    return f;
 }
 
 bool isTiff(const fs::path& file) {
@@ -92,6 +72,10 @@ glm::ivec2 firstFrameSize(const ImageSequence& seq) {
 
 }  // namespace
 
+glm::ivec2 trialRenderSize(glm::ivec2 imageSize, glm::ivec2 renderResolution) {
+    return glm::min(imageSize, renderResolution);
+}
+
 TrialScene loadTrialScene(const Trial& trial, const std::vector<std::string>& bones, int threads) {
     checkTrialFiles(trial);
     TrialScene t;
@@ -107,8 +91,8 @@ TrialScene loadTrialScene(const Trial& trial, const std::vector<std::string>& bo
         for (const std::string& w : cam.warnings) t.trial.warnings.push_back(w);
         checkImageSize(cam.camera, io::quoted(tc.calibration), size.x, size.y,
                        seq.multiPage ? io::quoted(seq.source) : io::quoted(seq.frames[0]));
-        if (c == 0) t.imageScale = scaleFor(cam.camera.imageSize, trial.renderResolution);
-        t.scene.cameras.push_back(toProjectionGeometry(reducedCamera(cam.camera, t.imageScale)));
+        const glm::ivec2 render = trialRenderSize(cam.camera.imageSize, trial.renderResolution);
+        t.scene.cameras.push_back(toProjectionGeometry(resizedCamera(cam.camera, render)));
         t.cameras.push_back(cam.camera);
         t.sequences.push_back(std::move(seq));
     }
@@ -193,8 +177,9 @@ FrameViews trialFrameViews(const TrialScene& trial, const RadiographPreparation&
             RadiographPreparation p = preparation;
             p.fullScale = radiographFullScale(r.bitsPerSample);
             PreparedRadiograph prepared = prepareRadiograph(r.image, p);
-            const int f = trial.imageScale;
-            views.push_back({c, downsampleBy(prepared.image, f), downsampleMaskBy(prepared.valid, f)});
+            const glm::ivec2 render = trial.scene.cameras[c].detector.size;
+            views.push_back({c, resampleByArea(prepared.image, render),
+                             resampleMaskByArea(prepared.valid, render)});
         }
         return views;
     };

@@ -28,14 +28,12 @@ namespace fm {
 
 struct TrialScene {
     Trial trial;
-    Scene scene;  // cameras[i] = trial.cameras[i]; objects = the loaded bones, identity poses
-    std::vector<PinholeCamera> cameras;
+    // cameras[i] = trial.cameras[i] resized to the render size (trialRenderSize), the size at
+    // which its frames are compared; objects = the loaded bones, identity poses.
+    Scene scene;
+    std::vector<PinholeCamera> cameras;  // as calibrated (full-size images)
     std::vector<ImageSequence> sequences;
     int frameCount = 0;
-    // Frames and cameras are reduced by this power of two (the one nearest to image width /
-    // the trial's RenderResolution: 1760 / 512 -> 4, so 440-pixel images): what Autoscoper's
-    // RenderResolution trades, resolution for time.
-    int imageScale = 1;
     std::map<std::string, RigidTransform> autoscoperFromVolume;  // per loaded bone
     // Volume bones: the volume as loaded (flipped; our volume frame), for display surfaces.
     std::map<std::string, std::shared_ptr<const Volume>> volumes;
@@ -44,6 +42,12 @@ struct TrialScene {
     // Bones with label masks (TrialBone::masks): one file per frame, camera 1's size.
     std::map<std::string, ImageSequence> masks;
 };
+
+// The size a camera's frames are tracked at: the trial's RenderResolution (what Autoscoper
+// renders its DRRs at; the frames are resampled to it by area averaging, AreaResample.h), per
+// axis no larger than the frames themselves (enlarging adds render time and no information):
+// 1760-pixel wrist frames at RenderResolution 512 are tracked at 512 x 512.
+glm::ivec2 trialRenderSize(glm::ivec2 imageSize, glm::ivec2 renderResolution);
 
 // Loads the cameras, sequences and the named bones (all when `bones` is empty). Throws fm::Error
 // naming the trial file and the field for a missing file, a camera whose image size disagrees

@@ -60,7 +60,8 @@ TEST(JtmlTrial, LoadsTheMeshBonesAndTheJointTrackCameraAtTheFramesSize) {
     // JT_INTCALIB: fx = fy = principal distance / pixel pitch = 1198 / 0.373.
     EXPECT_NEAR(t.cameras[0].fx, 1198.0 / 0.373, 1e-6);
     EXPECT_EQ(t.frameCount, 3);
-    EXPECT_EQ(t.imageScale, 1);  // render_resolution 1024: the frames as they are
+    // render_resolution 1024: the frames as they are
+    EXPECT_EQ(t.scene.cameras[0].detector.size, glm::ivec2(1024, 1024));
     EXPECT_EQ(t.sequences[0].frameName(2), "AT_K1_V1_0180.tif");
     ASSERT_EQ(t.scene.objects.size(), 2u);
     for (const char* bone : {"femur", "tibia"}) {

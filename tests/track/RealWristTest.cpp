@@ -1,5 +1,5 @@
 // Real frames (Autoscoper's sample wrist: no published poses). Two checks that do not need a
-// known answer, at the resolution tracking uses (440 pixels):
+// known answer, at the resolution tracking uses (512 x 512, the trial's RenderResolution):
 //  * one camera alone fixes a bone's position across its view well but its depth poorly, so
 //    each camera's own single-view answer, started away from the biplane answer, gives a ray
 //    (source -> the bone's centre); the two rays come from independent registrations and must

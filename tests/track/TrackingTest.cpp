@@ -1,14 +1,15 @@
 // Tracking through biplane sequences with real geometry: the radius of Autoscoper's sample
-// wrist seen through the two real wrist calibrations (scaled to 1/4 of their 1760-pixel images
-// to keep the test short), moving along a smooth known trajectory with noise. Every frame must
-// come back within 0.25 mm (bone centre) and 0.25 deg; a stretch where the bone leaves one
-// camera's view is tracked on the other and reported as single-view; a resumed run gives the
-// same poses as an uninterrupted one.
+// wrist seen through the two real wrist calibrations (their 1760-pixel images at 512 x 512, the
+// trial's RenderResolution, as tracking renders them), moving along a smooth known trajectory
+// with noise. Every frame must come back within 0.25 mm (bone centre) and 0.25 deg; a stretch
+// where the bone leaves one camera's view is tracked on the other and reported as single-view;
+// a resumed run gives the same poses as an uninterrupted one.
 #include <cmath>
 
 #include <gtest/gtest.h>
 
 #include "camera/CameraFile.h"
+#include "camera/PinholeCamera.h"
 #include "common/TestData.h"
 #include "core/Random.h"
 #include "drr/Drr.h"
@@ -29,18 +30,9 @@ constexpr double kMaxAngleErrorDeg = 0.25;
 // Noise added to the rendered frames, as a fraction of the brightest pixel.
 constexpr double kNoiseFraction = 0.02;
 constexpr int kFrames = 20;
-// The wrist images are 1760 pixels square; half of that keeps the test short.
-constexpr int kScale = 4;
-
-// Pixel centres at integers: pixel c' of the scaled image covers pixels f c' .. f c' + f - 1.
-fm::PinholeCamera scaled(fm::PinholeCamera c, int f) {
-    c.fx /= f;
-    c.fy /= f;
-    c.cx = (c.cx + 0.5) / f - 0.5;
-    c.cy = (c.cy + 0.5) / f - 0.5;
-    c.imageSize /= f;
-    return c;
-}
+// The wrist images (1760 pixels square) at the shipped trial's RenderResolution, as tracking
+// renders them (trialRenderSize).
+constexpr int kRenderSize = 512;
 
 struct Wrist {
     fm::Scene scene;
@@ -49,7 +41,8 @@ struct Wrist {
     Wrist() {
         const auto dir = fm::test::sharedDataDir() / "autoscoper-bvr";
         for (const char* cam : {"Calibration/xr_calib_wrist_cam01.txt", "Calibration/xr_calib_wrist_cam02.txt"})
-            scene.cameras.push_back(fm::toProjectionGeometry(scaled(fm::readCameraFile(dir / cam).camera, kScale)));
+            scene.cameras.push_back(fm::toProjectionGeometry(
+                fm::resizedCamera(fm::readCameraFile(dir / cam).camera, {kRenderSize, kRenderSize})));
         const fm::Volume v = fm::io::readTiffVolume(dir / "Models/rad_dcm_cropped.tif", {0.39625, 0.39625, 0.625});
         fm::DrrValueOptions raw;
         raw.values = fm::DrrValues::Raw;
