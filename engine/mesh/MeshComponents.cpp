@@ -125,20 +125,23 @@ std::size_t labelComponentsFromForest(Mesh& mesh, std::uint32_t* parent, int thr
 }
 
 std::vector<std::size_t> componentSizes(const Mesh& mesh) {
-    std::vector<std::size_t> sizes;
-    for (std::uint32_t c : mesh.component) {
-        if (c >= sizes.size()) sizes.resize(c + 1, 0);
-        ++sizes[c];
-    }
+    // The largest rank first (a vectorised reduction), then a count without size checks.
+    std::uint32_t largest = 0;
+    for (std::uint32_t c : mesh.component) largest = c > largest ? c : largest;
+    std::vector<std::size_t> sizes(mesh.component.empty() ? 0 : std::size_t{largest} + 1, 0);
+    for (std::uint32_t c : mesh.component) ++sizes[c];
     return sizes;
 }
 
 void keepComponents(Mesh& mesh, const std::vector<bool>& keep, int threads) {
     const std::size_t vertexCount = mesh.positions.size();
     const std::size_t triangleCount = mesh.triangles.size();
+    // Bytes, not vector<bool>'s bits: this is asked once or twice per triangle.
+    const std::vector<std::uint8_t> keepRank(keep.begin(), keep.end());
+    const std::uint32_t* const rankOf = mesh.component.data();
     auto kept = [&](std::size_t t) {
-        const std::uint32_t c = mesh.component[t];
-        return c < keep.size() && keep[c];
+        const std::uint32_t c = rankOf[t];
+        return c < keepRank.size() && keepRank[c];
     };
     // 1. Kept triangles per part; their vertices marked (a vertex's triangles all belong to its
     // component, so every thread that marks it writes the same value).
