@@ -1,10 +1,16 @@
 // Marching-cubes speed on the knee phantom and the real CTs in ../shared/data, 1 and 2 threads.
 //   build-*/bench/fm_bench_mesh --benchmark_report_aggregates_only=true
 //                                                 # times (5 repetitions: mean, median, min);
-//                                                 # counters: triangles, vertices,
+//                                                 # counters: triangles, vertices, cpu_ms
+//                                                 # (process CPU per call, all threads),
 //                                                 # watertight (1 = every CGAL check passed)
+//   build-*/bench/fm_bench_mesh --benchmark_filter='^command/'   # the command's path only
 //   build-*/bench/fm_bench_mesh --export=DIR      # also writes each volume as DIR/<name>.mha
 //                                                 # (float32) plus DIR/volumes.txt (name, iso)
+// Cases per volume and thread count: marchingCubes/... the surface alone; command/... what
+// `fluoromatch mesh` does between loading the volume and writing the file (the surface with
+// its components labelled and counted; see runCommand); command_components1/... the same
+// with `--components 1`.
 // The export feeds scripts/bench_vtk_flying_edges.py, which times VTK's vtkFlyingEdges3D on
 // exactly the same values and isovalues (docs/marching-cubes.md has the comparison).
 #include <benchmark/benchmark.h>
@@ -12,6 +18,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
+#include <ctime>
 #include <filesystem>
 #include <map>
 #include <string>
@@ -22,6 +29,7 @@
 #include "io/VolumeWriter.h"
 #include "mesh/MarchingCubes.h"
 #include "mesh/MeshCheck.h"
+#include "mesh/MeshComponents.h"
 #include "phantom/Phantoms.h"
 
 namespace {
@@ -46,6 +54,14 @@ std::filesystem::path sharedData() {
     return std::filesystem::path(FM_SOURCE_DIR).parent_path() / "shared" / "data";
 }
 
+// CPU time of the whole process (all threads), ms: on a shared machine the wall time also
+// counts waiting for a core.
+double processCpuMs() {
+    timespec t;
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return t.tv_sec * 1e3 + t.tv_nsec * 1e-6;
+}
+
 fm::Volume load(const BenchVolume& b) {
     if (b.path.empty()) return fm::makePhantom("knee");
     return fm::readVolume(sharedData() / b.path);
@@ -57,10 +73,12 @@ void runMarchingCubes(benchmark::State& state, const fm::Volume* volume, double 
     options.isoValue = iso;
     options.threads = threads;
     fm::Mesh mesh;
+    const double cpuStart = processCpuMs();
     for (auto _ : state) {
         mesh = fm::marchingCubes(*volume, options);
         benchmark::DoNotOptimize(mesh.triangles.data());
     }
+    state.counters["cpu_ms"] = (processCpuMs() - cpuStart) / static_cast<double>(state.iterations());
     state.counters["triangles"] = static_cast<double>(mesh.triangleCount());
     state.counters["vertices"] = static_cast<double>(mesh.vertexCount());
     state.counters["voxels"] = static_cast<double>(volume->voxelCount());
@@ -72,6 +90,31 @@ void runMarchingCubes(benchmark::State& state, const fm::Volume* volume, double 
             found = checked.emplace(volume, fm::checkMesh(mesh).watertight()).first;
         state.counters["watertight"] = found->second ? 1.0 : 0.0;
     }
+}
+
+// The in-memory work of `fluoromatch mesh --volume V --iso I --threads T --out F`
+// (app/cli/MeshCommand.cpp, runMesh): marching cubes with the components labelled (and the
+// `--components N` largest kept, N = `keep`), then the components counted for the report line.
+void runCommand(benchmark::State& state, const fm::Volume* volume, double iso, int threads,
+                int keep) {
+    fm::MarchingCubesOptions options;
+    options.isoValue = iso;
+    options.threads = threads;
+    options.labelComponents = true;
+    options.keepLargestComponents = keep;
+    fm::Mesh mesh;
+    std::size_t components = 0;
+    const double cpuStart = processCpuMs();
+    for (auto _ : state) {
+        mesh = fm::marchingCubes(*volume, options);
+        const auto sizes = fm::componentSizes(mesh);
+        components = static_cast<std::size_t>(
+            std::count_if(sizes.begin(), sizes.end(), [](std::size_t n) { return n > 0; }));
+        benchmark::DoNotOptimize(components);
+    }
+    state.counters["cpu_ms"] = (processCpuMs() - cpuStart) / static_cast<double>(state.iterations());
+    state.counters["triangles"] = static_cast<double>(mesh.triangleCount());
+    state.counters["components"] = static_cast<double>(components);
 }
 
 }  // namespace
@@ -110,19 +153,25 @@ int main(int argc, char** argv) {
             std::snprintf(iso, sizeof iso, "%g", b.iso);
             list += b.name + " " + iso + "\n";
         }
-        for (int threads : {1, 2}) {
-            benchmark::RegisterBenchmark(
-                ("marchingCubes/" + b.name + "/threads:" + std::to_string(threads)).c_str(),
-                runMarchingCubes, &v, b.iso, threads, check)
-                ->Unit(benchmark::kMillisecond)
+        // The machine is shared: the fastest repetition is the least disturbed one.
+        auto settings = [](benchmark::internal::Benchmark* bench) {
+            bench->Unit(benchmark::kMillisecond)
                 ->MinTime(0.2)
                 ->Repetitions(5)
-                // The machine is shared: the fastest repetition is the least disturbed one.
                 ->ComputeStatistics("min",
                                     [](const std::vector<double>& v) {
                                         return *std::min_element(v.begin(), v.end());
                                     })
                 ->UseRealTime();
+        };
+        for (int threads : {1, 2}) {
+            const std::string suffix = b.name + "/threads:" + std::to_string(threads);
+            settings(benchmark::RegisterBenchmark(("marchingCubes/" + suffix).c_str(),
+                                                  runMarchingCubes, &v, b.iso, threads, check));
+            settings(benchmark::RegisterBenchmark(("command/" + suffix).c_str(), runCommand, &v,
+                                                  b.iso, threads, 0));
+            settings(benchmark::RegisterBenchmark(("command_components1/" + suffix).c_str(),
+                                                  runCommand, &v, b.iso, threads, 1));
         }
     }
     if (!exportDir.empty())

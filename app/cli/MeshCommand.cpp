@@ -1,5 +1,6 @@
 // `fluoromatch mesh`: the bone surface of a volume (our marching cubes) written as
 // .ply / .stl / .obj, e.g. to look at it in MeshLab or 3D Slicer. --check runs CGAL's checks.
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <memory>
@@ -79,12 +80,16 @@ void runMesh(const MeshArgs& a) {
         throw fm::Error(msg.str());
     }
     fm::writeMesh(mesh, a.out);
+    // Components in the file (--component-rank R keeps rank R alone: the ranks before it are
+    // empty, not written).
     const auto sizes = fm::componentSizes(mesh);
+    const auto components = static_cast<std::size_t>(
+        std::count_if(sizes.begin(), sizes.end(), [](std::size_t n) { return n > 0; }));
     if (!choice.describe.empty()) std::printf("%s\n", choice.describe.c_str());
     std::printf(
         "wrote %s: %zu triangles, %zu vertices, %zu components (iso %.6g; load %.0f ms, "
         "marching cubes %.1f ms)\n",
-        a.out.c_str(), mesh.triangleCount(), mesh.vertexCount(), sizes.size(), o.isoValue, loadMs,
+        a.out.c_str(), mesh.triangleCount(), mesh.vertexCount(), components, o.isoValue, loadMs,
         meshMs);
     if (a.check) {
         const auto checkStart = std::chrono::steady_clock::now();

@@ -7,6 +7,7 @@
 #include <cstring>
 #include <limits>
 #include <memory>
+#include <numeric>
 #include <sstream>
 #include <vector>
 
@@ -16,6 +17,7 @@
 #include "core/Parallel.h"
 #include "mesh/MarchingCubesTable.h"
 #include "mesh/MeshComponents.h"
+#include "mesh/VertexForest.h"
 
 namespace fm {
 namespace {
@@ -387,6 +389,19 @@ Mesh marchingCubes(const Volume& volume, const MarchingCubesOptions& options) {
     const auto& table = glm::determinant(volume.direction) < 0.0 ? packed.mirrored : packed.asIs;
     glm::uvec3* const outTriangles = mesh.triangles.data();
 
+    // Components: the generate pass unites the vertices of each triangle it writes, while the
+    // triangles are in cache. A chunk of cube slices [begin, end) only links vertices of the
+    // point slices it owns, [begin, end): a triangle reaching into point slice `end` (the next
+    // chunk's) is left for a serial pass afterwards, so no two threads write the same entries.
+    const bool pick = options.onlyComponentRank || options.onlyComponentNear;
+    const bool label = options.labelComponents || options.keepLargestComponents > 0 || pick;
+    MeshArray<std::uint32_t> forest(label ? vertexTotal : 0);
+    std::vector<std::vector<std::size_t>> crossing(label ? cubeRowsZ : 0);  // by chunk begin
+    auto slicesFirstVertex = [&](int uz) -> std::uint32_t {
+        return uz < cubeRowsZ ? rows[g.rowIndex(0, uz)].vertexBase
+                              : static_cast<std::uint32_t>(vertexTotal);
+    };
+
     // Pass 4: generate, per cube row: first the vertices of the edges its point row owns, in
     // point order and x, y, z within a point (the order pass 3 numbered them in), then its
     // triangles. The cube row walks its four point rows in step, keeping for each the id of
@@ -395,6 +410,10 @@ Mesh marchingCubes(const Volume& volume, const MarchingCubesOptions& options) {
     parallelFor(
         cubeRowsZ, threads,
         [&](int begin, int end) {
+            const std::uint32_t ownFirst = slicesFirstVertex(begin);
+            const std::uint32_t ownEnd = slicesFirstVertex(end);
+            if (label)
+                std::iota(forest.begin() + ownFirst, forest.begin() + ownEnd, ownFirst);
             for (int uz = begin; uz < end; ++uz) {
                 for (int uy = 0; uy < cubeRowsY; ++uy) {
                     const RowInfo& row = rows[g.rowIndex(uy, uz)];
@@ -510,24 +529,37 @@ Mesh marchingCubes(const Volume& volume, const MarchingCubesOptions& options) {
                         for (int q = 0; q < 4; ++q)
                             cursor[q] += static_cast<std::uint32_t>(upTo[q] >> 56);
                     }
+                    if (!label) continue;
+                    TriangleUnion unite(forest.data());
+                    for (std::size_t t = row.triangleBase; t < triangleId; ++t) {
+                        const glm::uvec3 tri = outTriangles[t];
+                        if (std::max(tri.x, std::max(tri.y, tri.z)) >= ownEnd) {
+                            crossing[begin].push_back(t);
+                            unite.restart();
+                            continue;
+                        }
+                        unite.add(tri);
+                    }
                 }
             }
         },
         4);
 
-    const bool pick = options.onlyComponentRank || options.onlyComponentNear;
-    if (options.labelComponents || options.keepLargestComponents > 0 || pick) {
-        labelComponents(mesh);
+    if (label) {
+        TriangleUnion unite(forest.data());
+        for (const auto& chunk : crossing)
+            for (std::size_t t : chunk) unite.add(outTriangles[t]);
+        labelComponentsFromForest(mesh, forest.data(), threads);
         if (options.onlyComponentRank) {
             std::vector<bool> keep(static_cast<std::size_t>(*options.onlyComponentRank) + 1, false);
             keep.back() = true;
-            keepComponents(mesh, keep);
+            keepComponents(mesh, keep, threads);
         } else if (options.onlyComponentNear && !mesh.triangles.empty()) {
             std::vector<bool> keep(componentNearest(mesh, *options.onlyComponentNear) + 1, false);
             keep.back() = true;
-            keepComponents(mesh, keep);
+            keepComponents(mesh, keep, threads);
         }
-        keepLargestComponents(mesh, options.keepLargestComponents);
+        keepLargestComponents(mesh, options.keepLargestComponents, threads);
     }
     return mesh;
 }

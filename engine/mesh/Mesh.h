@@ -46,7 +46,7 @@ struct Mesh {
     MeshArray<glm::vec3> positions;
     MeshArray<glm::vec3> normals;          // per vertex, unit, outward
     MeshArray<glm::uvec3> triangles;       // indices into positions
-    std::vector<std::uint32_t> component;  // per triangle: connected-component label (optional)
+    MeshArray<std::uint32_t> component;    // per triangle: connected-component label (optional)
 
     std::size_t vertexCount() const { return positions.size(); }
     std::size_t triangleCount() const { return triangles.size(); }

@@ -1,105 +1,223 @@
 #include "mesh/MeshComponents.h"
 
 #include <algorithm>
+#include <atomic>
 #include <limits>
 #include <numeric>
+
+#include "core/Parallel.h"
+#include "mesh/VertexForest.h"
 
 namespace fm {
 namespace {
 
-std::uint32_t findRoot(std::vector<std::uint32_t>& parent, std::uint32_t v) {
-    while (parent[v] != v) {
-        parent[v] = parent[parent[v]];  // path halving
-        v = parent[v];
-    }
-    return v;
+constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
+
+// [part * n / parts, (part + 1) * n / parts): the fixed split every pass below uses.
+std::size_t partBegin(std::size_t n, int part, int parts) {
+    return static_cast<std::size_t>(static_cast<unsigned long long>(n) * part / parts);
 }
 
-void unite(std::vector<std::uint32_t>& parent, std::uint32_t a, std::uint32_t b) {
-    a = findRoot(parent, a);
-    b = findRoot(parent, b);
-    if (a == b) return;
-    // Smaller index becomes the root: deterministic regardless of triangle order subtleties.
-    if (a < b)
-        parent[b] = a;
-    else
-        parent[a] = b;
+int partsFor(std::size_t n, int threads) {
+    if (threads <= 0) threads = defaultThreadCount();
+    // Below a few thousand elements per part, threads cost more than they save.
+    const std::size_t useful = std::max<std::size_t>(1, n / 4096);
+    return static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(threads), useful));
+}
+
+// Runs body(part) for part = 0 .. parts - 1 on up to `parts` threads.
+template <class Body>
+void forParts(int parts, Body&& body) {
+    parallelFor(parts, parts, [&](int begin, int end) {
+        for (int part = begin; part < end; ++part) body(part);
+    });
 }
 
 }  // namespace
 
-std::size_t labelComponents(Mesh& mesh) {
-    const std::size_t vertexCount = mesh.positions.size();
-    std::vector<std::uint32_t> parent(vertexCount);
+std::size_t labelComponents(Mesh& mesh, int threads) {
+    MeshArray<std::uint32_t> parent(mesh.positions.size());
     std::iota(parent.begin(), parent.end(), 0u);
-    for (const auto& t : mesh.triangles) {
-        unite(parent, t.x, t.y);
-        unite(parent, t.x, t.z);
-    }
-    // Provisional ids in order of first triangle, then sizes.
-    constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
-    std::vector<std::uint32_t> provisional(vertexCount, kNone);
-    std::vector<std::size_t> sizes;
-    mesh.component.resize(mesh.triangles.size());
-    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-        const std::uint32_t root = findRoot(parent, mesh.triangles[t].x);
-        if (provisional[root] == kNone) {
-            provisional[root] = static_cast<std::uint32_t>(sizes.size());
-            sizes.push_back(0);
+    TriangleUnion unite(parent.data());
+    for (const auto& t : mesh.triangles) unite.add(t);
+    return labelComponentsFromForest(mesh, parent.data(), threads);
+}
+
+std::size_t labelComponentsFromForest(Mesh& mesh, std::uint32_t* parent, int threads) {
+    const std::size_t vertexCount = mesh.positions.size();
+    const std::size_t triangleCount = mesh.triangles.size();
+    mesh.component.resize(triangleCount);
+    if (triangleCount == 0) return 0;
+
+    // 1. Every vertex straight to its root, and the roots numbered in vertex order. Within a
+    // part the vertices go up, and parent[v] <= v, so a parent in the same part is already a
+    // root; one in an earlier part may be compressed by its own thread while it is read here,
+    // hence the relaxed atomics (any ancestor read leads to the same root).
+    auto load = [parent](std::size_t v) {
+        return std::atomic_ref<std::uint32_t>(parent[v]).load(std::memory_order_relaxed);
+    };
+    const int vertexParts = partsFor(vertexCount, threads);
+    std::vector<std::uint32_t> rootsBefore(static_cast<std::size_t>(vertexParts) + 1, 0);
+    forParts(vertexParts, [&](int part) {
+        const std::size_t begin = partBegin(vertexCount, part, vertexParts);
+        const std::size_t end = partBegin(vertexCount, part + 1, vertexParts);
+        std::uint32_t roots = 0;
+        for (std::size_t v = begin; v < end; ++v) {
+            std::uint32_t r = load(v);
+            if (r >= begin)
+                r = load(r);
+            else
+                for (std::uint32_t up; (up = load(r)) != r;) r = up;
+            std::atomic_ref<std::uint32_t>(parent[v]).store(r, std::memory_order_relaxed);
+            roots += r == v;
         }
-        mesh.component[t] = provisional[root];
-        ++sizes[provisional[root]];
-    }
-    std::vector<std::uint32_t> order(sizes.size());
+        rootsBefore[part + 1] = roots;
+    });
+    // From here on parent[] is only read.
+    for (int part = 0; part < vertexParts; ++part) rootsBefore[part + 1] += rootsBefore[part];
+    const std::size_t count = rootsBefore[vertexParts];
+    // Number of each root (in vertex order), kept at the root's own index.
+    MeshArray<std::uint32_t> rootNumber(vertexCount);
+    forParts(vertexParts, [&](int part) {
+        std::uint32_t next = rootsBefore[part];
+        const std::size_t end = partBegin(vertexCount, part + 1, vertexParts);
+        for (std::size_t v = partBegin(vertexCount, part, vertexParts); v < end; ++v)
+            if (parent[v] == v) rootNumber[v] = next++;
+    });
+
+    // 2. Per triangle its component's number; per part the triangle count and the first
+    // triangle of each component.
+    const int triangleParts = partsFor(triangleCount, threads);
+    std::vector<std::vector<std::uint32_t>> sizes(triangleParts);
+    std::vector<std::vector<std::size_t>> firsts(triangleParts);
+    forParts(triangleParts, [&](int part) {
+        std::vector<std::uint32_t>& size = sizes[part];
+        std::vector<std::size_t>& first = firsts[part];
+        size.assign(count, 0);
+        first.assign(count, 0);
+        const std::size_t end = partBegin(triangleCount, part + 1, triangleParts);
+        for (std::size_t t = partBegin(triangleCount, part, triangleParts); t < end; ++t) {
+            const std::uint32_t c = rootNumber[parent[mesh.triangles[t].x]];
+            mesh.component[t] = c;
+            if (size[c]++ == 0) first[c] = t;
+        }
+    });
+    // 3. Rank: most triangles first, ties by first triangle (as labelled in triangle order).
+    std::vector<std::size_t> total(count, 0), firstTriangle(count, 0);
+    for (int part = triangleParts - 1; part >= 0; --part)  // the earliest part's first wins
+        for (std::size_t c = 0; c < count; ++c) {
+            total[c] += sizes[part][c];
+            if (sizes[part][c]) firstTriangle[c] = firsts[part][c];
+        }
+    std::vector<std::uint32_t> order(count);
     std::iota(order.begin(), order.end(), 0u);
-    std::stable_sort(order.begin(), order.end(),
-                     [&](std::uint32_t a, std::uint32_t b) { return sizes[a] > sizes[b]; });
-    std::vector<std::uint32_t> rank(sizes.size());
-    for (std::size_t r = 0; r < order.size(); ++r) rank[order[r]] = static_cast<std::uint32_t>(r);
-    for (auto& c : mesh.component) c = rank[c];
-    return sizes.size();
+    std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+        return total[a] != total[b] ? total[a] > total[b] : firstTriangle[a] < firstTriangle[b];
+    });
+    std::vector<std::uint32_t> rank(count);
+    for (std::size_t r = 0; r < count; ++r) rank[order[r]] = static_cast<std::uint32_t>(r);
+    forParts(triangleParts, [&](int part) {
+        const std::size_t end = partBegin(triangleCount, part + 1, triangleParts);
+        for (std::size_t t = partBegin(triangleCount, part, triangleParts); t < end; ++t)
+            mesh.component[t] = rank[mesh.component[t]];
+    });
+    return count;
 }
 
 std::vector<std::size_t> componentSizes(const Mesh& mesh) {
-    std::vector<std::size_t> sizes;
-    for (std::uint32_t c : mesh.component) {
-        if (c >= sizes.size()) sizes.resize(c + 1, 0);
-        ++sizes[c];
-    }
+    // The largest rank first (a vectorised reduction), then a count without size checks.
+    std::uint32_t largest = 0;
+    for (std::uint32_t c : mesh.component) largest = c > largest ? c : largest;
+    std::vector<std::size_t> sizes(mesh.component.empty() ? 0 : std::size_t{largest} + 1, 0);
+    for (std::uint32_t c : mesh.component) ++sizes[c];
     return sizes;
 }
 
-void keepComponents(Mesh& mesh, const std::vector<bool>& keep) {
-    constexpr std::uint32_t kUnused = std::numeric_limits<std::uint32_t>::max();
-    std::vector<std::uint32_t> remap(mesh.positions.size(), kUnused);
-    MeshArray<glm::uvec3> triangles;
-    std::vector<std::uint32_t> component;
-    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-        const std::uint32_t c = mesh.component[t];
-        if (c >= keep.size() || !keep[c]) continue;
-        triangles.push_back(mesh.triangles[t]);
-        component.push_back(c);
-        for (int v = 0; v < 3; ++v) remap[mesh.triangles[t][v]] = 0;
-    }
-    std::uint32_t next = 0;
-    for (std::size_t v = 0; v < remap.size(); ++v) {
-        if (remap[v] == kUnused) continue;
-        remap[v] = next;
-        mesh.positions[next] = mesh.positions[v];
-        if (v < mesh.normals.size()) mesh.normals[next] = mesh.normals[v];
-        ++next;
-    }
-    mesh.positions.resize(next);
-    if (!mesh.normals.empty()) mesh.normals.resize(next);
-    for (auto& t : triangles) t = glm::uvec3(remap[t.x], remap[t.y], remap[t.z]);
+void keepComponents(Mesh& mesh, const std::vector<bool>& keep, int threads) {
+    const std::size_t vertexCount = mesh.positions.size();
+    const std::size_t triangleCount = mesh.triangles.size();
+    // Bytes, not vector<bool>'s bits: this is asked once or twice per triangle.
+    const std::vector<std::uint8_t> keepRank(keep.begin(), keep.end());
+    const std::uint32_t* const rankOf = mesh.component.data();
+    auto kept = [&](std::size_t t) {
+        const std::uint32_t c = rankOf[t];
+        return c < keepRank.size() && keepRank[c];
+    };
+    // 1. Kept triangles per part; their vertices marked (a vertex's triangles all belong to its
+    // component, so every thread that marks it writes the same value).
+    MeshArray<std::uint32_t> remap(vertexCount);
+    const int vertexParts = partsFor(vertexCount, threads);
+    forParts(vertexParts, [&](int part) {
+        std::fill(remap.begin() + partBegin(vertexCount, part, vertexParts),
+                  remap.begin() + partBegin(vertexCount, part + 1, vertexParts), kNone);
+    });
+    const int triangleParts = partsFor(triangleCount, threads);
+    std::vector<std::size_t> trianglesBefore(static_cast<std::size_t>(triangleParts) + 1, 0);
+    forParts(triangleParts, [&](int part) {
+        std::size_t n = 0;
+        const std::size_t end = partBegin(triangleCount, part + 1, triangleParts);
+        for (std::size_t t = partBegin(triangleCount, part, triangleParts); t < end; ++t) {
+            if (!kept(t)) continue;
+            ++n;
+            for (int v = 0; v < 3; ++v)
+                std::atomic_ref<std::uint32_t>(remap[mesh.triangles[t][v]])
+                    .store(0, std::memory_order_relaxed);
+        }
+        trianglesBefore[part + 1] = n;
+    });
+    for (int part = 0; part < triangleParts; ++part)
+        trianglesBefore[part + 1] += trianglesBefore[part];
+    if (trianglesBefore[triangleParts] == triangleCount) return;  // everything kept
+
+    // 2. New vertex ids in the old order; positions and normals moved to new arrays.
+    std::vector<std::uint32_t> verticesBefore(static_cast<std::size_t>(vertexParts) + 1, 0);
+    forParts(vertexParts, [&](int part) {
+        const std::size_t end = partBegin(vertexCount, part + 1, vertexParts);
+        std::uint32_t n = 0;
+        for (std::size_t v = partBegin(vertexCount, part, vertexParts); v < end; ++v)
+            n += remap[v] != kNone;
+        verticesBefore[part + 1] = n;
+    });
+    for (int part = 0; part < vertexParts; ++part) verticesBefore[part + 1] += verticesBefore[part];
+    const bool normals = mesh.normals.size() == vertexCount;
+    MeshArray<glm::vec3> positions(verticesBefore[vertexParts]), newNormals;
+    if (normals) newNormals.resize(positions.size());
+    forParts(vertexParts, [&](int part) {
+        std::uint32_t next = verticesBefore[part];
+        const std::size_t end = partBegin(vertexCount, part + 1, vertexParts);
+        for (std::size_t v = partBegin(vertexCount, part, vertexParts); v < end; ++v) {
+            if (remap[v] == kNone) continue;
+            remap[v] = next;
+            positions[next] = mesh.positions[v];
+            if (normals) newNormals[next] = mesh.normals[v];
+            ++next;
+        }
+    });
+
+    // 3. The kept triangles, renumbered, in their old order.
+    MeshArray<glm::uvec3> triangles(trianglesBefore[triangleParts]);
+    MeshArray<std::uint32_t> component(triangles.size());
+    forParts(triangleParts, [&](int part) {
+        std::size_t next = trianglesBefore[part];
+        const std::size_t end = partBegin(triangleCount, part + 1, triangleParts);
+        for (std::size_t t = partBegin(triangleCount, part, triangleParts); t < end; ++t) {
+            if (!kept(t)) continue;
+            const glm::uvec3 tri = mesh.triangles[t];
+            triangles[next] = glm::uvec3(remap[tri.x], remap[tri.y], remap[tri.z]);
+            component[next] = mesh.component[t];
+            ++next;
+        }
+    });
+    mesh.positions = std::move(positions);
+    if (normals) mesh.normals = std::move(newNormals);
     mesh.triangles = std::move(triangles);
     mesh.component = std::move(component);
 }
 
-void keepLargestComponents(Mesh& mesh, int count) {
+void keepLargestComponents(Mesh& mesh, int count, int threads) {
     if (count <= 0) return;
     std::vector<bool> keep(static_cast<std::size_t>(count), true);
-    keepComponents(mesh, keep);
+    keepComponents(mesh, keep, threads);
 }
 
 std::uint32_t componentNearest(const Mesh& mesh, const glm::dvec3& world) {

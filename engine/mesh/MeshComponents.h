@@ -13,18 +13,23 @@ namespace fm {
 
 // Triangles sharing a vertex are connected. Fills mesh.component with ranks: 0 = the component
 // with the most triangles; ties go to the component whose first triangle comes first.
-// Returns the number of components.
-std::size_t labelComponents(Mesh& mesh);
+// Returns the number of components. `threads` (0 = all cores) changes the speed, not the labels.
+std::size_t labelComponents(Mesh& mesh, int threads = 1);
+
+// The same labels from a finished forest (mesh/VertexForest.h) over the mesh's vertices in which
+// the vertices of every triangle are united: marching cubes builds it while it writes the
+// triangles. `parent` (one entry per vertex) is overwritten.
+std::size_t labelComponentsFromForest(Mesh& mesh, std::uint32_t* parent, int threads);
 
 // Triangles per component rank (needs mesh.component).
 std::vector<std::size_t> componentSizes(const Mesh& mesh);
 
 // Keeps the triangles whose rank has keep[rank] true, drops the vertices no longer used
 // (order preserved). Needs mesh.component; ranks are left as they were.
-void keepComponents(Mesh& mesh, const std::vector<bool>& keep);
+void keepComponents(Mesh& mesh, const std::vector<bool>& keep, int threads = 1);
 
 // Keeps the `count` largest components (count <= 0 keeps all).
-void keepLargestComponents(Mesh& mesh, int count);
+void keepLargestComponents(Mesh& mesh, int count, int threads = 1);
 
 // Rank of the component owning the vertex nearest to `world` (needs mesh.component and a
 // non-empty mesh).
