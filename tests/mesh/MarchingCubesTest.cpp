@@ -14,6 +14,7 @@
 #include "mesh/MarchingCubes.h"
 #include "mesh/MeshCheck.h"
 #include "mesh/MeshComponents.h"
+#include "SampledField.h"
 
 namespace {
 
@@ -24,20 +25,7 @@ using fm::Volume;
 constexpr double kPi = std::numbers::pi;
 
 // Samples f(world position) on a grid. Inside = f >= iso (signed distances: positive inside).
-Volume sampleField(glm::ivec3 dims, glm::dvec3 spacing, glm::dvec3 origin,
-                   const std::function<double(const glm::dvec3&)>& f,
-                   glm::dmat3 direction = glm::dmat3(1.0)) {
-    Volume v = Volume::allocate(dims);
-    v.spacing = spacing;
-    v.origin = origin;
-    v.direction = direction;
-    v.meta.source = "test field";
-    for (int k = 0; k < dims.z; ++k)
-        for (int j = 0; j < dims.y; ++j)
-            for (int i = 0; i < dims.x; ++i)
-                v.at(i, j, k) = static_cast<float>(f(v.indexToWorld(glm::dvec3(i, j, k))));
-    return v;
-}
+using fm::test::sampleField;
 
 // A grid of spacing h covering the cube [-halfWidth, halfWidth]^3 (plus a margin of 2 voxels).
 Volume sampleCentered(double halfWidth, double h,

@@ -18,6 +18,7 @@
 #include "mesh/MarchingCubes.h"
 #include "mesh/MeshCheck.h"
 #include "mesh/MeshComponents.h"
+#include "SampledField.h"
 
 namespace {
 
@@ -69,17 +70,7 @@ std::size_t distinct(const std::vector<std::uint32_t>& v) {
     return std::set<std::uint32_t>(v.begin(), v.end()).size();
 }
 
-Volume sampleField(glm::ivec3 dims, double h, const std::function<double(const glm::dvec3&)>& f) {
-    Volume v = Volume::allocate(dims);
-    v.spacing = glm::dvec3(h);
-    v.origin = -0.5 * h * glm::dvec3(dims - 1);
-    v.meta.source = "test field";
-    for (int k = 0; k < dims.z; ++k)
-        for (int j = 0; j < dims.y; ++j)
-            for (int i = 0; i < dims.x; ++i)
-                v.at(i, j, k) = static_cast<float>(f(v.indexToWorld(glm::dvec3(i, j, k))));
-    return v;
-}
+using fm::test::sampleField;
 
 fm::MarchingCubesOptions labelled(int threads) {
     fm::MarchingCubesOptions o;
