@@ -3,7 +3,8 @@
 #  1. the femoral component of frame 0160 from a start 2-3 mm, 10 mm deep and 4 deg off the
 #     fem.jts pose: the printed IoU against the label mask is at least 0.95, the written .jts
 #     row is within 1 mm (x, y) and 2 deg of fem.jts, the .tra holds one 4x4 per frame row;
-#  2. both implants at once from fem.jts / tib.jts, written to one .tra (two objects);
+#  2. both implants at once from fem.jts / tib.jts, written to one .tra (two objects), side by
+#     side on 2 threads with the same bytes as one after the other on 1;
 #  3. bad input exits non-zero naming the file and the field, before any search: a .jts row
 #     with five numbers, a singular calibration, a mask of another size, an open mesh, an
 #     --out that is neither .jts nor .tra, a --frame the file does not have.
@@ -52,6 +53,16 @@ assert all(v == "NaN" for v in rows[0].split(",")) and len(rows[0].split(",")) =
 vals = [float(v) for v in rows[1].split(",")]
 assert len(vals) == 32 and vals[12:16] == [0, 0, 0, 1] and vals[28:32] == [0, 0, 0, 1], vals
 PY
+# The two models ran side by side (one per core); one thread runs them one after the other:
+# the same answers to the last digit.
+grep -q "side by side" <<<"$out" || fail "two models on 2 threads not side by side: $out"
+out1=$("$FM" register --reference "$D/AT_K1_V1_0170.tif" --camera "$CAL" --model "$FEM" --model "$TIB" \
+    --invert --start "$D/fem.jts" --start "$D/tib.jts" --frame 1 --out "$OUT/both1.tra" --threads 1) ||
+    fail "two-model register, 1 thread, exited $?: $out1"
+grep -q "one after the other" <<<"$out1" || fail "1 thread not one after the other: $out1"
+cmp -s "$OUT/both.tra" "$OUT/both1.tra" || fail "side by side and one after the other differ:
+$(cat "$OUT/both.tra")
+$(cat "$OUT/both1.tra")"
 
 refuse() {  # refuse WHAT PATTERN args...
     local what=$1 pattern=$2; shift 2
