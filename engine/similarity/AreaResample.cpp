@@ -70,14 +70,26 @@ Mask resampleMaskByArea(const Mask& mask, glm::ivec2 size) {
     checkSizes(mask.width, mask.height, size, "mask");
     if (size == glm::ivec2(mask.width, mask.height)) return mask;
     const auto cols = taps(mask.width, size.x), rows = taps(mask.height, size.y);
-    Mask out(size.x, size.y, false);
-    for (int r = 0; r < size.y; ++r)
+    // "Every input pixel it takes a share of" is separable: along the rows first (is every
+    // tapped pixel of this input row valid?), then down the columns.
+    std::vector<std::uint8_t> across(static_cast<std::size_t>(size.x) * mask.height, 0);
+    for (int r = 0; r < mask.height; ++r) {
+        const std::uint8_t* in = mask.inside.data() + static_cast<std::size_t>(r) * mask.width;
+        std::uint8_t* out = across.data() + static_cast<std::size_t>(r) * size.x;
         for (int c = 0; c < size.x; ++c) {
             bool all = true;
-            for (const Tap& tr : rows[static_cast<std::size_t>(r)])
-                for (const Tap& tc : cols[static_cast<std::size_t>(c)]) all = all && mask.at(tc.index, tr.index);
-            out.inside[static_cast<std::size_t>(r) * size.x + c] = all ? 1 : 0;
+            for (const Tap& t : cols[static_cast<std::size_t>(c)]) all = all && in[t.index] != 0;
+            out[c] = all ? 1 : 0;
         }
+    }
+    Mask out(size.x, size.y, true);
+    for (int r = 0; r < size.y; ++r) {
+        std::uint8_t* row = out.inside.data() + static_cast<std::size_t>(r) * size.x;
+        for (const Tap& t : rows[static_cast<std::size_t>(r)]) {
+            const std::uint8_t* in = across.data() + static_cast<std::size_t>(t.index) * size.x;
+            for (int c = 0; c < size.x; ++c) row[c] &= in[c];
+        }
+    }
     return out;
 }
 

@@ -20,24 +20,34 @@ Mask footprintMask(const Image& drr, float threshold, int dilatePixels) {
 Mask dilate(const Mask& mask, int pixels) {
     if (pixels <= 0) return mask;
     const int w = mask.width, h = mask.height;
-    // Rows first, then columns: a square structuring element is separable.
-    Mask rowPass(w, h, false);
+    if (w == 0 || h == 0) return mask;
+    // A square structuring element is separable: rows first, then columns, each pass a running
+    // count of the inside pixels in the window, so the cost does not grow with `pixels` (this
+    // runs on every candidate's footprint and on every 1760 x 1760 radiograph's border).
+    std::vector<std::uint8_t> rowPass(mask.inside.size());
     for (int r = 0; r < h; ++r) {
+        const std::uint8_t* in = mask.inside.data() + static_cast<std::size_t>(r) * w;
+        std::uint8_t* out = rowPass.data() + static_cast<std::size_t>(r) * w;
+        int count = 0;  // inside pixels in [c - pixels, c + pixels]
+        for (int k = 0; k <= std::min(pixels, w - 1); ++k) count += in[k] != 0;
         for (int c = 0; c < w; ++c) {
-            const int lo = std::max(0, c - pixels), hi = std::min(w - 1, c + pixels);
-            bool any = false;
-            for (int k = lo; k <= hi && !any; ++k) any = mask.at(k, r);
-            rowPass.inside[static_cast<std::size_t>(r) * w + c] = any;
+            out[c] = count > 0 ? 1 : 0;
+            if (c + pixels + 1 < w) count += in[c + pixels + 1] != 0;
+            if (c - pixels >= 0) count -= in[c - pixels] != 0;
         }
     }
     Mask out(w, h, false);
+    std::vector<int> count(static_cast<std::size_t>(w), 0);  // per column, rows [r - p, r + p]
+    auto addRow = [&](int r, int sign) {
+        const std::uint8_t* row = rowPass.data() + static_cast<std::size_t>(r) * w;
+        for (int c = 0; c < w; ++c) count[static_cast<std::size_t>(c)] += sign * row[c];
+    };
+    for (int k = 0; k <= std::min(pixels, h - 1); ++k) addRow(k, 1);
     for (int r = 0; r < h; ++r) {
-        const int lo = std::max(0, r - pixels), hi = std::min(h - 1, r + pixels);
-        for (int c = 0; c < w; ++c) {
-            bool any = false;
-            for (int k = lo; k <= hi && !any; ++k) any = rowPass.at(c, k);
-            out.inside[static_cast<std::size_t>(r) * w + c] = any;
-        }
+        std::uint8_t* row = out.inside.data() + static_cast<std::size_t>(r) * w;
+        for (int c = 0; c < w; ++c) row[c] = count[static_cast<std::size_t>(c)] > 0 ? 1 : 0;
+        if (r + pixels + 1 < h) addRow(r + pixels + 1, 1);
+        if (r - pixels >= 0) addRow(r - pixels, -1);
     }
     return out;
 }

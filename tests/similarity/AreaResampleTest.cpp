@@ -56,6 +56,31 @@ TEST(AreaResample, AnOutputPixelIsValidOnlyIfAllItsSharesAre) {
     EXPECT_EQ(out.count(), 512u * 512u - 2u);
 }
 
+TEST(AreaResample, MaskValidityFollowsTheOverlapOfIntervals) {
+    // Against the definition: output (c, r) covers input [c s, (c + 1) s) x [r t, (r + 1) t);
+    // it is valid when every input pixel overlapping that area (by more than rounding) is.
+    std::uint32_t state = 777u;
+    auto next = [&]() { return state = state * 1664525u + 1013904223u; };
+    const int w = 37, h = 29;
+    Mask m(w, h, true);
+    for (auto& v : m.inside) v = (next() >> 24) < 12 ? 0 : 1;
+    for (const glm::ivec2 size : {glm::ivec2(10, 8), glm::ivec2(37, 7), glm::ivec2(5, 29)}) {
+        const Mask out = resampleMaskByArea(m, size);
+        const double s = double(w) / size.x, t = double(h) / size.y;
+        for (int r = 0; r < size.y; ++r)
+            for (int c = 0; c < size.x; ++c) {
+                bool all = true;
+                for (int i = 0; i < w; ++i)
+                    for (int j = 0; j < h; ++j) {
+                        const double ox = std::min((c + 1) * s, i + 1.0) - std::max(c * s, double(i));
+                        const double oy = std::min((r + 1) * t, j + 1.0) - std::max(r * t, double(j));
+                        if (ox > 1e-9 && oy > 1e-9) all = all && m.at(i, j);
+                    }
+                ASSERT_EQ(out.at(c, r), all) << size.x << "x" << size.y << " at " << c << "," << r;
+            }
+    }
+}
+
 TEST(AreaResample, TheResizedCameraSeesAPointAtTheResampledPixel) {
     PinholeCamera c;
     c.fx = 6167.0;

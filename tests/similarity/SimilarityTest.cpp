@@ -206,6 +206,27 @@ TEST(Mask, FootprintDilationAndBoundingRect) {
     EXPECT_EQ(footprintMask(corner, 0.0f, 2).count(), 9u);
 }
 
+TEST(Mask, DilationIsTheChebyshevNeighbourhoodForEveryRadius) {
+    // Against the definition: a pixel is inside when some inside pixel lies within `p` rows
+    // and `p` columns of it. Random masks, sizes below and above the radius.
+    std::uint32_t state = 12345u;
+    auto next = [&]() { return state = state * 1664525u + 1013904223u; };
+    for (const auto& [w, h] : {std::pair{1, 1}, {2, 7}, {13, 5}, {40, 33}})
+        for (int p : {1, 2, 3, 6}) {
+            Mask m(w, h, false);
+            for (auto& v : m.inside) v = (next() >> 24) < 20 ? 1 : 0;
+            const Mask d = dilate(m, p);
+            for (int r = 0; r < h; ++r)
+                for (int c = 0; c < w; ++c) {
+                    bool any = false;
+                    for (int rr = std::max(0, r - p); rr <= std::min(h - 1, r + p); ++rr)
+                        for (int cc = std::max(0, c - p); cc <= std::min(w - 1, c + p); ++cc)
+                            any = any || m.at(cc, rr);
+                    ASSERT_EQ(d.at(c, r), any) << w << "x" << h << " p " << p << " at " << c << "," << r;
+                }
+        }
+}
+
 TEST(ImagePyramid, LevelsAreBlockMeans) {
     Image img(9, 6);  // odd width: the last column is dropped
     for (int r = 0; r < 6; ++r)
