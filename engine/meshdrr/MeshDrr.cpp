@@ -78,6 +78,9 @@ MeshDrrModelPtr prepareMeshDrr(const Mesh& mesh, bool closed) {
     auto m = std::make_shared<MeshDrrModel>();
     m->bvh = buildMeshBvh(mesh);
     m->closed = closed;
+    m->vertices.reserve(mesh.positions.size());
+    for (const glm::vec3& p : mesh.positions) m->vertices.emplace_back(p);
+    m->triangles.assign(mesh.triangles.begin(), mesh.triangles.end());
     m->boundsMin = m->bvh.nodes[0].lo;
     m->boundsMax = m->bvh.nodes[0].hi;
     return m;

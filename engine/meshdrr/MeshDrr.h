@@ -12,6 +12,7 @@
 // Rendering is const, thread-safe, parallel over rows and bit-identical for any thread count.
 // See docs/real-xray.md ("Implant and bone models") for the method and measured accuracy.
 #include <memory>
+#include <vector>
 
 #include "core/Image.h"
 #include "geometry/ProjectionGeometry.h"
@@ -31,6 +32,10 @@ inline constexpr double kMuCobaltChromePerMm = 1.2;
 struct MeshDrrModel {
     MeshBvh bvh;
     bool closed = false;  // false: silhouettes only (renderMeshDrr refuses)
+    // The welded vertices and the triangles' indices into them (mesh order): the rasterised
+    // silhouette projects each vertex once instead of each triangle's three corners.
+    std::vector<glm::dvec3> vertices;
+    std::vector<glm::uvec3> triangles;
     glm::dvec3 boundsMin{0.0}, boundsMax{0.0};
 };
 using MeshDrrModelPtr = std::shared_ptr<const MeshDrrModel>;

@@ -37,23 +37,33 @@ std::optional<Mask> rasterMeshSilhouette(const MeshDrrModel& model,
                                          const ProjectionGeometry& geometry) {
     geometry.validate("mesh silhouette geometry");
     const DetectorGeometry& d = geometry.detector;
-    // projectToPixel's arithmetic, hoisted out of the loop over corners.
+    // projectToPixel's arithmetic, hoisted out of the loop over vertices.
     const glm::dvec3 n = d.normal();
     const double toPlane = glm::dot(d.origin - geometry.source, n);
     const glm::dvec3 su = d.u / d.spacing.x, sv = d.v / d.spacing.y;
     const glm::dvec3 rel0 = d.origin - geometry.source;
-    const std::vector<glm::dvec3>& corners = model.bvh.corners;
-    std::vector<glm::dvec2> pixels(corners.size());
-    for (std::size_t i = 0; i < corners.size(); ++i) {
-        const glm::dvec3 w = corners[i] - geometry.source;
+    std::vector<glm::dvec2> pixels(model.vertices.size());
+    for (std::size_t i = 0; i < model.vertices.size(); ++i) {
+        const glm::dvec3 w = model.vertices[i] - geometry.source;
         const double along = glm::dot(w, n);
         if (!(along * toPlane > 0.0)) return std::nullopt;
         const glm::dvec3 rel = (toPlane / along) * w - rel0;
         pixels[i] = {glm::dot(rel, su), glm::dot(rel, sv)};
     }
+    // A ray through a closed, consistently wound surface enters and leaves it in turn, so the
+    // triangles of one winding in the image (positive area: those facing the source or those
+    // facing away, depending on the detector's handedness) already cover the whole silhouette,
+    // their closed edges included: the other half is skipped. An open surface (a
+    // silhouette-only model) has no such pairing: all its triangles are filled.
     Mask mask(d.size.x, d.size.y, false);
-    for (std::size_t t = 0; t + 2 < pixels.size(); t += 3)
-        fillTriangle(pixels[t], pixels[t + 1], pixels[t + 2], mask);
+    for (const glm::uvec3& t : model.triangles) {
+        const glm::dvec2 a = pixels[t.x], b = pixels[t.y], c = pixels[t.z];
+        if (model.closed) {
+            const double area = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+            if (!(area > 0.0)) continue;
+        }
+        fillTriangle(a, b, c, mask);
+    }
     return mask;
 }
 

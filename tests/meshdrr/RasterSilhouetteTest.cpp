@@ -75,6 +75,31 @@ TEST(RasterSilhouette, SamePixelsAsTheRayTracedSilhouette) {
               20u);
 }
 
+// The raster fills only the triangles of one winding in the image when the surface is closed:
+// a mirrored detector (u reversed) keeps the other half, with the same pixels; an open surface
+// (silhouette-only) is filled whole.
+TEST(RasterSilhouette, OneWindingCoversAClosedSurfaceAndAnOpenOneIsFilledWhole) {
+    fm::ProjectionGeometry mirrored = tiltedCamera();
+    mirrored.detector.origin += double(mirrored.detector.size.x - 1) * mirrored.detector.spacing.x *
+                                mirrored.detector.u;
+    mirrored.detector.u = -mirrored.detector.u;
+    const auto sphere = fm::prepareMeshDrr(fm::test::uvSphereMesh({-5, 3, 2}, 14.f, 16, 32), true);
+    for (const fm::ProjectionGeometry& g : {tiltedCamera(), mirrored}) {
+        const fm::Mask traced = fm::renderMeshSilhouette(*sphere, g);
+        ASSERT_GT(traced.count(), 300u);
+        EXPECT_EQ(differing(*fm::rasterMeshSilhouette(*sphere, g), traced), 0u);
+    }
+    // The box without its last two triangles (one face): open, so nothing may be skipped.
+    fm::Mesh open = fm::test::boxMesh({-12, -7, -9}, {10, 15, 6});
+    open.triangles.resize(open.triangles.size() - 2);
+    const auto model = fm::prepareMeshDrr(open, false);
+    for (const fm::ProjectionGeometry& g : {tiltedCamera(), mirrored}) {
+        const fm::Mask traced = fm::renderMeshSilhouette(*model, g);
+        ASSERT_GT(traced.count(), 300u);
+        EXPECT_EQ(differing(*fm::rasterMeshSilhouette(*model, g), traced), 0u);
+    }
+}
+
 TEST(RasterSilhouette, NoAnswerWhenTheModelReachesBehindTheSource) {
     const auto model = fm::prepareMeshDrr(fm::test::boxMesh({-10, -10, -10}, {10, 10, 10}), true);
     fm::ProjectionGeometry g = tiltedCamera();
