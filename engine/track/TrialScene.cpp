@@ -5,6 +5,7 @@
 
 #include "camera/CameraFile.h"
 #include "core/Error.h"
+#include "core/Parallel.h"
 #include "drr/Drr.h"
 #include "io/ByteSource.h"
 #include "io/HeaderText.h"
@@ -167,20 +168,25 @@ FrameViews trialFrameViews(const TrialScene& trial, const RadiographPreparation&
             throw Error("camera " + std::to_string(c + 1) + " does not exist (the trial has " +
                         std::to_string(trial.sequences.size()) + ")");
     return [&trial, preparation, use](int frame) {
-        std::vector<RegistrationView> views;
-        for (std::size_t c : use) {
-            const ImageSequence& seq = trial.sequences[c];
-            const fs::path file = seq.multiPage ? seq.source : seq.frames.at(static_cast<std::size_t>(frame));
-            const RadiographFile r = readRadiograph(file, seq.multiPage ? frame : -1);
-            checkImageSize(trial.cameras[c], io::quoted(trial.trial.cameras[c].calibration), r.image.width,
-                           r.image.height, io::quoted(file));
-            RadiographPreparation p = preparation;
-            p.fullScale = radiographFullScale(r.bitsPerSample);
-            PreparedRadiograph prepared = prepareRadiograph(r.image, p);
-            const glm::ivec2 render = trial.scene.cameras[c].detector.size;
-            views.push_back({c, resampleByArea(prepared.image, render),
-                             resampleMaskByArea(prepared.valid, render)});
-        }
+        // One camera per task: reading and preparing a 1760 x 1760 frame is serial work.
+        std::vector<RegistrationView> views(use.size());
+        parallelFor(static_cast<int>(use.size()), 0, [&](int begin, int end) {
+            for (int i = begin; i < end; ++i) {
+                const std::size_t c = use[static_cast<std::size_t>(i)];
+                const ImageSequence& seq = trial.sequences[c];
+                const fs::path file =
+                    seq.multiPage ? seq.source : seq.frames.at(static_cast<std::size_t>(frame));
+                const RadiographFile r = readRadiograph(file, seq.multiPage ? frame : -1);
+                checkImageSize(trial.cameras[c], io::quoted(trial.trial.cameras[c].calibration),
+                               r.image.width, r.image.height, io::quoted(file));
+                RadiographPreparation p = preparation;
+                p.fullScale = radiographFullScale(r.bitsPerSample);
+                PreparedRadiograph prepared = prepareRadiograph(r.image, p);
+                const glm::ivec2 render = trial.scene.cameras[c].detector.size;
+                views[static_cast<std::size_t>(i)] = {c, resampleByArea(prepared.image, render),
+                                                      resampleMaskByArea(prepared.valid, render)};
+            }
+        });
         return views;
     };
 }
