@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <future>
 #include <optional>
 
 #include "core/Error.h"
@@ -76,26 +75,8 @@ double Tracker::inViewFraction(std::size_t camera, const RigidTransform& pose) c
     return (chi.x - clo.x) * (chi.y - clo.y) / area;
 }
 
-Tracker::LoadedFrame Tracker::loadFrame(int frame) const {
-    LoadedFrame loaded;
-    try {
-        loaded.views = frames_(frame);
-    } catch (const Error& e) {
-        loaded.error = e.what();
-    }
-    return loaded;
-}
-
 FrameRecord Tracker::trackFrame(int frame, const RigidTransform& start,
                                 const std::atomic<bool>* stop) const {
-    const auto t0 = std::chrono::steady_clock::now();
-    FrameRecord record = trackLoadedFrame(frame, loadFrame(frame), start, stop);
-    record.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    return record;
-}
-
-FrameRecord Tracker::trackLoadedFrame(int frame, LoadedFrame loaded, const RigidTransform& start,
-                                      const std::atomic<bool>* stop) const {
     const auto t0 = std::chrono::steady_clock::now();
     FrameRecord record;
     record.frame = frame;
@@ -107,8 +88,12 @@ FrameRecord Tracker::trackLoadedFrame(int frame, LoadedFrame loaded, const Rigid
         return record;
     };
     // 2. The views: every camera with an image of the frame that sees the bone.
-    if (loaded.error) return finish(FrameRecord::Status::BadFrame, *loaded.error);
-    std::vector<RegistrationView> all = std::move(loaded.views);
+    std::vector<RegistrationView> all;
+    try {
+        all = frames_(frame);
+    } catch (const Error& e) {
+        return finish(FrameRecord::Status::BadFrame, e.what());
+    }
     std::vector<RegistrationView> views;
     std::string cameras;
     for (RegistrationView& v : all) {
@@ -169,16 +154,8 @@ void Tracker::run(const std::vector<int>& frames, const std::map<int, RigidTrans
                   const std::function<void(const FrameRecord&)>& afterFrame,
                   const std::atomic<bool>* stop) const {
     const bool backwards = frames.size() > 1 && frames[1] < frames[0];
-    // The next frame's radiographs are read while this one registers (the future's destructor
-    // waits for a read still under way when the run ends early).
-    std::future<LoadedFrame> next;
-    for (std::size_t i = 0; i < frames.size(); ++i) {
-        const int frame = frames[i];
+    for (int frame : frames) {
         if (stop && stop->load()) return;
-        const auto t0 = std::chrono::steady_clock::now();
-        LoadedFrame loaded = next.valid() ? next.get() : loadFrame(frame);
-        if (i + 1 < frames.size())
-            next = std::async(std::launch::async, [this, f = frames[i + 1]] { return loadFrame(f); });
         // 1. The start pose.
         const auto start = initialGuess(settings_.init, frame, tracked, keyframes, backwards);
         FrameRecord record;
@@ -188,10 +165,7 @@ void Tracker::run(const std::vector<int>& frames, const std::map<int, RigidTrans
             record.note = "no start pose (give a keyframe or a start pose)";
             record.viewCost.assign(scene_.cameras.size(), std::numeric_limits<double>::quiet_NaN());
         } else {
-            record = trackLoadedFrame(frame, std::move(loaded), *start, stop);
-            // The frame's time includes any wait for its radiographs.
-            record.seconds =
-                std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+            record = trackFrame(frame, *start, stop);
         }
         if (record.status == FrameRecord::Status::Tracked) tracked[frame] = *record.worldFromBone;
         if (afterFrame) afterFrame(record);

@@ -13,9 +13,7 @@
 //      (ObjectPoseParameterization, pivot at the bone's centre), search around the start;
 //      (coarse levels only), 3b. a fresh Nelder-Mead simplex at full resolution from its result
 //   4. the record: pose, cost per camera (NaN where not used), evaluations, time
-// Frames inside a run stay sequential: each one starts from the poses before it. While a frame
-// registers, run() reads and prepares the next frame's radiographs on another thread (reading
-// does not depend on any pose; the registration leaves part of the cores idle).
+// Frames inside a run stay sequential: each one starts from the poses before it.
 // Deterministic: frame k's seed is a function of (seed, k) only, so a resumed run gives the
 // same poses as an uninterrupted one.
 #include <atomic>
@@ -83,16 +81,6 @@ class Tracker {
     // One frame from `start` (steps 2-4).
     FrameRecord trackFrame(int frame, const RigidTransform& start,
                            const std::atomic<bool>* stop = nullptr) const;
-
-    // A frame's views as read by the frame source, or the reason it could not be read.
-    struct LoadedFrame {
-        std::vector<RegistrationView> views;
-        std::optional<std::string> error;
-    };
-    LoadedFrame loadFrame(int frame) const;
-    // trackFrame with the views already read (steps 2-4).
-    FrameRecord trackLoadedFrame(int frame, LoadedFrame loaded, const RigidTransform& start,
-                                 const std::atomic<bool>* stop = nullptr) const;
 
     // Tracks `frames` in the given order. `tracked` holds poses already found (a resumed run)
     // and receives every new one; `keyframes` are the user's. afterFrame is called after every
