@@ -45,6 +45,7 @@ struct DrrVolume {
     // Few bricks to skip (real CTs: air noise above -1000 HU): walking every voxel 16 rays at
     // a time beats skipping one ray at a time (DenseWalk.h; measured in docs/drr.md).
     bool preferDenseWalk = false;
+    std::size_t bricksEmpty = 0;  // uniform bricks of value 0 (BrickDepthTiles skips them)
 
     std::ptrdiff_t at(int i, int j, int k) const {
         return (i + 1) +

@@ -180,6 +180,9 @@ void decideWalk(DrrVolume& v) {
     const auto mixed =
         static_cast<std::size_t>(std::count(v.brickMixed.begin(), v.brickMixed.end(), 1));
     v.preferDenseWalk = double(mixed) >= kDenseWalkMixedFraction * double(v.brickMixed.size());
+    v.bricksEmpty = 0;
+    for (std::size_t b = 0; b < v.brickMixed.size(); ++b)
+        v.bricksEmpty += !v.brickMixed[b] && v.brickValue[b] == 0.0f;
 }
 
 }  // namespace

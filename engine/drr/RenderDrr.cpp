@@ -15,10 +15,12 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <optional>
 
 #include "core/Error.h"
 #include "core/Parallel.h"
 #include "drr/Drr.h"
+#include "drr/BrickDepthTiles.h"
 #include "drr/DenseWalk.h"
 #include "drr/DrrVolume.h"
 
@@ -349,7 +351,12 @@ Image renderDrr(const DrrVolume& v, const ProjectionGeometry& g, const DrrRender
 
     const glm::dvec3 q0 = v.worldToLocalPoint(g.source);
     const bool dense = useDenseWalk(v, options);
-    // Dense walk: the rays of a row that meet the box, sixteen at a time (DenseWalk.h).
+    // Dense walk: the rays of a row that meet the box, sixteen at a time (DenseWalk.h), each
+    // only where its tile of pixels can meet a non-empty brick (BrickDepthTiles.h).
+    const std::optional<BrickDepthTiles> tiles =
+        dense && options.skipEmptySpace
+            ? brickDepthTiles(v, g, range.col0, range.col1, range.row0, range.row1)
+            : std::nullopt;
     auto denseBody = [&](int rowBegin, int rowEnd) {
         DenseRay rays[16];
         int cols[16];
@@ -370,6 +377,7 @@ Image renderDrr(const DrrVolume& v, const ProjectionGeometry& g, const DrrRender
                 const LocalRay ray = makeRay(q0, v.worldToLocalPoint(pixel));
                 double aMin, aMax;
                 if (!clipRay(ray, glm::dvec3(0.0), boxExtent, aMin, aMax)) continue;
+                if (tiles && !tiles->clip(col, row, aMin, aMax)) continue;
                 rays[n] = denseRay(v, ray, aMin, aMax);
                 cols[n] = col;
                 lengths[n] = glm::length(pixel - g.source);
