@@ -24,25 +24,28 @@ std::optional<BrickDepthTiles> brickDepthTiles(const DrrVolume& v, const Project
     if (!(std::abs(planeDistance) > 0.0)) return std::nullopt;
 
     // 1. The brick corners (a lattice, the last corner of each axis at the box's end), projected:
-    // pixel column, row and alpha (depth / the detector plane's depth).
+    // pixel column, row and alpha (depth / the detector plane's depth). World positions step
+    // along the lattice by whole bricks (an affine map).
     const glm::ivec3 corners = v.brickDims + 1;
     const glm::dmat3 localToWorld = glm::inverse(v.worldToLocal);
+    auto edge = [&](int a, int index) {  // local coordinate of lattice plane `index` along a
+        return std::min(index * v.brickSize, v.dims[a]) * v.spacing[a];
+    };
+    const glm::dvec3 base = localToWorld * (-v.localShift) + v.origin - g.source;
     std::vector<glm::dvec3> projected(static_cast<std::size_t>(corners.x) * corners.y * corners.z);
+    std::size_t at = 0;
     for (int k = 0; k < corners.z; ++k)
-        for (int j = 0; j < corners.y; ++j)
-            for (int i = 0; i < corners.x; ++i) {
-                const glm::dvec3 local =
-                    glm::dvec3(std::min(i * v.brickSize, v.dims.x), std::min(j * v.brickSize, v.dims.y),
-                               std::min(k * v.brickSize, v.dims.z)) *
-                    v.spacing;
-                const glm::dvec3 w = localToWorld * (local - v.localShift) + v.origin - g.source;
+        for (int j = 0; j < corners.y; ++j) {
+            const glm::dvec3 row = base + localToWorld[1] * edge(1, j) + localToWorld[2] * edge(2, k);
+            for (int i = 0; i < corners.x; ++i, ++at) {
+                const glm::dvec3 w = row + localToWorld[0] * edge(0, i);
                 const double along = glm::dot(w, n);
                 if (!(along * planeDistance > 0.0)) return std::nullopt;  // behind or beside the source
                 const glm::dvec3 p = (planeDistance / along) * w + g.source - det.origin;
-                projected[i + static_cast<std::size_t>(corners.x) * (j + static_cast<std::size_t>(corners.y) * k)] =
-                    {glm::dot(p, det.u) / det.spacing.x, glm::dot(p, det.v) / det.spacing.y,
-                     along / planeDistance};
+                projected[at] = {glm::dot(p, det.u) / det.spacing.x, glm::dot(p, det.v) / det.spacing.y,
+                                 along / planeDistance};
             }
+        }
 
     // 2. Each non-empty brick widens the alpha range of every tile its corners' box touches
     // (one pixel of margin for rounding; the projection of a box lies inside its corners' box).
@@ -55,12 +58,8 @@ std::optional<BrickDepthTiles> brickDepthTiles(const DrrVolume& v, const Project
     const std::size_t tiles = static_cast<std::size_t>(t.tilesX) * t.tilesY;
     t.alphaLo.assign(tiles, std::numeric_limits<double>::infinity());
     t.alphaHi.assign(tiles, -std::numeric_limits<double>::infinity());
-    const std::size_t brickCount = v.brickMixed.size();
-    for (std::size_t b = 0; b < brickCount; ++b) {
-        if (!v.brickMixed[b] && v.brickValue[b] == 0.0f) continue;
-        const int bi = static_cast<int>(b % v.brickDims.x);
-        const int bj = static_cast<int>((b / v.brickDims.x) % v.brickDims.y);
-        const int bk = static_cast<int>(b / (static_cast<std::size_t>(v.brickDims.x) * v.brickDims.y));
+    for (const glm::u16vec3& brick : v.occupiedBricks) {
+        const int bi = brick.x, bj = brick.y, bk = brick.z;
         glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
         for (int c = 0; c < 8; ++c) {
             const glm::dvec3& p =

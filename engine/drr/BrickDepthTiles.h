@@ -23,10 +23,18 @@ struct BrickDepthTiles {
     int tilesX = 0, tilesY = 0;
     std::vector<double> alphaLo, alphaHi;  // per tile; lo > hi: no non-empty brick
 
+    std::size_t tileOf(int col, int row) const {
+        return static_cast<std::size_t>((row - row0) / kTileSize) * tilesX +
+               static_cast<std::size_t>((col - col0) / kTileSize);
+    }
+    // No non-empty brick can meet pixel (col, row)'s ray: it need not even be set up.
+    bool empty(int col, int row) const {
+        const std::size_t t = tileOf(col, row);
+        return alphaLo[t] > alphaHi[t];
+    }
     // Narrows [aMin, aMax] to the range of pixel (col, row)'s tile; false if nothing is left.
     bool clip(int col, int row, double& aMin, double& aMax) const {
-        const std::size_t t = static_cast<std::size_t>((row - row0) / kTileSize) * tilesX +
-                              static_cast<std::size_t>((col - col0) / kTileSize);
+        const std::size_t t = tileOf(col, row);
         if (alphaLo[t] > aMin) aMin = alphaLo[t];
         if (alphaHi[t] < aMax) aMax = alphaHi[t];
         return aMax > aMin;

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include <glm/glm.hpp>
+#include <glm/gtc/type_precision.hpp>
 
 #include "drr/Drr.h"
 
@@ -46,6 +47,7 @@ struct DrrVolume {
     // a time beats skipping one ray at a time (DenseWalk.h; measured in docs/drr.md).
     bool preferDenseWalk = false;
     std::size_t bricksEmpty = 0;  // uniform bricks of value 0 (BrickDepthTiles skips them)
+    std::vector<glm::u16vec3> occupiedBricks;  // (i, j, k) of the others, when some are empty
 
     std::ptrdiff_t at(int i, int j, int k) const {
         return (i + 1) +

@@ -183,6 +183,15 @@ void decideWalk(DrrVolume& v) {
     v.bricksEmpty = 0;
     for (std::size_t b = 0; b < v.brickMixed.size(); ++b)
         v.bricksEmpty += !v.brickMixed[b] && v.brickValue[b] == 0.0f;
+    v.occupiedBricks.clear();
+    if (v.bricksEmpty == 0) return;
+    for (int k = 0; k < v.brickDims.z; ++k)
+        for (int j = 0; j < v.brickDims.y; ++j)
+            for (int i = 0; i < v.brickDims.x; ++i) {
+                const std::size_t b = i + static_cast<std::size_t>(v.brickDims.x) *
+                                              (j + static_cast<std::size_t>(v.brickDims.y) * k);
+                if (v.brickMixed[b] || v.brickValue[b] != 0.0f) v.occupiedBricks.emplace_back(i, j, k);
+            }
 }
 
 }  // namespace

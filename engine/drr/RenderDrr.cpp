@@ -373,6 +373,7 @@ Image renderDrr(const DrrVolume& v, const ProjectionGeometry& g, const DrrRender
                 n = 0;
             };
             for (int col = range.col0; col < range.col1; ++col) {
+                if (tiles && tiles->empty(col, row)) continue;
                 const glm::dvec3 pixel = det.pixelCenter(col, row);
                 const LocalRay ray = makeRay(q0, v.worldToLocalPoint(pixel));
                 double aMin, aMax;
