@@ -4,7 +4,6 @@
 #include <cmath>
 
 #include "core/Error.h"
-#include "scene/MeshXrayModel.h"
 #include "track/Tracker.h"
 #include "xray/ObjectRegistration.h"
 
@@ -61,9 +60,8 @@ void WorkspaceSolver::start(std::shared_ptr<const WorkspaceModel> model, int obj
             scene.objects.push_back(model->scene().objects.at(static_cast<std::size_t>(object)));
             scene.objects[0].worldFromObject = start;
             if (model->cameraCount() == 1) {
-                const bool mesh = dynamic_cast<const MeshXrayModel*>(scene.objects[0].model.get()) != nullptr;
                 RegistrationSettings settings =
-                    realXraySettings(mesh ? SimilarityMeasure::EdgeDistance : SimilarityMeasure::GradientNcc);
+                    realXraySettings(defaultSimilarityFor(*scene.objects[0].model));
                 settings.threads = model->threads();
                 const RegistrationView view = model->prepared(frame).at(0);
                 const ObjectRegistrationResult r = registerObject(

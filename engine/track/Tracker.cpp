@@ -9,6 +9,7 @@
 #include "core/Random.h"
 #include "io/HeaderText.h"
 #include "scene/ObjectPoseParameterization.h"
+#include "xray/ObjectRegistration.h"
 
 namespace fm {
 
@@ -49,6 +50,9 @@ Tracker::Tracker(Scene scene, std::string bone, FrameViews frames, TrackSettings
     const auto index = scene_.find(bone);
     if (!index) throw Error("track: the scene has no bone called '" + bone + "'");
     bone_ = *index;
+    if (!scene_.objects[bone_].model) throw Error("track: bone '" + bone + "' has no model");
+    if (settings_.similarityByModel)
+        settings_.registration.similarity = defaultSimilarityFor(*scene_.objects[bone_].model);
     if (scene_.cameras.empty()) throw Error("track: the scene has no camera");
     if (!frames_) throw Error("track: no frame source");
     if (!(settings_.minInViewFraction > 0.0 && settings_.minInViewFraction <= 1.0))

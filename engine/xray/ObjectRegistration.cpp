@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "core/Error.h"
+#include "scene/MeshXrayModel.h"
 #include "scene/ObjectPoseParameterization.h"
 
 namespace fm {
@@ -43,6 +44,11 @@ RegistrationSettings realXraySettings(SimilarityMeasure similarity) {
     s.tiltRounds = 0;
     s.turnAboutMassCentre = false;
     return s;
+}
+
+SimilarityMeasure defaultSimilarityFor(const XrayModel& model) {
+    return dynamic_cast<const MeshXrayModel*>(&model) != nullptr ? SimilarityMeasure::EdgeDistance
+                                                                  : SimilarityMeasure::GradientNcc;
 }
 
 ObjectRegistrationResult registerObject(const Scene& scene, std::size_t object,

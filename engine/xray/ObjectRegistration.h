@@ -18,6 +18,12 @@ namespace fm {
 // after the coarsest level and wider polishes.
 RegistrationSettings realXraySettings(SimilarityMeasure similarity = SimilarityMeasure::EdgeDistance);
 
+// The measure a model is registered with against a real radiograph when none is asked for:
+// edge distance for meshes (an implant's outline is what the image shows best; a mesh's chords
+// are traced, its footprint rasterised ~30x faster), gradient NCC for volumes (docs/real-xray.md
+// compares them).
+SimilarityMeasure defaultSimilarityFor(const XrayModel& model);
+
 struct ObjectRegistrationResult {
     RigidTransform worldFromObject;
     double similarity = 0.0;  // at the finest level

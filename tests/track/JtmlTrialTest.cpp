@@ -8,7 +8,10 @@
 #include "common/TestData.h"
 #include "core/Error.h"
 #include "scene/MeshXrayModel.h"
+#include "scene/ObjectPoseParameterization.h"
+#include "track/Tracker.h"
 #include "track/TrialScene.h"
+#include "xray/CameraPoseDifference.h"
 #include "xray/ObjectRegistration.h"
 #include "xray/PoseSpec.h"
 
@@ -114,6 +117,41 @@ TEST(JtmlTrial, KeyframeSilhouettesAreTheLabelMasks) {
         o.worldFromObject.translation.x += 2.0;
         EXPECT_LT(fm::silhouetteIoU(fm::objectSilhouette(o, t.scene.cameras[0], 2), label), 0.95);
     }
+}
+
+// Tracking a mesh bone: the tracker registers it with edge distance (its outline; gradient NCC
+// would trace its chords, ~10x slower) and from the previous frame's .jts pose reaches this
+// frame's within the real-X-ray proof's bounds (1 mm in-plane, 2 deg), its silhouette on the
+// label mask. A volume bone keeps gradient NCC (RealWristTest tracks those).
+TEST(JtmlTrial, TracksAMeshFromThePreviousFramesPoseWithEdgeDistance) {
+    FM_REQUIRE_JTML_TRIAL();
+    const fm::TrialScene& t = jtmlScene();
+    for (const char* bone : {"femur", "tibia"}) {
+        const fm::Tracker tracker(fm::sceneOfBoneAlone(t, bone), bone,
+                                  fm::trialFrameViews(t, fm::defaultTrialPreparation()), {});
+        EXPECT_EQ(tracker.settings().registration.similarity, fm::SimilarityMeasure::EdgeDistance);
+        const auto& keys = t.trial.keyframes.at(bone);
+        const fm::FrameRecord r = tracker.trackFrame(2, keys[1].worldFromVolume);
+        ASSERT_EQ(r.status, fm::FrameRecord::Status::Tracked) << r.note;
+        ASSERT_TRUE(r.worldFromBone);
+        const fm::SceneObject& o = t.scene.object(bone);
+        const fm::CameraPoseDifference d = fm::cameraPoseDifference(
+            t.scene.cameras[0], keys[2].worldFromVolume, *r.worldFromBone, fm::defaultPivot(*o.model));
+        EXPECT_LT(d.inPlaneMm, 1.0) << bone;
+        EXPECT_LT(d.rotationDeg, 2.0) << bone;
+        fm::SceneObject at = o;
+        at.worldFromObject = *r.worldFromBone;
+        EXPECT_GT(fm::silhouetteIoU(fm::objectSilhouette(at, t.scene.cameras[0], 2), fm::trialBoneMask(t, bone, 2)),
+                  0.95)
+            << bone;
+    }
+    const fm::Volume one = fm::Volume::allocate({4, 4, 4}, 1.0f);
+    fm::Scene volumeScene;
+    volumeScene.cameras = t.scene.cameras;
+    volumeScene.objects.push_back(
+        {"cube", std::make_shared<fm::VolumeXrayModel>(fm::prepareDrrVolume(one, {})), {}, true});
+    const fm::Tracker volumeTracker(volumeScene, "cube", [](int) { return std::vector<fm::RegistrationView>{}; }, {});
+    EXPECT_EQ(volumeTracker.settings().registration.similarity, fm::SimilarityMeasure::GradientNcc);
 }
 
 class MeshTrialInput : public ::testing::Test {
