@@ -7,33 +7,15 @@
 #include <vector>
 
 #include <CLI/CLI.hpp>
-#if defined(__GLIBC__)
-#include <malloc.h>
-#endif
 
 #include "cli/CommandRegistry.h"
 #include "cli/UsageHints.h"
 #include "core/Error.h"
+#include "core/HeapReuse.h"
 #include "distributed/ProcessTransport.h"
 
-namespace {
-
-// Freed large blocks stay in the heap for the next allocation. A registration makes and drops
-// image-sized buffers at every evaluation (a 1760 x 1760 float frame is 12 MB); by default
-// glibc maps each from the kernel and gives it back on free, and every page is faulted in again
-// when it is next written (tracking the wrist radius: 0.55 -> 0.35 s of system time, 3 frames;
-// docs/tracking.md). The peak is unchanged: this only keeps what was already taken.
-void keepFreedMemoryForReuse() {
-#if defined(__GLIBC__)
-    mallopt(M_MMAP_THRESHOLD, 256 << 20);  // blocks below 256 MiB from the heap
-    mallopt(M_TRIM_THRESHOLD, 1 << 30);    // return free heap top only beyond 1 GiB
-#endif
-}
-
-}  // namespace
-
 int main(int argc, char** argv) {
-    keepFreedMemoryForReuse();
+    fm::keepFreedMemoryForReuse();  // core/HeapReuse.h
     CLI::App app{"fluoromatch: match X-ray images to CT with digitally reconstructed radiographs"};
     app.set_version_flag("--version", "fluoromatch 0.1.0");
     app.require_subcommand(1, 1);
