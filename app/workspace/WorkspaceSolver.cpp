@@ -89,7 +89,15 @@ void WorkspaceSolver::start(std::shared_ptr<const WorkspaceModel> model, int obj
                 settings.registration.threads = model->threads();
                 const std::string name = scene.objects[0].name;
                 const Tracker tracker(scene, name, [model](int f) { return model->prepared(f); }, settings);
-                const FrameRecord r = tracker.trackFrame(frame, start, &stop_);
+                const FrameRecord r =
+                    tracker.trackFrame(frame, start, &stop_, [&](const RegistrationProgress& p) {
+                        publish([&](WorkspaceSolveSnapshot& s) {
+                            s.stage = "biplane, " + std::string(p.stage) + ", level " +
+                                      std::to_string(p.level + 1) + " of " + std::to_string(p.levelCount);
+                            s.evaluations = p.evaluations;
+                            s.budget = p.evaluationBudget;
+                        });
+                    });
                 if (r.status != FrameRecord::Status::Tracked && !(r.status == FrameRecord::Status::Stopped))
                     throw Error("frame " + std::to_string(frame) + ": " + toString(r.status) + ": " + r.note);
                 publish([&](WorkspaceSolveSnapshot& s) {

@@ -80,7 +80,8 @@ double Tracker::inViewFraction(std::size_t camera, const RigidTransform& pose) c
 }
 
 FrameRecord Tracker::trackFrame(int frame, const RigidTransform& start,
-                                const std::atomic<bool>* stop) const {
+                                const std::atomic<bool>* stop,
+                                const RegistrationCallback& progress) const {
     const auto t0 = std::chrono::steady_clock::now();
     FrameRecord record;
     record.frame = frame;
@@ -120,11 +121,26 @@ FrameRecord Tracker::trackFrame(int frame, const RigidTransform& start,
     std::vector<std::size_t> used;
     for (const RegistrationView& v : views) used.push_back(v.camera);
     const Registration coarse(scene_, param, views, rs);
-    RegistrationResult r = coarse.run(param->referenceParams(), {}, stop);
+    const bool refine = settings_.refineEvaluations > 0;
+    // Progress over both searches: the full-resolution one counts as one more level.
+    auto reporter = [&](int evaluationsBefore, int levelBefore) -> RegistrationCallback {
+        if (!progress) return {};
+        return [&progress, &coarse, evaluationsBefore, levelBefore, refine,
+                budget = coarse.totalBudget() + (refine ? settings_.refineEvaluations : 0)](
+                   const RegistrationProgress& p) {
+            RegistrationProgress q = p;
+            q.evaluations += evaluationsBefore;
+            q.evaluationBudget = budget;
+            q.level += levelBefore;
+            q.levelCount = coarse.levelCount() + (refine ? 1 : 0);
+            progress(q);
+        };
+    };
+    RegistrationResult r = coarse.run(param->referenceParams(), reporter(0, 0), stop);
     int evaluations = r.evaluations;
     const Registration* answeredBy = &coarse;
     std::optional<Registration> fine;
-    if (settings_.refineEvaluations > 0 && !r.stopped) {
+    if (refine && !r.stopped) {
         // 3b. Full resolution: a fresh simplex around the coarse answer. Its answer is taken
         // as it is: the coarse cost is at another resolution (not comparable), and the simplex
         // starts with the coarse answer as a vertex, so it never ends worse at full resolution.
@@ -137,7 +153,7 @@ FrameRecord Tracker::trackFrame(int frame, const RigidTransform& start,
         full.polishEvaluations = 0;
         full.polishCoarsest = false;
         fine.emplace(scene_, param, std::move(views), full);
-        r = fine->run(r.params, {}, stop);
+        r = fine->run(r.params, reporter(evaluations, coarse.levelCount()), stop);
         evaluations += r.evaluations;
         answeredBy = &*fine;
     }

@@ -82,9 +82,12 @@ class Tracker {
     // Throws fm::Error if there is no such object or no camera.
     Tracker(Scene scene, std::string bone, FrameViews frames, TrackSettings settings);
 
-    // One frame from `start` (steps 2-4).
+    // One frame from `start` (steps 2-4). `progress` (optional) is called as the registration
+    // goes, over both its searches: evaluations so far out of the frame's budget, and the level
+    // among the coarse levels and the full-resolution one (the app's biplane Solve shows it).
     FrameRecord trackFrame(int frame, const RigidTransform& start,
-                           const std::atomic<bool>* stop = nullptr) const;
+                           const std::atomic<bool>* stop = nullptr,
+                           const RegistrationCallback& progress = {}) const;
 
     // Tracks `frames` in the given order. `tracked` holds poses already found (a resumed run)
     // and receives every new one; `keyframes` are the user's. afterFrame is called after every

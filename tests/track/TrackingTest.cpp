@@ -120,6 +120,35 @@ TEST(Tracking, RecoversEveryFrameOfABiplaneSequenceThroughTheRealWristCameras) {
     }
 }
 
+// trackFrame's progress (what the app's biplane Solve shows): over both searches, evaluations
+// never go back, end at the record's count within one budget, and the levels run from the
+// coarsest to the full-resolution one (the coarse levels, then one more).
+TEST(Tracking, ReportsProgressOverTheCoarseAndTheFullResolutionSearch) {
+    FM_REQUIRE_SHARED_DATA("autoscoper-bvr/Models/rad_dcm_cropped.tif");
+    const Wrist w;
+    const auto truth = [&](int k) { return w.truth(k); };
+    const fm::Tracker tracker(w.scene, "radius", w.frames(truth), {});
+    std::vector<fm::RegistrationProgress> seen;
+    const fm::FrameRecord r =
+        tracker.trackFrame(1, truth(0), nullptr, [&](const fm::RegistrationProgress& p) { seen.push_back(p); });
+    ASSERT_EQ(r.status, fm::FrameRecord::Status::Tracked) << r.note;
+    ASSERT_GT(seen.size(), 10u);
+    const int levels = static_cast<int>(tracker.settings().registration.levelFactors.size()) + 1;
+    for (std::size_t i = 0; i < seen.size(); ++i) {
+        EXPECT_EQ(seen[i].levelCount, levels);
+        EXPECT_EQ(seen[i].evaluationBudget, seen[0].evaluationBudget);
+        EXPECT_LE(seen[i].evaluations, seen[i].evaluationBudget);
+        if (i > 0) {
+            EXPECT_GE(seen[i].evaluations, seen[i - 1].evaluations) << i;
+            EXPECT_GE(seen[i].level, seen[i - 1].level) << i;
+        }
+    }
+    EXPECT_EQ(seen.front().level, 0);
+    EXPECT_EQ(seen.back().level, levels - 1);
+    EXPECT_EQ(seen.back().factor, 1);
+    EXPECT_EQ(seen.back().evaluations, r.evaluations);
+}
+
 TEST(Tracking, ContinuesOnOneCameraWhileTheBoneLeavesTheOther) {
     FM_REQUIRE_SHARED_DATA("autoscoper-bvr/Models/rad_dcm_cropped.tif");
     Wrist w;
