@@ -83,6 +83,7 @@ void runApp(const AppArgs& args) {
     options.volumeSpec = args.volume;
     options.labelsSpec = args.labels;
     options.labelTable = args.labelTable;
+    options.userDrrOffThread = true;  // a window's frame never waits for the user's DRR
     options.seed =
         static_cast<std::uint64_t>(std::chrono::system_clock::now().time_since_epoch().count());
     fm::app::App app(*backend, options);

@@ -92,7 +92,8 @@ void runScreenshot(const ScreenshotArgs& args) {
     options.showHelp = args.help;
     options.app.showTimings = args.timings;
     if (args.measureDrag > 0) {
-        // Frame times of a slider drag, exact-only against coarse-while-dragging.
+        // Frame times and input latency of a slider drag: exact-only against
+        // coarse-while-dragging, the user DRR on the UI thread against on its worker.
         auto backend = fm::app::createOsmesaBackend(options.size);
         std::printf("backend: %s\n", backend->describe().c_str());
         fm::app::App app(*backend, options.app);
@@ -100,10 +101,15 @@ void runScreenshot(const ScreenshotArgs& args) {
         if (!app.scene()) throw fm::Error(app.state().load.error);
         fm::app::checkGivenPoses(options.app, app.state().translationRangeMm);
         for (int i = 0; i < 3; ++i) app.frame();
-        const auto exact = fm::app::measureSliderDrag(app, args.measureDrag, false);
-        const auto coarse = fm::app::measureSliderDrag(app, args.measureDrag, true);
-        std::printf("drag, exact DRR every frame:  %s\n", fm::app::formatDragTimes(exact).c_str());
-        std::printf("drag, coarse while dragging:  %s\n", fm::app::formatDragTimes(coarse).c_str());
+        // The user DRR on the UI thread (each frame waits for it), then on its worker.
+        for (const bool offThread : {false, true})
+            for (const bool coarse : {false, true}) {
+                const auto t = fm::app::measureSliderDrag(app, args.measureDrag, coarse, offThread);
+                std::printf("drag, %s, %s:\n  %s\n",
+                            coarse ? "coarse while dragging" : "exact DRR every frame",
+                            offThread ? "DRR on its worker" : "DRR on the UI thread",
+                            fm::app::formatDragTimes(t).c_str());
+            }
         std::printf("user DRR alone: exact %.1f ms, coarse (film /%d) %.1f ms\n",
                     app.state().timings.lastExactMs, app.state().timings.coarseFactor,
                     app.state().timings.lastCoarseMs);
@@ -144,7 +150,8 @@ FM_REGISTER_COMMAND("screenshot", 2, [](CLI::App& cli) {
         ->check(CLI::NonNegativeNumber);
     cmd->add_option("--measure-drag", a->measureDrag,
                     "instead of a screenshot: drag the azimuth slider over N frames and report "
-                    "frame times, exact DRRs vs coarse while dragging")
+                    "frame times and input latency, exact DRRs vs coarse while dragging, the DRR "
+                    "on the UI thread vs on its worker")
         ->check(CLI::NonNegativeNumber);
     fm::cli::addWorkspaceOptions(cmd, a->workspace, false);
     cmd->add_flag("--side-by-side", a->sideBySide, "workspace: the model beside each radiograph, not over it");

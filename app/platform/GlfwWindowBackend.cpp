@@ -73,6 +73,7 @@ class GlfwWindowBackend final : public RenderBackend {
         ImGui_ImplGlfw_NewFrame();
     }
     void present() override { glfwSwapBuffers(window_); }
+    void wake() override { glfwPostEmptyEvent(); }
 
     std::vector<std::string> takeDroppedPaths() override {
         std::vector<std::string> out;

@@ -30,6 +30,7 @@ class OsmesaBackend final : public RenderBackend {
     bool headless() const override { return true; }
     glm::ivec2 framebufferSize() const override { return {context_.width(), context_.height()}; }
     bool shouldClose() const override { return false; }
+    bool keepsDrawnFrame() const override { return true; }
 
     void initImGui() override {
         ImGuiIO& io = ImGui::GetIO();

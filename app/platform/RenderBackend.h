@@ -47,6 +47,11 @@ class RenderBackend {
     virtual void setActivity(Activity) {}
     // Never sleep between frames (a run of a counted number of frames: no event would come).
     virtual void drawContinuously(bool) {}
+    // The default framebuffer holds what was drawn into it until drawn over (single-buffered,
+    // no swap): a frame may then redraw only what changed straight into it.
+    virtual bool keepsDrawnFrame() const { return false; }
+    // From any thread: ends a wait for events now (a worker's result is ready to be shown).
+    virtual void wake() {}
     // Files or folders dropped onto the window since the last call.
     virtual std::vector<std::string> takeDroppedPaths() { return {}; }
     // Headless only: the input the next frame sees.

@@ -6,6 +6,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "render/TextureVersions.h"
 #include "scene/DrrCache.h"
 #include "scene/LoadedScene.h"
 #include "scene/SliceImages.h"
@@ -163,7 +164,13 @@ SceneRenderer::~SceneRenderer() {
     if (msColor_) glDeleteRenderbuffers(1, &msColor_);
     if (msDepth_) glDeleteRenderbuffers(1, &msDepth_);
     if (resolveDepth_) glDeleteRenderbuffers(1, &resolveDepth_);
-    if (resolveTexture_) glDeleteTextures(1, &resolveTexture_);
+    if (layerFbo_) glDeleteFramebuffers(1, &layerFbo_);
+    if (layerColor_) glDeleteRenderbuffers(1, &layerColor_);
+    if (layerDepth_) glDeleteRenderbuffers(1, &layerDepth_);
+    if (resolveTexture_) {
+        markTextureChanged(resolveTexture_);  // its name may be reused
+        glDeleteTextures(1, &resolveTexture_);
+    }
 }
 
 void SceneRenderer::resize(glm::ivec2 size) {
@@ -195,7 +202,69 @@ void SceneRenderer::resize(glm::ivec2 size) {
     glBindRenderbuffer(GL_RENDERBUFFER, resolveDepth_);
     glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, size.x, size.y);
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, resolveDepth_);
+
+    // The kept surface layer: the same formats as the single-sample target (copied both ways).
+    if (!layerFbo_) {
+        glGenFramebuffers(1, &layerFbo_);
+        glGenRenderbuffers(1, &layerColor_);
+        glGenRenderbuffers(1, &layerDepth_);
+    }
+    glBindRenderbuffer(GL_RENDERBUFFER, layerColor_);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, size.x, size.y);
+    glBindRenderbuffer(GL_RENDERBUFFER, layerDepth_);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, size.x, size.y);
+    glBindFramebuffer(GL_FRAMEBUFFER, layerFbo_);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, layerColor_);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, layerDepth_);
+    layerKey_.reset();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+bool SceneRenderer::SurfaceLayerKey::operator==(const SurfaceLayerKey& o) const {
+    if (size != o.size || viewProjection != o.viewProjection || camera != o.camera ||
+        shift != o.shift ||
+        surfaces.size() != o.surfaces.size())
+        return false;
+    for (std::size_t i = 0; i < surfaces.size(); ++i) {
+        const SurfaceItem &a = surfaces[i], &b = o.surfaces[i];
+        if (a.mesh != b.mesh || a.generation != b.generation ||
+            a.worldFromObject != b.worldFromObject || a.color != b.color)
+            return false;
+    }
+    return true;
+}
+
+void SceneRenderer::drawSurfaces(const std::vector<SurfaceItem>& surfaces, const glm::dvec3& shift,
+                                 bool cacheable) {
+    const GLuint target = cacheable ? resolveFbo_ : msFbo_;
+    auto copy = [&](GLuint from, GLuint to) {
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, from);
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, to);
+        glBlitFramebuffer(0, 0, size_.x, size_.y, 0, 0, size_.x, size_.y,
+                          GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+        glBindFramebuffer(GL_FRAMEBUFFER, target);
+    };
+    if (cacheable && layerKey_ && *layerKey_ == currentLayer_) {
+        copy(layerFbo_, resolveFbo_);
+        ++surfaceLayerReuses_;
+        return;
+    }
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    for (std::size_t i = 0; i < surfaces.size(); ++i) {
+        const SurfaceItem& item = surfaces[i];
+        if (!item.mesh) continue;
+        const GpuMesh& gpu = uploadMesh(i, *item.mesh, item.generation);
+        // Isocenter frame of the CT world: shifted; each bone first moved by its pose.
+        const glm::dmat4 model = glm::translate(glm::dmat4(1.0), shift) * item.worldFromObject;
+        meshShader_.set("uModel", glm::mat4(model));
+        meshShader_.set("uColor", item.color);
+        meshShader_.set("uAmbient", 0.25f);
+        glBindVertexArray(gpu.vao);
+        glDrawElements(GL_TRIANGLES, gpu.indexCount, GL_UNSIGNED_INT, nullptr);
+    }
+    if (!cacheable) return;
+    copy(resolveFbo_, layerFbo_);
+    layerKey_ = currentLayer_;
 }
 
 const SceneRenderer::GpuMesh& SceneRenderer::uploadMesh(std::size_t slot, const Mesh& mesh,
@@ -258,7 +327,7 @@ void SceneRenderer::draw(const app::LoadedScene* scene, const std::vector<Surfac
     glBindFramebuffer(GL_FRAMEBUFFER, multisample ? msFbo_ : resolveFbo_);
     glViewport(0, 0, size.x, size.y);
     glClearColor(0.11f, 0.12f, 0.14f, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    if (!scene || slicePlane) glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);  // else below
 
     if (scene) {
         // Isocenter frame: volume-world point p -> p - centre + offset.
@@ -324,17 +393,23 @@ void SceneRenderer::draw(const app::LoadedScene* scene, const std::vector<Surfac
             glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
             glDepthMask(GL_FALSE);
         }
-        for (std::size_t i = 0; view.showBone && i < surfaces.size(); ++i) {
-            const SurfaceItem& item = surfaces[i];
-            if (!item.mesh) continue;
-            const GpuMesh& gpu = uploadMesh(i, *item.mesh, item.generation);
-            // Isocenter frame of the CT world: shifted; each bone first moved by its pose.
-            const glm::dmat4 model = glm::translate(glm::dmat4(1.0), shift) * item.worldFromObject;
-            meshShader_.set("uModel", glm::mat4(model));
-            meshShader_.set("uColor", item.color);
-            meshShader_.set("uAmbient", 0.25f);
-            glBindVertexArray(gpu.vao);
-            glDrawElements(GL_TRIANGLES, gpu.indexCount, GL_UNSIGNED_INT, nullptr);
+        if (slicePlane) {
+            for (std::size_t i = 0; view.showBone && i < surfaces.size(); ++i) {
+                const SurfaceItem& item = surfaces[i];
+                if (!item.mesh) continue;
+                const GpuMesh& gpu = uploadMesh(i, *item.mesh, item.generation);
+                const glm::dmat4 model =
+                    glm::translate(glm::dmat4(1.0), shift) * item.worldFromObject;
+                meshShader_.set("uModel", glm::mat4(model));
+                meshShader_.set("uColor", item.color);
+                meshShader_.set("uAmbient", 0.25f);
+                glBindVertexArray(gpu.vao);
+                glDrawElements(GL_TRIANGLES, gpu.indexCount, GL_UNSIGNED_INT, nullptr);
+            }
+        } else {
+            currentLayer_ = {size, viewProjection, camera.position, shift,
+                             view.showBone ? surfaces : std::vector<SurfaceItem>{}};
+            drawSurfaces(currentLayer_.surfaces, shift, !multisample);
         }
         if (slicePlane) {
             meshShader_.set("uAlpha", 1.0f);
@@ -445,6 +520,7 @@ void SceneRenderer::finish(glm::ivec2 size, bool multisample) {
                           GL_NEAREST);
     }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    markTextureChanged(resolveTexture_);
 }
 
 void SceneRenderer::drawRig(const std::vector<RigCamera>& cameras,

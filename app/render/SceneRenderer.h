@@ -70,6 +70,8 @@ class SceneRenderer {
     // The last drawn view as RGBA, row 0 = top (golden tests of the 3D view alone).
     std::vector<std::uint8_t> readPixels() const;
     glm::ivec2 size() const { return size_; }
+    // Single-sample draws that copied the kept surface layer instead of drawing the surfaces.
+    int surfaceLayerReuses() const { return surfaceLayerReuses_; }
     // Labels for the axes, source and film at their projected positions (last draw).
     const std::vector<SceneLabel>& labels() const { return labels_; }
 
@@ -88,6 +90,20 @@ class SceneRenderer {
     void drawLines(const std::vector<LineVertex>& lines, std::size_t lineVertexCount,
                    const glm::mat4& viewProjection);
     void finish(glm::ivec2 size, bool multisample);
+    // The surfaces of a single-sample draw (after the clear), or the same pixels and depths
+    // copied from the last such draw when nothing they depend on changed: turning the X-ray
+    // source and film (the azimuth, elevation, rotation sliders) moves neither them nor the
+    // camera, and on llvmpipe the surfaces are most of the view's cost.
+    void drawSurfaces(const std::vector<SurfaceItem>& surfaces, const glm::dvec3& shift,
+                      bool cacheable);
+    struct SurfaceLayerKey {
+        glm::ivec2 size{0};
+        glm::mat4 viewProjection{0.0f};
+        glm::vec3 camera{0.0f};
+        glm::dvec3 shift{0.0};  // the isocenter frame's
+        std::vector<SurfaceItem> surfaces;
+        bool operator==(const SurfaceLayerKey& o) const;
+    };
     struct GpuMesh {
         GLuint vao = 0, vbo = 0, ebo = 0;
         GLsizei indexCount = 0;
@@ -102,6 +118,10 @@ class SceneRenderer {
     GLuint msFbo_ = 0, msColor_ = 0, msDepth_ = 0;  // multisampled target
     GLuint resolveFbo_ = 0, resolveTexture_ = 0;    // what the UI shows
     GLuint resolveDepth_ = 0;                       // for single-sample drawing
+    GLuint layerFbo_ = 0, layerColor_ = 0, layerDepth_ = 0;  // the kept surface layer
+    std::optional<SurfaceLayerKey> layerKey_;                // what it holds
+    SurfaceLayerKey currentLayer_;                           // of the draw under way
+    int surfaceLayerReuses_ = 0;
     std::vector<GpuMesh> meshes_;
     GLuint sphereVao_ = 0, sphereVbo_ = 0, sphereEbo_ = 0;
     GLsizei sphereIndexCount_ = 0;

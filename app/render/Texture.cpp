@@ -1,5 +1,7 @@
 #include "render/Texture.h"
 
+#include "render/TextureVersions.h"
+
 namespace fm::render {
 
 Texture::Texture() {
@@ -13,7 +15,9 @@ Texture::Texture() {
 }
 
 Texture::~Texture() {
-    if (id_) glDeleteTextures(1, &id_);
+    if (!id_) return;
+    markTextureChanged(id_);  // its name may be reused by a new texture
+    glDeleteTextures(1, &id_);
 }
 
 void Texture::upload(int width, int height, const std::vector<std::uint8_t>& rgba) {
@@ -21,6 +25,7 @@ void Texture::upload(int width, int height, const std::vector<std::uint8_t>& rgb
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
                  rgba.data());
+    markTextureChanged(id_);
     width_ = width;
     height_ = height;
 }

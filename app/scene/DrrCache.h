@@ -4,6 +4,7 @@
 #include <array>
 #include <cstdint>
 #include <deque>
+#include <optional>
 
 #include "core/Image.h"
 #include "drr/Drr.h"
@@ -41,6 +42,10 @@ class DrrCache {
     // the whole CT.
     DrrRender get(const LoadedScene& scene, const Pose& pose, int downsample, int threads = 0, ImagingMode mode = ImagingMode::Xray,
                   const ObjectStates& objects = {});
+    // The cached image of `key` (made most recent), if any.
+    std::optional<DrrRender> find(const DrrKey& key);
+    // Keeps an image rendered elsewhere (the user's DRR worker); counts as a render.
+    void insert(const DrrKey& key, const DrrRender& render);
     std::size_t renders() const { return renders_; }  // how many were actually rendered
     void clear() { entries_.clear(); }
 
@@ -55,6 +60,10 @@ class DrrCache {
     std::deque<Entry> entries_;  // most recent first
     std::size_t renders_ = 0;
 };
+
+// Renders the image `key` names (no cache): a DRR, the bones' DRR or a slice. Safe on any
+// thread (reads the scene only).
+DrrRender renderAppImage(const LoadedScene& scene, const DrrKey& key, int threads);
 
 // The exact geometry the app renders for a pose in a scene (downsample 1 = full film).
 ProjectionGeometry appGeometry(const LoadedScene& scene, const Pose& pose, int downsample = 1);

@@ -119,6 +119,10 @@ struct Timings {
     double frameMs = 0.0;  // CPU time of the last whole frame
     double meshMs = 0.0;   // last bone surface (marching cubes)
     int coarseFactor = 2;  // detector downsampling while dragging
+    // Input latency of the last user DRR shown: from reading the input that asked for it to the
+    // end of the frame that showed it; and how many were shown so far.
+    double userDrrLatencyMs = 0.0;
+    int userDrrsShown = 0;
 };
 
 // The Solve section: the computer's search, as the App copies it from the Solver each frame.

@@ -46,6 +46,17 @@ App::App(RenderBackend& backend, AppOptions options)
     userTexture_ = std::make_unique<render::Texture>();
     compareTexture_ = std::make_unique<render::Texture>();
     sceneRenderer_ = std::make_unique<render::SceneRenderer>();
+    userDrrWorker_ = std::make_unique<NewestWins<UserDrrRequest, UserDrrResult>>(
+        [](const UserDrrRequest& r) {
+            UserDrrResult out{r, {}, {}};
+            try {
+                out.render = renderAppImage(*r.scene, r.key, r.threads);
+            } catch (const std::exception& e) {
+                out.error = e.what();
+            }
+            return out;
+        },
+        [this] { backend_.wake(); });  // a sleeping window shows it at once
 
     if (options_.userPose) state_.userPose = *options_.userPose;
     if (options_.view) state_.view = *options_.view;
@@ -61,6 +72,7 @@ App::App(RenderBackend& backend, AppOptions options)
 
 App::~App() {
     solver_.stop();
+    userDrrWorker_.reset();
     sceneRenderer_.reset();
     referenceTexture_.reset();
     userTexture_.reset();
@@ -117,6 +129,7 @@ void App::installLoadResult(SceneLoader::Result result) {
     userCache_.clear();
     referenceKey_.reset();
     userKey_.reset();
+    userRequested_.reset();
     // An MRI file opens in the slice mode, anything else as X-rays; the user may switch.
     state_.mode = scene_->looksLikeMri ? ImagingMode::Slice : ImagingMode::Xray;
     if (firstScene_ && options_.mode) state_.mode = *options_.mode;
@@ -155,6 +168,7 @@ void App::applyDrrThreshold() {
     showScene(plainScene_);
     referenceKey_.reset();
     userKey_.reset();
+    userRequested_.reset();
     state_.matchIsStale = state_.match.has_value();
 }
 
@@ -330,6 +344,7 @@ void App::processRequests() {
         state_.mode = *requests.mode;
         referenceKey_.reset();
         userKey_.reset();
+        userRequested_.reset();
         newReference();
     }
     if (requests.newReference) newReference();
@@ -441,24 +456,8 @@ void App::updateImages() {
     // While a slider is dragged: a coarser film, traced exactly; the full film again on release.
     const bool coarse = state_.interacting && state_.coarseWhileDragging;
     const int factor = coarse ? state_.timings.coarseFactor : 1;
-    const Pose& userPose = shownUserPose();
-    const ObjectStates userObjectStates = userObjects();
-    const DrrKey userKey{scene_->generation, userPose.toArray(), factor, mode,
-                         userObjectStates};
-    if (userKey_ != userKey) {
-        DrrRender r =
-            userCache_.get(*scene_, userPose, factor, threads, mode, userObjectStates);
-        userDrr_ = std::move(r.image);
-        userDataMask_ = std::move(r.dataMask);
-        state_.timings.userDrrMs = r.milliseconds;
-        state_.timings.userDrrCoarse = coarse;
-        (coarse ? state_.timings.lastCoarseMs : state_.timings.lastExactMs) = r.milliseconds;
-        if (!r.fromCache) ++(coarse ? coarseUserRenders_ : exactUserRenders_);
-        userKey_ = userKey;
-        ++userVersion_;
-        state_.userEdges = edgeLetters(userPose);
-        state_.userSliceEmpty = mode == ImagingMode::Slice && !sliceCutsVolume(*scene_, userPose);
-    }
+    updateUserDrr(DrrKey{scene_->generation, shownUserPose().toArray(), factor, mode,
+                         userObjects()});
 
     if (state_.display.autoWindow) {
         const render::WindowLevel wl = render::fullRange(referenceDrr_);
@@ -479,8 +478,8 @@ void App::updateImages() {
         userDrr_.width == referenceDrr_.width
             ? referenceDrr_
             : referenceCache_
-                  .get(*scene_, referencePose, factor, threads, mode,
-                       referenceObjectStates)
+                  .get(*scene_, referencePose, userKey_ ? userKey_->downsample : 1, threads,
+                       mode, referenceObjectStates)
                   .image;
     std::vector<std::uint8_t> rgba;
     switch (state_.display.compare) {
@@ -499,9 +498,54 @@ void App::updateImages() {
     shownKey_ = key;
 }
 
+void App::updateUserDrr(const DrrKey& key) {
+    if (key != userRequested_) {
+        userRequested_ = key;
+        const std::uint64_t number = ++userRequests_;
+        if (std::optional<DrrRender> hit = userCache_.find(key)) {
+            userShownNumber_ = number;
+            showUserDrr(key, std::move(*hit), frameInputTime_);
+        } else {
+            userDrrWorker_->request({scene_, key, options_.drrThreads, number, frameInputTime_});
+        }
+    }
+    std::optional<UserDrrResult> done =
+        options_.userDrrOffThread ? userDrrWorker_->take() : userDrrWorker_->wait();
+    // Older than what is shown, or of another scene or kind of image: dropped.
+    if (!done || done->request.number <= userShownNumber_ ||
+        done->request.key.sceneGeneration != key.sceneGeneration || done->request.key.mode != key.mode)
+        return;
+    if (!done->error.empty()) {
+        state_.load.error = done->error;
+        return;
+    }
+    userShownNumber_ = done->request.number;
+    userCache_.insert(done->request.key, done->render);
+    if (done->request.key.downsample > 1) ++coarseUserRenders_; else ++exactUserRenders_;
+    showUserDrr(done->request.key, std::move(done->render), done->request.inputTime);
+}
+
+void App::showUserDrr(const DrrKey& key, DrrRender render,
+                      std::chrono::steady_clock::time_point inputTime) {
+    const bool coarse = key.downsample > 1;
+    userDrr_ = std::move(render.image);
+    userDataMask_ = std::move(render.dataMask);
+    state_.timings.userDrrMs = render.milliseconds;
+    state_.timings.userDrrCoarse = coarse;
+    (coarse ? state_.timings.lastCoarseMs : state_.timings.lastExactMs) = render.milliseconds;
+    userKey_ = key;
+    ++userVersion_;
+    const Pose pose = Pose::fromArray(key.pose);
+    state_.userEdges = edgeLetters(pose);
+    state_.userSliceEmpty = key.mode == ImagingMode::Slice && !sliceCutsVolume(*scene_, pose);
+    userShownInputTime_ = inputTime;
+}
+
 void App::frame() {
     const auto start = std::chrono::steady_clock::now();
     backend_.newFrame();
+    frameInputTime_ = std::chrono::steady_clock::now();
+    userShownInputTime_.reset();
     for (auto& path : backend_.takeDroppedPaths()) {
         state_.volumePathField = path;
         state_.requests.loadVolume = path;
@@ -570,11 +614,17 @@ void App::frame() {
         colors.push_back(l.color);
     }
     ui_.drawSceneLabels(labels, colors);
-    presentImGuiFrame(backend_);
+    presenter_.present(backend_);
+    if (userShownInputTime_) {  // input latency: from reading the input to its DRR on screen
+        state_.timings.userDrrLatencyMs = msSince(*userShownInputTime_);
+        ++state_.timings.userDrrsShown;
+    }
     // Nothing moving: the window sleeps until the next event instead of redrawing.
-    backend_.setActivity(fast || state_.interacting                                          ? Activity::Busy
-                         : state_.load.loading || state_.labels.loading || state_.solve.running ? Activity::Background
-                                                                                               : Activity::Idle);
+    const bool working = state_.load.loading || state_.labels.loading || state_.solve.running ||
+                         userDrrWorker_->busy();
+    backend_.setActivity(fast || state_.interacting ? Activity::Busy
+                         : working                  ? Activity::Background
+                                                    : Activity::Idle);
     ++state_.frame;
     state_.timings.frameMs = msSince(start);
 }

@@ -2,6 +2,7 @@
 // The matching app: one frame loop shared by the window and the headless screenshot. The
 // backend (GLFW or OSMesa) is chosen by the caller; everything else is identical.
 #include <array>
+#include <chrono>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -12,9 +13,11 @@
 #include "platform/RenderBackend.h"
 #include "render/ImageDisplay.h"
 #include "render/Screenshot.h"
+#include "ui/PresentFrame.h"
 #include "render/SurfaceItem.h"
 #include "scene/BonesLoader.h"
 #include "scene/DrrCache.h"
+#include "scene/NewestWins.h"
 #include "scene/ObjectPoseParameterization.h"
 #include "scene/SceneLoader.h"
 #include "scene/Solver.h"
@@ -38,6 +41,10 @@ struct AppOptions {
     std::uint64_t seed = 1;   // reference choice; the window passes the clock
     int drrThreads = 0;       // 0 = all cores
     bool showTimings = true;  // golden images turn them off (they vary)
+    // The user's DRR on a worker: frames show the newest finished one and never wait for it
+    // (the window). Off: each frame waits for the DRR of its own state, so headless screenshots
+    // and scripted tests do not depend on timing.
+    bool userDrrOffThread = false;
     // Bones of the first scene from this label map (and table), built once it is loaded.
     std::string labelsSpec, labelTable;
 };
@@ -65,7 +72,10 @@ class App : public ScriptableApp {
     // How many user DRRs were actually rendered (not served from the cache), by kind.
     int exactUserRenders() const { return exactUserRenders_; }
     int coarseUserRenders() const { return coarseUserRenders_; }
-    int sceneDraws() const { return sceneDraws_; }  // how often the 3D view was redrawn
+    int sceneDraws() const { return sceneDraws_; }
+    // The user's DRR on its worker (frames never wait for it) or waited for by each frame.
+    void setUserDrrOffThread(bool on) { options_.userDrrOffThread = on; }
+    bool userDrrPending() const { return userDrrWorker_->busy(); }  // asked for, not yet taken  // how often the 3D view was redrawn
     const Mesh* boneMesh() const { return bone_.get(); }  // null when the scene has bones
     // With bones: each bone's surface (the order of the bone list).
     const std::vector<std::shared_ptr<const Mesh>>& boneSurfaces() const { return boneSurfaces_; }
@@ -78,12 +88,17 @@ class App : public ScriptableApp {
     RenderBackend& backend() override { return backend_; }
     std::optional<WidgetRect> widgetRect(const std::string& id) const override { return ui_.rect(id); }
     const render::SceneRenderer& sceneRenderer() const { return *sceneRenderer_; }
+    FramePresenter& presenter() { return presenter_; }  // what each frame redraws
 
   private:
     void installLoadResult(SceneLoader::Result result);
     void processRequests();
     void refreshMatchTexts();
     void updateImages();
+    void updateUserDrr(const DrrKey& key);
+    // Shows a finished user image (`inputTime`: when the input that asked for it was read).
+    void showUserDrr(const DrrKey& key, DrrRender render,
+                     std::chrono::steady_clock::time_point inputTime);
     ImageEdgeLetters edgeLetters(const Pose& pose) const;  // of the image at `pose` (mode's)
     void newReference();
     void startSolve();
@@ -138,11 +153,30 @@ class App : public ScriptableApp {
     Mask referenceDataMask_, userDataMask_;  // slice mode: pixels with data; empty for DRRs
     std::uint64_t referenceVersion_ = 0, userVersion_ = 0;
     std::optional<DrrKey> referenceKey_, userKey_;  // what referenceDrr_ / userDrr_ hold
+    // The user's image: the newest asked for (on the worker unless cached), numbered so an older
+    // one finishing late never replaces a newer one on screen.
+    struct UserDrrRequest {
+        std::shared_ptr<const LoadedScene> scene;
+        DrrKey key;
+        int threads = 0;
+        std::uint64_t number = 0;
+        std::chrono::steady_clock::time_point inputTime;
+    };
+    struct UserDrrResult {
+        UserDrrRequest request;
+        DrrRender render;
+        std::string error;
+    };
+    std::optional<DrrKey> userRequested_;
+    std::uint64_t userRequests_ = 0, userShownNumber_ = 0;
+    std::chrono::steady_clock::time_point frameInputTime_;  // this frame's input was read
+    std::optional<std::chrono::steady_clock::time_point> userShownInputTime_;  // shown this frame
     std::uint64_t nextSeed_ = 1;
     bool firstScene_ = true;
     int exactUserRenders_ = 0, coarseUserRenders_ = 0;
     std::unique_ptr<render::Texture> referenceTexture_, userTexture_, compareTexture_;
     std::unique_ptr<render::SceneRenderer> sceneRenderer_;
+    FramePresenter presenter_;
     // What the textures show, to re-upload only on change.
     struct DisplayKey {
         std::uint64_t reference = 0, user = 0;
@@ -165,6 +199,7 @@ class App : public ScriptableApp {
     } sceneKey_;
     int sceneDraws_ = 0;
     BonesLoader bonesLoader_;  // joined before the scenes it reads go
+    std::unique_ptr<NewestWins<UserDrrRequest, UserDrrResult>> userDrrWorker_;
     // Last: destroyed first, so its worker (which holds the scene) is joined before the rest.
     Solver solver_;
     std::uint64_t solveVersion_ = 0;

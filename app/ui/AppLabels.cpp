@@ -77,6 +77,7 @@ void App::replaceBones(std::shared_ptr<const SceneBones> bones) {
     installBones();
     referenceKey_.reset();
     userKey_.reset();
+    userRequested_.reset();
 }
 
 }  // namespace fm::app

@@ -335,7 +335,7 @@ void WorkspaceApp::frame() {
     }
     drawScene();
     ui_.drawSceneLabels(sceneRenderer_->labels());
-    presentImGuiFrame(backend_);
+    presenter_.present(backend_);
     // A Solve, a Track run or playing needs no more than the background frames (10 a second:
     // the workers keep the cores); nothing moving: sleep until the next event.
     const bool busy = state_.interacting || ImGui::IsMouseDown(ImGuiMouseButton_Left);

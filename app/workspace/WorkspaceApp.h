@@ -8,6 +8,7 @@
 #include "mesh/Mesh.h"
 #include "platform/RenderBackend.h"
 #include "render/Screenshot.h"
+#include "ui/PresentFrame.h"
 #include "ui/ScriptableApp.h"
 #include "workspace/WorkspaceImages.h"
 #include "workspace/WorkspaceModel.h"
@@ -47,6 +48,7 @@ class WorkspaceApp : public ScriptableApp {
     const WorkspaceSolver& solver() const { return solver_; }
     const WorkspaceTracking& tracking() const { return tracking_; }
     const render::SceneRenderer& sceneRenderer() const { return *sceneRenderer_; }
+    FramePresenter& presenter() { return presenter_; }  // what each frame redraws
     int sceneDraws() const { return sceneDraws_; }  // how often the 3D view was drawn
     // Where `object` is shown in the current frame: its own pose there, else the one carried
     // over (ShownPose.h).
@@ -75,6 +77,7 @@ class WorkspaceApp : public ScriptableApp {
     WorkspaceImages images_;
     std::vector<std::unique_ptr<render::Texture>> radiographTextures_, modelTextures_;
     std::unique_ptr<render::SceneRenderer> sceneRenderer_;
+    FramePresenter presenter_;
     std::vector<std::shared_ptr<const Mesh>> surfaces_;  // per object, its own frame (null: none)
     // What the 3D view shows, to redraw it only on change.
     struct SceneKey {
