@@ -282,13 +282,10 @@ DrrVolumeInfo drrVolumeInfo(const DrrVolume& v) {
     info.empty = v.empty;
     info.denseWalk = v.preferDenseWalk && denseWalkSimdAvailable();
     info.bricksTotal = static_cast<int>(v.brickMixed.size());
-    for (std::size_t b = 0; b < v.brickMixed.size(); ++b) {
-        if (v.brickMixed[b]) continue;
-        if (v.brickValue[b] == 0.0f)
-            ++info.bricksEmpty;
-        else
-            ++info.bricksUniform;
-    }
+    // decideWalk counted the empty bricks; the other unmixed ones are uniform.
+    info.bricksEmpty = static_cast<int>(v.bricksEmpty);
+    const auto unmixed = std::count(v.brickMixed.begin(), v.brickMixed.end(), std::uint8_t{0});
+    info.bricksUniform = static_cast<int>(unmixed) - info.bricksEmpty;
     return info;
 }
 
