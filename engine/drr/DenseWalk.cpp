@@ -2,6 +2,7 @@
 #include "drr/DenseWalk.h"
 
 #include <algorithm>
+#include <limits>
 
 namespace fm {
 
@@ -16,13 +17,14 @@ double walkDense(const float* values, std::int64_t last, const DenseRay& r) {
     double alpha = r.aBegin, acc = 0.0;
     for (;;) {
         // The smallest next crossing; on ties the later axis (the vector form does the same).
-        const int a = next[0] < next[1] ? (next[0] < next[2] ? 0 : 2) : (next[1] < next[2] ? 1 : 2);
-        const double aNext = std::min(next[a], r.aEnd);
-        if (aNext > alpha) {
-            acc += (aNext - alpha) * static_cast<double>(values[std::clamp<std::int64_t>(linear, 0, last)]);
-            alpha = aNext;
-        }
-        if (next[a] >= r.aEnd || steps == 0) break;
+        const double nextMin = std::min(next[0], std::min(next[1], next[2]));
+        const int a = next[2] == nextMin ? 2 : (next[1] == nextMin ? 1 : 0);
+        // Never negative: alpha is the last crossing, every next crossing is at or after it
+        // (DenseRay's next >= aBegin, increments >= 0), and aEnd >= aBegin.
+        const double aNext = std::min(nextMin, r.aEnd);
+        acc += (aNext - alpha) * static_cast<double>(values[std::clamp<std::int64_t>(linear, 0, last)]);
+        alpha = aNext;
+        if (nextMin >= r.aEnd || steps == 0) break;
         --steps;
         linear += r.offset[a];
         next[a] += r.delta[a];
@@ -33,7 +35,8 @@ double walkDense(const float* values, std::int64_t last, const DenseRay& r) {
 bool denseWalkSimdAvailable() {
 #if defined(__x86_64__) && defined(__GNUC__)
     static const bool available =
-        __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq");
+        __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") &&
+        __builtin_cpu_supports("avx512vl");
     return available;
 #else
     return false;
@@ -43,7 +46,9 @@ bool denseWalkSimdAvailable() {
 void walkDense16(const float* values, std::int64_t last, const DenseRay* rays, int count,
                 double* sums) {
 #if defined(__x86_64__) && defined(__GNUC__)
-    if (denseWalkSimdAvailable()) {
+    // The vector form indexes in 32 bits; a volume past that (over 8 GB of floats) walks
+    // one ray at a time, with the same sums.
+    if (denseWalkSimdAvailable() && last <= std::numeric_limits<std::int32_t>::max()) {
         detail::walkDense16Avx512(values, last, rays, count, sums);
         return;
     }

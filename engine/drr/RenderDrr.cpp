@@ -95,14 +95,16 @@ inline int smallestOf(const double next[3]) {
 DenseRay denseRay(const DrrVolume& v, const LocalRay& r, double aBegin, double aEnd) {
     DenseRay d;
     d.aBegin = aBegin;
-    d.aEnd = aEnd;
+    d.aEnd = std::max(aBegin, aEnd);
     const std::ptrdiff_t stride[3] = {1, v.paddedDims.x,
                                       std::ptrdiff_t(v.paddedDims.x) * v.paddedDims.y};
     int index[3];
     for (int a = 0; a < 3; ++a) {
         index[a] = cellAt(r, a, aBegin, v.invSpacing[a], 0, v.dims[a]);
         const int step = r.parallel[a] ? 0 : (r.d[a] > 0.0 ? 1 : -1);
-        d.next[a] = r.parallel[a] ? kInfinity : exitAlpha(r, a, index[a], step, v.spacing[a]);
+        // Not before aBegin, which rounding could give: the walk's segments never run backwards.
+        d.next[a] = r.parallel[a] ? kInfinity
+                                  : std::max(aBegin, exitAlpha(r, a, index[a], step, v.spacing[a]));
         d.delta[a] = v.spacing[a] * std::abs(r.invD[a]);
         d.offset[a] = step * stride[a];
         // Crossings inside the box: from this voxel to the box's last one along the step.
