@@ -21,16 +21,14 @@
 #include "core/Parallel.h"
 #include "drr/Drr.h"
 #include "drr/BrickDepthTiles.h"
+#include "drr/DenseRaySetup.h"
 #include "drr/DenseWalk.h"
 #include "drr/DrrVolume.h"
 
 namespace fm {
 namespace {
 
-// A ray whose direction component moves less than this (mm over the whole source-to-pixel
-// segment) along an axis is treated as exactly parallel to it: the neglected displacement is
-// ~1e-200 mm, and it keeps 1/d finite so that no 0 * inf = NaN can appear.
-constexpr double kParallelLimit = 1e-200;
+constexpr double kParallelLimit = kRayParallelLimit;  // DenseRaySetup.h
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // Chunks per thread for parallelFor: balances rows that hit a lot of bone against empty ones.
 constexpr int kChunksPerThread = 8;
@@ -359,6 +357,7 @@ Image renderDrr(const DrrVolume& v, const ProjectionGeometry& g, const DrrRender
         dense && options.skipEmptySpace
             ? brickDepthTiles(v, g, range.col0, range.col1, range.row0, range.row1)
             : std::nullopt;
+    const bool simdSetup = denseWalkSimdAvailable();
     auto denseBody = [&](int rowBegin, int rowEnd) {
         DenseRay rays[16];
         int cols[16];
@@ -374,17 +373,47 @@ Image renderDrr(const DrrVolume& v, const ProjectionGeometry& g, const DrrRender
                 }
                 n = 0;
             };
-            for (int col = range.col0; col < range.col1; ++col) {
-                if (tiles && tiles->empty(col, row)) continue;
-                const glm::dvec3 pixel = det.pixelCenter(col, row);
-                const LocalRay ray = makeRay(q0, v.worldToLocalPoint(pixel));
-                double aMin, aMax;
-                if (!clipRay(ray, glm::dvec3(0.0), boxExtent, aMin, aMax)) continue;
-                if (tiles && !tiles->clip(col, row, aMin, aMax)) continue;
-                rays[n] = denseRay(v, ray, aMin, aMax);
-                cols[n] = col;
-                lengths[n] = glm::length(pixel - g.source);
-                if (++n == 16) flush();
+            if (simdSetup) {
+                // Eight pixels at a time set up in lanes (DenseRaySetup.h), the same rays.
+                glm::dvec3 q1[8];
+                int lane[8];
+                double laneLength[8];
+                DenseRay set[8];
+                int m = 0;
+                auto setUp = [&] {
+                    const unsigned hit =
+                        setupDenseRays8(v, q0, q1, m, tiles ? &*tiles : nullptr, lane, row, set);
+                    for (int i = 0; i < m; ++i) {
+                        if (!((hit >> i) & 1u)) continue;
+                        rays[n] = set[i];
+                        cols[n] = lane[i];
+                        lengths[n] = laneLength[i];
+                        if (++n == 16) flush();
+                    }
+                    m = 0;
+                };
+                for (int col = range.col0; col < range.col1; ++col) {
+                    if (tiles && tiles->empty(col, row)) continue;
+                    const glm::dvec3 pixel = det.pixelCenter(col, row);
+                    q1[m] = v.worldToLocalPoint(pixel);
+                    lane[m] = col;
+                    laneLength[m] = glm::length(pixel - g.source);
+                    if (++m == 8) setUp();
+                }
+                if (m > 0) setUp();
+            } else {
+                for (int col = range.col0; col < range.col1; ++col) {
+                    if (tiles && tiles->empty(col, row)) continue;
+                    const glm::dvec3 pixel = det.pixelCenter(col, row);
+                    const LocalRay ray = makeRay(q0, v.worldToLocalPoint(pixel));
+                    double aMin, aMax;
+                    if (!clipRay(ray, glm::dvec3(0.0), boxExtent, aMin, aMax)) continue;
+                    if (tiles && !tiles->clip(col, row, aMin, aMax)) continue;
+                    rays[n] = denseRay(v, ray, aMin, aMax);
+                    cols[n] = col;
+                    lengths[n] = glm::length(pixel - g.source);
+                    if (++n == 16) flush();
+                }
             }
             if (n > 0) flush();
         }

@@ -23,7 +23,9 @@ fm::DrrRenderOptions withWalk(fm::DrrExactWalk walk, int threads = 0) {
 }
 
 // Every pixel of the dense image equals the scalar plain walk of its ray (drrLineIntegral
-// without skipping), rounded to float: the vector lanes do the scalar arithmetic exactly.
+// without skipping), rounded to float: the vector lanes do the scalar arithmetic exactly, in
+// the walk (DenseWalk.h) and in the rays' set-up (DenseRaySetup.h: clipping, first voxel and
+// crossings, including rays parallel to an axis and rays on voxel faces).
 void expectDenseEqualsScalar(const fm::DrrVolume& v, const fm::ProjectionGeometry& g) {
     const fm::Image dense = fm::renderDrr(v, g, withWalk(fm::DrrExactWalk::Dense));
     int nonZero = 0, mismatches = 0;
