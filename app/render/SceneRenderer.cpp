@@ -20,6 +20,14 @@ struct LineVertex {
 
 namespace {
 
+// The farthest point of the X-ray source and film from the isocentre, at any angles.
+double apparatusRadius(const SceneSetup& setup) {
+    const glm::dvec2 halfFilm = 0.5 * setup.filmSizeMm;
+    return std::max(setup.sourceToIsocenterMm,
+                    std::sqrt(setup.isocenterToFilmMm * setup.isocenterToFilmMm +
+                              glm::dot(halfFilm, halfFilm)));
+}
+
 const glm::vec4 kBoxColor{0.85f, 0.85f, 0.90f, 1.0f};
 const glm::vec4 kAxisColors[3] = {
     {0.95f, 0.30f, 0.30f, 1.0f}, {0.35f, 0.90f, 0.35f, 1.0f}, {0.40f, 0.55f, 1.00f, 1.0f}};
@@ -339,10 +347,11 @@ void SceneRenderer::draw(const app::LoadedScene* scene, const std::vector<Surfac
             d.pixelCenter(-0.5, -0.5), d.pixelCenter(d.size.x - 0.5, -0.5),
             d.pixelCenter(d.size.x - 0.5, d.size.y - 0.5), d.pixelCenter(-0.5, d.size.y - 0.5)};
         const glm::vec3 source = toScene(g.source);
-        // The slice mode shows the volume alone: frame its box, not the X-ray apparatus.
-        double radius = slicePlane ? 0.0 : glm::length(source);
-        if (!slicePlane)
-            for (const auto& c : corners) radius = std::max(radius, double(glm::length(toScene(c))));
+        // The slice mode shows the volume alone: frame its box, not the X-ray apparatus. The
+        // apparatus turns about the isocentre, so its reach is computed from the set-up, not
+        // from the turned points: their lengths differ in the last bits from angle to angle,
+        // which moved the camera by rounding and made every turn redraw the surfaces.
+        double radius = slicePlane ? 0.0 : apparatusRadius(scene->setup);
         for (const auto& c : scene->boxCorners)
             radius = std::max(radius, double(glm::length(toScene(c))));
 

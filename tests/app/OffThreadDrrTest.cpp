@@ -104,5 +104,35 @@ TEST_F(HeadlessApp, TheKeptSurfaceLayerDrawsTheSamePixelsAsTheSurfaces) {
     EXPECT_EQ(kept.readPixels(), fresh.readPixels());
 }
 
+// Every turn of a drag reuses the layer, not only some: the camera frames the apparatus by its
+// reach at any angle, so rounding in the turned points does not move it.
+TEST_F(HeadlessApp, EveryTurnOfTheSourceAndFilmReusesTheSurfaceLayer) {
+    const auto surfaces = app->surfaces();
+    const app::View3d view = app->state().view;
+    const glm::ivec2 size(160, 120);
+    // The set-up and CT centre of TotalSegmentator's example_ct, where the turned film
+    // corners' lengths differ in the last bits (the knee's happen not to).
+    app::LoadedScene scene = *app->scene();
+    scene.setup.sourceToIsocenterMm = 500.0;
+    scene.setup.isocenterToFilmMm = 500.0;
+    scene.setup.filmSizeMm = {805.2, 805.2};
+    const glm::dvec3 move = glm::dvec3(-3.543670654296875, -161.31900024414062, 260.8017578125) -
+                            scene.center;
+    scene.center += move;
+    for (auto& c : scene.boxCorners) c += move;
+    Pose turned;
+    render::SceneRenderer kept;
+    kept.draw(&scene, surfaces, turned, view, 0, size, false);
+    constexpr int kTurns = 60;
+    for (int i = 1; i <= kTurns; ++i) {  // the azimuth slider dragged end to end
+        turned.azimuthDeg = -180.0 + 6.0 * i;
+        kept.draw(&scene, surfaces, turned, view, 0, size, false);
+    }
+    EXPECT_EQ(kept.surfaceLayerReuses(), kTurns);
+    render::SceneRenderer fresh;
+    fresh.draw(&scene, surfaces, turned, view, 0, size, false);
+    EXPECT_EQ(kept.readPixels(), fresh.readPixels());
+}
+
 }  // namespace
 }  // namespace fm::test
