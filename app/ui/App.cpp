@@ -460,9 +460,13 @@ void App::updateImages() {
                          userObjects()});
 
     if (state_.display.autoWindow) {
-        const render::WindowLevel wl = render::fullRange(referenceDrr_);
-        state_.display.window = wl.window;
-        state_.display.level = wl.level;
+        // The reference's range, scanned once per reference image, not once per frame.
+        if (autoWindowOf_ != referenceVersion_) {
+            autoWindow_ = render::fullRange(referenceDrr_);
+            autoWindowOf_ = referenceVersion_;
+        }
+        state_.display.window = autoWindow_.window;
+        state_.display.level = autoWindow_.level;
     }
     const DisplayKey key{referenceVersion_, userVersion_, state_.display.window,
                          state_.display.level, state_.display.compare};
