@@ -584,8 +584,12 @@ void App::frame() {
     updateImages();
 
     // The 3D view is redrawn only when something it shows changed; while the user drags a
-    // slider or orbits it skips multisampling (4x MSAA costs ~4x on llvmpipe).
-    const bool fast = state_.interacting || ImGui::IsMouseDown(ImGuiMouseButton_Left);
+    // slider or orbits it skips multisampling (4x MSAA costs ~4x on llvmpipe). After a release
+    // it stays so until the exact DRR comes from its worker: the multisampled view is drawn
+    // once, with the exact film, not first with the preview's.
+    const bool interacting = state_.interacting || ImGui::IsMouseDown(ImGuiMouseButton_Left);
+    const bool fast =
+        interacting || (state_.timings.userDrrCoarse && userDrrWorker_->busy());
     const SceneKey sceneKey{scene_ ? scene_->generation : 0,
                             boneGeneration_,
                             state_.userPose.toArray(),
@@ -626,7 +630,7 @@ void App::frame() {
     // Nothing moving: the window sleeps until the next event instead of redrawing.
     const bool working = state_.load.loading || state_.labels.loading || state_.solve.running ||
                          userDrrWorker_->busy();
-    backend_.setActivity(fast || state_.interacting ? Activity::Busy
+    backend_.setActivity(interacting ? Activity::Busy
                          : working                  ? Activity::Background
                                                     : Activity::Idle);
     ++state_.frame;

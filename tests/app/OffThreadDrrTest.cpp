@@ -78,6 +78,42 @@ TEST_F(HeadlessApp, AUserDrrOnItsWorkerEndsAsTheEnginesExactDrr) {
     EXPECT_GT(app->state().timings.userDrrLatencyMs, 0.0);
 }
 
+// Released after a coarse drag, with the DRR on its worker: the multisampled 3D view is drawn
+// once, with the exact DRR on its film, not first with the preview's and again with the exact.
+TEST_F(HeadlessApp, AfterAReleaseTheMultisampled3dViewWaitsForTheExactDrr) {
+    app->setUserDrrOffThread(true);
+    const app::WidgetRect slider = script->widget("slider:azimuth");
+    app::FrameInput input;
+    input.mousePos = slider.center();
+    app->backend().setFrameInput(input);
+    app->frame();
+    input.mouseDown[0] = true;
+    for (int i = 0; i < 6; ++i) {
+        input.mousePos.x += 12.0f;
+        app->backend().setFrameInput(input);
+        app->frame();
+    }
+    auto drawUntil = [&](auto done) {  // frames (input unchanged) until `done` or ~2 s
+        for (int i = 0; i < 2000 && !done(); ++i) {
+            std::this_thread::sleep_for(std::chrono::milliseconds(1));
+            app->frame();
+        }
+    };
+    // Still held: the previews finish, so after the release only the exact DRR can arrive.
+    drawUntil([&] { return !app->userDrrPending(); });
+    ASSERT_TRUE(app->state().timings.userDrrCoarse);
+    const int drawsBefore = app->sceneDraws();
+    input.mouseDown[0] = false;
+    app->backend().setFrameInput(input);
+    app->frame();
+    drawUntil([&] { return !app->userDrrPending() && !app->state().timings.userDrrCoarse; });
+    ASSERT_FALSE(app->state().timings.userDrrCoarse);
+    EXPECT_EQ(app->sceneDraws() - drawsBefore, 1);
+    // That draw was the final, multisampled one: another frame has nothing to redraw.
+    app->frame();
+    EXPECT_EQ(app->sceneDraws() - drawsBefore, 1);
+}
+
 // Turning the source and film (azimuth) keeps the surfaces and the camera: the second fast draw
 // copies the kept surface layer, and its pixels equal a fresh renderer's.
 TEST_F(HeadlessApp, TheKeptSurfaceLayerDrawsTheSamePixelsAsTheSurfaces) {
