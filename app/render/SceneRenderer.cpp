@@ -172,9 +172,11 @@ SceneRenderer::~SceneRenderer() {
     if (msColor_) glDeleteRenderbuffers(1, &msColor_);
     if (msDepth_) glDeleteRenderbuffers(1, &msDepth_);
     if (resolveDepth_) glDeleteRenderbuffers(1, &resolveDepth_);
-    if (layerFbo_) glDeleteFramebuffers(1, &layerFbo_);
-    if (layerColor_) glDeleteRenderbuffers(1, &layerColor_);
-    if (layerDepth_) glDeleteRenderbuffers(1, &layerDepth_);
+    for (const SurfaceLayer& layer : layers_) {
+        if (layer.fbo) glDeleteFramebuffers(1, &layer.fbo);
+        if (layer.color) glDeleteRenderbuffers(1, &layer.color);
+        if (layer.depth) glDeleteRenderbuffers(1, &layer.depth);
+    }
     if (resolveTexture_) {
         markTextureChanged(resolveTexture_);  // its name may be reused
         glDeleteTextures(1, &resolveTexture_);
@@ -211,20 +213,27 @@ void SceneRenderer::resize(glm::ivec2 size) {
     glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, size.x, size.y);
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, resolveDepth_);
 
-    // The kept surface layer: the same formats as the single-sample target (copied both ways).
-    if (!layerFbo_) {
-        glGenFramebuffers(1, &layerFbo_);
-        glGenRenderbuffers(1, &layerColor_);
-        glGenRenderbuffers(1, &layerDepth_);
+    // The kept surface layers: the same formats as their targets (copied both ways).
+    for (int multisample = 0; multisample < 2; ++multisample) {
+        SurfaceLayer& layer = layers_[multisample];
+        if (!layer.fbo) {
+            glGenFramebuffers(1, &layer.fbo);
+            glGenRenderbuffers(1, &layer.color);
+            glGenRenderbuffers(1, &layer.depth);
+        }
+        const int samples = multisample ? kSamples : 0;
+        glBindRenderbuffer(GL_RENDERBUFFER, layer.color);
+        glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_RGBA8, size.x, size.y);
+        glBindRenderbuffer(GL_RENDERBUFFER, layer.depth);
+        glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_DEPTH_COMPONENT24, size.x,
+                                         size.y);
+        glBindFramebuffer(GL_FRAMEBUFFER, layer.fbo);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER,
+                                  layer.color);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER,
+                                  layer.depth);
+        layer.key.reset();
     }
-    glBindRenderbuffer(GL_RENDERBUFFER, layerColor_);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, size.x, size.y);
-    glBindRenderbuffer(GL_RENDERBUFFER, layerDepth_);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, size.x, size.y);
-    glBindFramebuffer(GL_FRAMEBUFFER, layerFbo_);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, layerColor_);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, layerDepth_);
-    layerKey_.reset();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
@@ -243,8 +252,9 @@ bool SceneRenderer::SurfaceLayerKey::operator==(const SurfaceLayerKey& o) const 
 }
 
 void SceneRenderer::drawSurfaces(const std::vector<SurfaceItem>& surfaces, const glm::dvec3& shift,
-                                 bool cacheable) {
-    const GLuint target = cacheable ? resolveFbo_ : msFbo_;
+                                 bool multisample) {
+    const GLuint target = multisample ? msFbo_ : resolveFbo_;
+    SurfaceLayer& layer = layers_[multisample ? 1 : 0];
     auto copy = [&](GLuint from, GLuint to) {
         glBindFramebuffer(GL_READ_FRAMEBUFFER, from);
         glBindFramebuffer(GL_DRAW_FRAMEBUFFER, to);
@@ -252,8 +262,8 @@ void SceneRenderer::drawSurfaces(const std::vector<SurfaceItem>& surfaces, const
                           GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT, GL_NEAREST);
         glBindFramebuffer(GL_FRAMEBUFFER, target);
     };
-    if (cacheable && layerKey_ && *layerKey_ == currentLayer_) {
-        copy(layerFbo_, resolveFbo_);
+    if (layer.key && *layer.key == currentLayer_) {
+        copy(layer.fbo, target);
         ++surfaceLayerReuses_;
         return;
     }
@@ -270,9 +280,8 @@ void SceneRenderer::drawSurfaces(const std::vector<SurfaceItem>& surfaces, const
         glBindVertexArray(gpu.vao);
         glDrawElements(GL_TRIANGLES, gpu.indexCount, GL_UNSIGNED_INT, nullptr);
     }
-    if (!cacheable) return;
-    copy(resolveFbo_, layerFbo_);
-    layerKey_ = currentLayer_;
+    copy(target, layer.fbo);
+    layer.key = currentLayer_;
 }
 
 const SceneRenderer::GpuMesh& SceneRenderer::uploadMesh(std::size_t slot, const Mesh& mesh,
@@ -418,7 +427,7 @@ void SceneRenderer::draw(const app::LoadedScene* scene, const std::vector<Surfac
         } else {
             currentLayer_ = {size, viewProjection, camera.position, shift,
                              view.showBone ? surfaces : std::vector<SurfaceItem>{}};
-            drawSurfaces(currentLayer_.surfaces, shift, !multisample);
+            drawSurfaces(currentLayer_.surfaces, shift, multisample);
         }
         if (slicePlane) {
             meshShader_.set("uAlpha", 1.0f);

@@ -138,6 +138,20 @@ TEST_F(HeadlessApp, TheKeptSurfaceLayerDrawsTheSamePixelsAsTheSurfaces) {
     EXPECT_EQ(kept.surfaceLayerReuses(), 1);
     fresh.draw(app->scene(), surfaces, moved, view, 0, size, false);
     EXPECT_EQ(kept.readPixels(), fresh.readPixels());
+
+    // Multisampled (the view at rest) the same: its own kept layer, copied sample by sample.
+    render::SceneRenderer keptMs, freshMs;
+    keptMs.draw(app->scene(), surfaces, Pose{}, view, 0, size, true);
+    keptMs.draw(app->scene(), surfaces, turned, view, 0, size, true);
+    EXPECT_EQ(keptMs.surfaceLayerReuses(), 1);
+    freshMs.draw(app->scene(), surfaces, turned, view, 0, size, true);
+    EXPECT_EQ(freshMs.surfaceLayerReuses(), 0);
+    EXPECT_EQ(keptMs.readPixels(), freshMs.readPixels());
+    // A single-sample draw in between keeps the multisampled layer.
+    keptMs.draw(app->scene(), surfaces, Pose{}, view, 0, size, false);
+    keptMs.draw(app->scene(), surfaces, turned, view, 0, size, true);
+    EXPECT_EQ(keptMs.surfaceLayerReuses(), 2);
+    EXPECT_EQ(keptMs.readPixels(), freshMs.readPixels());
 }
 
 // Every turn of a drag reuses the layer, not only some: the camera frames the apparatus by its
