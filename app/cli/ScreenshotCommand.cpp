@@ -25,6 +25,7 @@ struct ScreenshotArgs {
     bool match = false, help = false, timings = false;
     int threads = 0;
     int measureDrag = 0;
+    std::string dragModes = "ui-exact,ui-coarse,worker-exact,worker-coarse";
     fm::cli::WorkspaceArgs workspace;
     bool sideBySide = false, drr = false;
 };
@@ -94,6 +95,12 @@ void runScreenshot(const ScreenshotArgs& args) {
     if (args.measureDrag > 0) {
         // Frame times and input latency of a slider drag: exact-only against
         // coarse-while-dragging, the user DRR on the UI thread against on its worker.
+        std::istringstream modes(args.dragModes);
+        for (std::string mode; std::getline(modes, mode, ',');)
+            if (mode != "ui-exact" && mode != "ui-coarse" && mode != "worker-exact" &&
+                mode != "worker-coarse")
+                throw fm::Error("--drag-modes \"" + mode +
+                                "\": expected ui-exact, ui-coarse, worker-exact or worker-coarse");
         auto backend = fm::app::createOsmesaBackend(options.size);
         std::printf("backend: %s\n", backend->describe().c_str());
         fm::app::App app(*backend, options.app);
@@ -104,6 +111,10 @@ void runScreenshot(const ScreenshotArgs& args) {
         // The user DRR on the UI thread (each frame waits for it), then on its worker.
         for (const bool offThread : {false, true})
             for (const bool coarse : {false, true}) {
+                const std::string name = std::string(offThread ? "worker-" : "ui-") +
+                                         (coarse ? "coarse" : "exact");
+                if (("," + args.dragModes + ",").find("," + name + ",") == std::string::npos)
+                    continue;
                 const auto t = fm::app::measureSliderDrag(app, args.measureDrag, coarse, offThread);
                 std::printf("drag, %s, %s:\n  %s\n",
                             coarse ? "coarse while dragging" : "exact DRR every frame",
@@ -153,6 +164,10 @@ FM_REGISTER_COMMAND("screenshot", 2, [](CLI::App& cli) {
                     "frame times and input latency, exact DRRs vs coarse while dragging, the DRR "
                     "on the UI thread vs on its worker")
         ->check(CLI::NonNegativeNumber);
+    cmd->add_option("--drag-modes", a->dragModes,
+                    "with --measure-drag: which drags, a comma list of ui-exact, ui-coarse, "
+                    "worker-exact, worker-coarse (worker-coarse is what the window does)")
+        ->capture_default_str();
     fm::cli::addWorkspaceOptions(cmd, a->workspace, false);
     cmd->add_flag("--side-by-side", a->sideBySide, "workspace: the model beside each radiograph, not over it");
     cmd->add_flag("--drr", a->drr, "workspace: the models' DRRs instead of their outlines");

@@ -20,6 +20,14 @@ struct LineVertex {
 
 namespace {
 
+// The farthest point of the X-ray source and film from the isocentre, at any angles.
+double apparatusRadius(const SceneSetup& setup) {
+    const glm::dvec2 halfFilm = 0.5 * setup.filmSizeMm;
+    return std::max(setup.sourceToIsocenterMm,
+                    std::sqrt(setup.isocenterToFilmMm * setup.isocenterToFilmMm +
+                              glm::dot(halfFilm, halfFilm)));
+}
+
 const glm::vec4 kBoxColor{0.85f, 0.85f, 0.90f, 1.0f};
 const glm::vec4 kAxisColors[3] = {
     {0.95f, 0.30f, 0.30f, 1.0f}, {0.35f, 0.90f, 0.35f, 1.0f}, {0.40f, 0.55f, 1.00f, 1.0f}};
@@ -164,9 +172,11 @@ SceneRenderer::~SceneRenderer() {
     if (msColor_) glDeleteRenderbuffers(1, &msColor_);
     if (msDepth_) glDeleteRenderbuffers(1, &msDepth_);
     if (resolveDepth_) glDeleteRenderbuffers(1, &resolveDepth_);
-    if (layerFbo_) glDeleteFramebuffers(1, &layerFbo_);
-    if (layerColor_) glDeleteRenderbuffers(1, &layerColor_);
-    if (layerDepth_) glDeleteRenderbuffers(1, &layerDepth_);
+    for (const SurfaceLayer& layer : layers_) {
+        if (layer.fbo) glDeleteFramebuffers(1, &layer.fbo);
+        if (layer.color) glDeleteRenderbuffers(1, &layer.color);
+        if (layer.depth) glDeleteRenderbuffers(1, &layer.depth);
+    }
     if (resolveTexture_) {
         markTextureChanged(resolveTexture_);  // its name may be reused
         glDeleteTextures(1, &resolveTexture_);
@@ -203,20 +213,27 @@ void SceneRenderer::resize(glm::ivec2 size) {
     glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, size.x, size.y);
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, resolveDepth_);
 
-    // The kept surface layer: the same formats as the single-sample target (copied both ways).
-    if (!layerFbo_) {
-        glGenFramebuffers(1, &layerFbo_);
-        glGenRenderbuffers(1, &layerColor_);
-        glGenRenderbuffers(1, &layerDepth_);
+    // The kept surface layers: the same formats as their targets (copied both ways).
+    for (int multisample = 0; multisample < 2; ++multisample) {
+        SurfaceLayer& layer = layers_[multisample];
+        if (!layer.fbo) {
+            glGenFramebuffers(1, &layer.fbo);
+            glGenRenderbuffers(1, &layer.color);
+            glGenRenderbuffers(1, &layer.depth);
+        }
+        const int samples = multisample ? kSamples : 0;
+        glBindRenderbuffer(GL_RENDERBUFFER, layer.color);
+        glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_RGBA8, size.x, size.y);
+        glBindRenderbuffer(GL_RENDERBUFFER, layer.depth);
+        glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_DEPTH_COMPONENT24, size.x,
+                                         size.y);
+        glBindFramebuffer(GL_FRAMEBUFFER, layer.fbo);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER,
+                                  layer.color);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER,
+                                  layer.depth);
+        layer.key.reset();
     }
-    glBindRenderbuffer(GL_RENDERBUFFER, layerColor_);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, size.x, size.y);
-    glBindRenderbuffer(GL_RENDERBUFFER, layerDepth_);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, size.x, size.y);
-    glBindFramebuffer(GL_FRAMEBUFFER, layerFbo_);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, layerColor_);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, layerDepth_);
-    layerKey_.reset();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
@@ -235,8 +252,9 @@ bool SceneRenderer::SurfaceLayerKey::operator==(const SurfaceLayerKey& o) const 
 }
 
 void SceneRenderer::drawSurfaces(const std::vector<SurfaceItem>& surfaces, const glm::dvec3& shift,
-                                 bool cacheable) {
-    const GLuint target = cacheable ? resolveFbo_ : msFbo_;
+                                 bool multisample) {
+    const GLuint target = multisample ? msFbo_ : resolveFbo_;
+    SurfaceLayer& layer = layers_[multisample ? 1 : 0];
     auto copy = [&](GLuint from, GLuint to) {
         glBindFramebuffer(GL_READ_FRAMEBUFFER, from);
         glBindFramebuffer(GL_DRAW_FRAMEBUFFER, to);
@@ -244,8 +262,8 @@ void SceneRenderer::drawSurfaces(const std::vector<SurfaceItem>& surfaces, const
                           GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT, GL_NEAREST);
         glBindFramebuffer(GL_FRAMEBUFFER, target);
     };
-    if (cacheable && layerKey_ && *layerKey_ == currentLayer_) {
-        copy(layerFbo_, resolveFbo_);
+    if (layer.key && *layer.key == currentLayer_) {
+        copy(layer.fbo, target);
         ++surfaceLayerReuses_;
         return;
     }
@@ -262,9 +280,8 @@ void SceneRenderer::drawSurfaces(const std::vector<SurfaceItem>& surfaces, const
         glBindVertexArray(gpu.vao);
         glDrawElements(GL_TRIANGLES, gpu.indexCount, GL_UNSIGNED_INT, nullptr);
     }
-    if (!cacheable) return;
-    copy(resolveFbo_, layerFbo_);
-    layerKey_ = currentLayer_;
+    copy(target, layer.fbo);
+    layer.key = currentLayer_;
 }
 
 const SceneRenderer::GpuMesh& SceneRenderer::uploadMesh(std::size_t slot, const Mesh& mesh,
@@ -339,10 +356,11 @@ void SceneRenderer::draw(const app::LoadedScene* scene, const std::vector<Surfac
             d.pixelCenter(-0.5, -0.5), d.pixelCenter(d.size.x - 0.5, -0.5),
             d.pixelCenter(d.size.x - 0.5, d.size.y - 0.5), d.pixelCenter(-0.5, d.size.y - 0.5)};
         const glm::vec3 source = toScene(g.source);
-        // The slice mode shows the volume alone: frame its box, not the X-ray apparatus.
-        double radius = slicePlane ? 0.0 : glm::length(source);
-        if (!slicePlane)
-            for (const auto& c : corners) radius = std::max(radius, double(glm::length(toScene(c))));
+        // The slice mode shows the volume alone: frame its box, not the X-ray apparatus. The
+        // apparatus turns about the isocentre, so its reach is computed from the set-up, not
+        // from the turned points: their lengths differ in the last bits from angle to angle,
+        // which moved the camera by rounding and made every turn redraw the surfaces.
+        double radius = slicePlane ? 0.0 : apparatusRadius(scene->setup);
         for (const auto& c : scene->boxCorners)
             radius = std::max(radius, double(glm::length(toScene(c))));
 
@@ -409,7 +427,7 @@ void SceneRenderer::draw(const app::LoadedScene* scene, const std::vector<Surfac
         } else {
             currentLayer_ = {size, viewProjection, camera.position, shift,
                              view.showBone ? surfaces : std::vector<SurfaceItem>{}};
-            drawSurfaces(currentLayer_.surfaces, shift, !multisample);
+            drawSurfaces(currentLayer_.surfaces, shift, multisample);
         }
         if (slicePlane) {
             meshShader_.set("uAlpha", 1.0f);

@@ -70,7 +70,7 @@ class SceneRenderer {
     // The last drawn view as RGBA, row 0 = top (golden tests of the 3D view alone).
     std::vector<std::uint8_t> readPixels() const;
     glm::ivec2 size() const { return size_; }
-    // Single-sample draws that copied the kept surface layer instead of drawing the surfaces.
+    // Draws that copied a kept surface layer instead of drawing the surfaces.
     int surfaceLayerReuses() const { return surfaceLayerReuses_; }
     // Labels for the axes, source and film at their projected positions (last draw).
     const std::vector<SceneLabel>& labels() const { return labels_; }
@@ -90,12 +90,13 @@ class SceneRenderer {
     void drawLines(const std::vector<LineVertex>& lines, std::size_t lineVertexCount,
                    const glm::mat4& viewProjection);
     void finish(glm::ivec2 size, bool multisample);
-    // The surfaces of a single-sample draw (after the clear), or the same pixels and depths
-    // copied from the last such draw when nothing they depend on changed: turning the X-ray
-    // source and film (the azimuth, elevation, rotation sliders) moves neither them nor the
-    // camera, and on llvmpipe the surfaces are most of the view's cost.
+    // The surfaces (after the clear), or the same samples and depths copied from the last
+    // draw of the same kind (single-sample or multisampled) when nothing they depend on
+    // changed: turning the X-ray source and film (the azimuth, elevation, rotation sliders)
+    // moves neither them nor the camera, and on llvmpipe the surfaces are most of the view's
+    // cost. The multisampled layer makes the draw after a release cheap too.
     void drawSurfaces(const std::vector<SurfaceItem>& surfaces, const glm::dvec3& shift,
-                      bool cacheable);
+                      bool multisample);
     struct SurfaceLayerKey {
         glm::ivec2 size{0};
         glm::mat4 viewProjection{0.0f};
@@ -118,8 +119,11 @@ class SceneRenderer {
     GLuint msFbo_ = 0, msColor_ = 0, msDepth_ = 0;  // multisampled target
     GLuint resolveFbo_ = 0, resolveTexture_ = 0;    // what the UI shows
     GLuint resolveDepth_ = 0;                       // for single-sample drawing
-    GLuint layerFbo_ = 0, layerColor_ = 0, layerDepth_ = 0;  // the kept surface layer
-    std::optional<SurfaceLayerKey> layerKey_;                // what it holds
+    // The kept surface layers: [0] single-sample, [1] multisampled (the targets' formats).
+    struct SurfaceLayer {
+        GLuint fbo = 0, color = 0, depth = 0;
+        std::optional<SurfaceLayerKey> key;  // what it holds
+    } layers_[2];
     SurfaceLayerKey currentLayer_;                           // of the draw under way
     int surfaceLayerReuses_ = 0;
     std::vector<GpuMesh> meshes_;

@@ -460,9 +460,13 @@ void App::updateImages() {
                          userObjects()});
 
     if (state_.display.autoWindow) {
-        const render::WindowLevel wl = render::fullRange(referenceDrr_);
-        state_.display.window = wl.window;
-        state_.display.level = wl.level;
+        // The reference's range, scanned once per reference image, not once per frame.
+        if (autoWindowOf_ != referenceVersion_) {
+            autoWindow_ = render::fullRange(referenceDrr_);
+            autoWindowOf_ = referenceVersion_;
+        }
+        state_.display.window = autoWindow_.window;
+        state_.display.level = autoWindow_.level;
     }
     const DisplayKey key{referenceVersion_, userVersion_, state_.display.window,
                          state_.display.level, state_.display.compare};
@@ -580,8 +584,12 @@ void App::frame() {
     updateImages();
 
     // The 3D view is redrawn only when something it shows changed; while the user drags a
-    // slider or orbits it skips multisampling (4x MSAA costs ~4x on llvmpipe).
-    const bool fast = state_.interacting || ImGui::IsMouseDown(ImGuiMouseButton_Left);
+    // slider or orbits it skips multisampling (4x MSAA costs ~4x on llvmpipe). After a release
+    // it stays so until the exact DRR comes from its worker: the multisampled view is drawn
+    // once, with the exact film, not first with the preview's.
+    const bool interacting = state_.interacting || ImGui::IsMouseDown(ImGuiMouseButton_Left);
+    const bool fast =
+        interacting || (state_.timings.userDrrCoarse && userDrrWorker_->busy());
     const SceneKey sceneKey{scene_ ? scene_->generation : 0,
                             boneGeneration_,
                             state_.userPose.toArray(),
@@ -622,7 +630,7 @@ void App::frame() {
     // Nothing moving: the window sleeps until the next event instead of redrawing.
     const bool working = state_.load.loading || state_.labels.loading || state_.solve.running ||
                          userDrrWorker_->busy();
-    backend_.setActivity(fast || state_.interacting ? Activity::Busy
+    backend_.setActivity(interacting ? Activity::Busy
                          : working                  ? Activity::Background
                                                     : Activity::Idle);
     ++state_.frame;

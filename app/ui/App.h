@@ -184,6 +184,8 @@ class App : public ScriptableApp {
         CompareMode compare = CompareMode::Difference;
         bool operator==(const DisplayKey&) const = default;
     } shownKey_;
+    render::WindowLevel autoWindow_;  // the reference's full range (auto window) ...
+    std::uint64_t autoWindowOf_ = 0;  // ... of this reference version (0: none yet)
     struct SceneKey {
         std::uint64_t generation = 0, boneSurface = 0;
         std::array<double, 6> pose{};

@@ -3,6 +3,7 @@
 // letters, and the enlarged compare view.
 #include <imgui.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "AppFixture.h"
@@ -70,6 +71,24 @@ TEST_F(ImagePaneUi, LeftDragSetsWindowAndLevel) {
     EXPECT_FLOAT_EQ(app->state().display.level, level);
     script->drag(r.center(), r.center() + glm::vec2(0.0f, 30.0f), 3);
     EXPECT_GT(app->state().display.level, level) << "down raises the level";
+}
+
+// The auto window is the reference's whole range, kept from frame to frame and found again for
+// a new reference.
+TEST_F(ImagePaneUi, AutoWindowFollowsANewReference) {
+    ASSERT_TRUE(app->state().display.autoWindow);
+    auto expectWholeRange = [&] {
+        const auto [lo, hi] = std::minmax_element(app->referenceDrr().pixels.begin(),
+                                                  app->referenceDrr().pixels.end());
+        EXPECT_FLOAT_EQ(app->state().display.window, *hi - *lo);
+        EXPECT_FLOAT_EQ(app->state().display.level, 0.5f * (*hi + *lo));
+    };
+    expectWholeRange();
+    const float window = app->state().display.window;
+    app->state().requests.newReference = true;
+    script->idle(2);
+    ASSERT_NE(app->state().display.window, window) << "another reference, another range";
+    expectWholeRange();
 }
 
 TEST_F(ImagePaneUi, OrientationLettersFollowThePose) {
