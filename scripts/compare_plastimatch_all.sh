@@ -7,6 +7,8 @@
 #     --repeat N   alternating runs per view and tool (default 5; see compare_plastimatch.sh)
 #     --out DIR    keep each run's full report in DIR (default: a temporary folder)
 #     --only LIST  only these CTs (names as in the table: example_ct, aorta_crop, ...)
+#     --fluoromatch PATH   executable (default: build/app/fluoromatch; a copy keeps a long run
+#                  safe from rebuilds)
 #
 # The data folder is $FM_DATA_DIR (default ../shared/data). The GE gantry-tilt series is
 # resampled by our reader onto an oblique grid, which plastimatch cannot place (it ignores
@@ -19,12 +21,14 @@ DATA=${FM_DATA_DIR:-../shared/data}
 REPEAT=5
 OUT=""
 ONLY=""
+FM=build/app/fluoromatch
 while [ $# -gt 0 ]; do
     case "$1" in
         --repeat) REPEAT=$2; shift 2 ;;
         --out) OUT=$2; shift 2 ;;
         --only) ONLY=$2; shift 2 ;;
-        -h|--help) sed -n '2,14p' "$0"; exit 0 ;;
+        --fluoromatch) FM=$2; shift 2 ;;
+        -h|--help) sed -n '2,16p' "$0"; exit 0 ;;
         *) echo "compare_plastimatch_all: unknown option $1" >&2; exit 2 ;;
     esac
 done
@@ -51,7 +55,7 @@ for ct in "${CTS[@]}"; do
     for size in 256x256 512x512; do
         for threads in 1 2; do
             report="$OUT/${name}_${size}_${threads}.txt"
-            if ! bash scripts/compare_plastimatch.sh --volume "$spec" --size "$size" \
+            if ! bash scripts/compare_plastimatch.sh --fluoromatch "$FM" --volume "$spec" --size "$size" \
                 --threads "$threads" --repeat "$REPEAT" >"$report" 2>&1; then
                 printf '| %s | %s | %s | skipped: %s |\n' "$name" "$size" "$threads" \
                     "$(grep -m1 -iE 'not mapped|error|refused' "$report" | cut -c1-90)"
