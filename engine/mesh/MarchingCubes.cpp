@@ -9,12 +9,14 @@
 #include <memory>
 #include <numeric>
 #include <sstream>
+#include <utility>
 #include <vector>
 
 #include "core/Error.h"
 #include "core/WorldLimits.h"
 #include "core/LargeAllocation.h"
 #include "core/Parallel.h"
+#include "mesh/CubeLinks.h"
 #include "mesh/MarchingCubesTable.h"
 #include "mesh/MeshComponents.h"
 #include "mesh/VertexForest.h"
@@ -389,14 +391,17 @@ Mesh marchingCubes(const Volume& volume, const MarchingCubesOptions& options) {
     const auto& table = glm::determinant(volume.direction) < 0.0 ? packed.mirrored : packed.asIs;
     glm::uvec3* const outTriangles = mesh.triangles.data();
 
-    // Components: the generate pass unites the vertices of each triangle it writes, while the
-    // triangles are in cache. A chunk of cube slices [begin, end) only links vertices of the
-    // point slices it owns, [begin, end): a triangle reaching into point slice `end` (the next
-    // chunk's) is left for a serial pass afterwards, so no two threads write the same entries.
+    // Components: the generate pass unites, per cube, the loop segments on its upper faces
+    // (mesh/CubeLinks.h) while the cube's vertex ids are at hand. A chunk of cube slices
+    // [begin, end) only links vertices of the point slices it owns, [begin, end): the cubes of
+    // its last slice reach into point slice `end` (the next chunk's), so their segments are
+    // kept for a serial pass afterwards and no two threads write the same entries.
     const bool pick = options.onlyComponentRank || options.onlyComponentNear;
     const bool label = options.labelComponents || options.keepLargestComponents > 0 || pick;
+    const auto& links = mc::cubeLinks();
     MeshArray<std::uint32_t> forest(label ? vertexTotal : 0);
-    std::vector<std::vector<std::size_t>> crossing(label ? cubeRowsZ : 0);  // by chunk begin
+    using Segment = std::pair<std::uint32_t, std::uint32_t>;
+    std::vector<std::vector<Segment>> crossing(label ? cubeRowsZ : 0);  // by chunk begin
     auto slicesFirstVertex = [&](int uz) -> std::uint32_t {
         return uz < cubeRowsZ ? rows[g.rowIndex(0, uz)].vertexBase
                               : static_cast<std::uint32_t>(vertexTotal);
@@ -414,7 +419,10 @@ Mesh marchingCubes(const Volume& volume, const MarchingCubesOptions& options) {
             const std::uint32_t ownEnd = slicesFirstVertex(end);
             if (label)
                 std::iota(forest.begin() + ownFirst, forest.begin() + ownEnd, ownFirst);
+            std::uint32_t* const parent = forest.data();
             for (int uz = begin; uz < end; ++uz) {
+                const bool defer = label && uz == end - 1 && end < cubeRowsZ;
+                const bool unite = label && !defer;
                 for (int uy = 0; uy < cubeRowsY; ++uy) {
                     const RowInfo& row = rows[g.rowIndex(uy, uz)];
                     if (row.cubeLast < row.cubeFirst) continue;
@@ -525,20 +533,34 @@ Mesh marchingCubes(const Volume& volume, const MarchingCubesOptions& options) {
                             for (int t = 0; t < pc.triangleCount; ++t, e += 3)
                                 outTriangles[triangleId++] =
                                     glm::uvec3(ref[e[0]], ref[e[1]], ref[e[2]]);
+                            if (unite) {
+                                const mc::CubeLinks& l = links[lane(c, k)];
+                                std::uint32_t root = 0;
+                                for (int i = 0; i < l.count; ++i) {
+                                    const std::uint8_t step = l.steps[i];
+                                    const std::uint32_t v = ref[step & 15];
+                                    const std::uint32_t r = step & mc::CubeLinks::kFirstCube
+                                                                ? v
+                                                                : forestRoot(parent, v);
+                                    if (step & mc::CubeLinks::kPathStart) {
+                                        root = r;
+                                    } else if (r > root) {
+                                        parent[r] = root;
+                                    } else if (r < root) {
+                                        parent[root] = r;
+                                        root = r;
+                                    }
+                                }
+                            } else if (defer) {
+                                const mc::CubeLinks& l = links[lane(c, k)];
+                                for (int i = 1; i < l.count; ++i)
+                                    if (!(l.steps[i] & mc::CubeLinks::kPathStart))
+                                        crossing[begin].emplace_back(ref[l.steps[i - 1] & 15],
+                                                                     ref[l.steps[i] & 15]);
+                            }
                         }
                         for (int q = 0; q < 4; ++q)
                             cursor[q] += static_cast<std::uint32_t>(upTo[q] >> 56);
-                    }
-                    if (!label) continue;
-                    TriangleUnion unite(forest.data());
-                    for (std::size_t t = row.triangleBase; t < triangleId; ++t) {
-                        const glm::uvec3 tri = outTriangles[t];
-                        if (std::max(tri.x, std::max(tri.y, tri.z)) >= ownEnd) {
-                            crossing[begin].push_back(t);
-                            unite.restart();
-                            continue;
-                        }
-                        unite.add(tri);
                     }
                 }
             }
@@ -546,9 +568,8 @@ Mesh marchingCubes(const Volume& volume, const MarchingCubesOptions& options) {
         4);
 
     if (label) {
-        TriangleUnion unite(forest.data());
         for (const auto& chunk : crossing)
-            for (std::size_t t : chunk) unite.add(outTriangles[t]);
+            for (const auto& [a, b] : chunk) forestUnite(forest.data(), a, b);
         labelComponentsFromForest(mesh, forest.data(), threads);
         if (options.onlyComponentRank) {
             std::vector<bool> keep(static_cast<std::size_t>(*options.onlyComponentRank) + 1, false);

@@ -13,6 +13,11 @@ namespace {
 
 constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
 
+// Counting by runs: triangles are counted per component by runs of equal labels, not one
+// increment each. Neighbouring triangles nearly always share a component, and increments of one
+// counter back to back each wait for the previous store (aorta crop: 1.2 ms for 578 k
+// triangles).
+
 // [part * n / parts, (part + 1) * n / parts): the fixed split every pass below uses.
 std::size_t partBegin(std::size_t n, int part, int parts) {
     return static_cast<std::size_t>(static_cast<unsigned long long>(n) * part / parts);
@@ -95,12 +100,26 @@ std::size_t labelComponentsFromForest(Mesh& mesh, std::uint32_t* parent, int thr
         std::vector<std::size_t>& first = firsts[part];
         size.assign(count, 0);
         first.assign(count, 0);
+        const std::size_t begin = partBegin(triangleCount, part, triangleParts);
         const std::size_t end = partBegin(triangleCount, part + 1, triangleParts);
-        for (std::size_t t = partBegin(triangleCount, part, triangleParts); t < end; ++t) {
+        // Counted by runs (top of the file).
+        std::uint32_t current = kNone;
+        std::size_t runStart = begin;
+        auto endRun = [&](std::size_t t) {
+            if (current == kNone) return;
+            if (size[current] == 0) first[current] = runStart;
+            size[current] += static_cast<std::uint32_t>(t - runStart);
+        };
+        for (std::size_t t = begin; t < end; ++t) {
             const std::uint32_t c = rootNumber[parent[mesh.triangles[t].x]];
             mesh.component[t] = c;
-            if (size[c]++ == 0) first[c] = t;
+            if (c != current) {
+                endRun(t);
+                current = c;
+                runStart = t;
+            }
         }
+        endRun(end);
     });
     // 3. Rank: most triangles first, ties by first triangle (as labelled in triangle order).
     std::vector<std::size_t> total(count, 0), firstTriangle(count, 0);
@@ -125,11 +144,19 @@ std::size_t labelComponentsFromForest(Mesh& mesh, std::uint32_t* parent, int thr
 }
 
 std::vector<std::size_t> componentSizes(const Mesh& mesh) {
-    // The largest rank first (a vectorised reduction), then a count without size checks.
+    // The largest rank first (a vectorised reduction), then a count without size checks, by
+    // runs (top of the file).
     std::uint32_t largest = 0;
     for (std::uint32_t c : mesh.component) largest = c > largest ? c : largest;
     std::vector<std::size_t> sizes(mesh.component.empty() ? 0 : std::size_t{largest} + 1, 0);
-    for (std::uint32_t c : mesh.component) ++sizes[c];
+    const std::uint32_t* c = mesh.component.data();
+    const std::size_t n = mesh.component.size();
+    for (std::size_t i = 0; i < n;) {
+        std::size_t j = i + 1;
+        while (j < n && c[j] == c[i]) ++j;
+        sizes[c[i]] += j - i;
+        i = j;
+    }
     return sizes;
 }
 

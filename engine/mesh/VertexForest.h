@@ -17,6 +17,15 @@ inline std::uint32_t forestRoot(std::uint32_t* parent, std::uint32_t v) {
     return v;
 }
 
+// Unites the sets of a and b (the smaller root becomes the root of both).
+inline void forestUnite(std::uint32_t* parent, std::uint32_t a, std::uint32_t b) {
+    const std::uint32_t ra = forestRoot(parent, a), rb = forestRoot(parent, b);
+    if (ra < rb)
+        parent[rb] = ra;
+    else if (rb < ra)
+        parent[ra] = rb;
+}
+
 // Unites the vertices of triangles fed one after the other. Marching cubes writes each loop of
 // a cube as a fan (the same first vertex, each triangle sharing a second vertex with the one
 // before), so the first vertex's root is found once per fan and a vertex the previous triangle

@@ -124,6 +124,36 @@ TEST(MeshComponents, LabelsMatchABreadthFirstSearchOnNoiseWithAnyThreadCount) {
     }
 }
 
+TEST(MeshComponents, LabelsMatchABreadthFirstSearchOnAMirroredGridAndARegionOfInterest) {
+    // The labelling unites loop segments per cube from the case number alone: a left-handed
+    // direction (winding flipped) and a region of interest (a border inside the volume, cut
+    // surfaces closed by the padding) must not change which triangles are connected.
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<float> value(-1.0f, 1.0f);
+    Volume v = Volume::allocate(glm::ivec3(27, 22, 41));
+    v.meta.source = "noise";
+    for (float& x : v.values) x = value(rng);
+    v.direction = glm::dmat3(glm::dvec3(0, 1, 0), glm::dvec3(1, 0, 0), glm::dvec3(0, 0, 1));
+    ASSERT_LT(glm::determinant(v.direction), 0.0);
+    for (const bool roi : {false, true}) {
+        fm::MarchingCubesOptions o = labelled(1);
+        o.isoValue = 0.3;
+        if (roi) {
+            o.roiMin = glm::ivec3(3, 2, 5);
+            o.roiMax = glm::ivec3(20, 19, 33);
+        }
+        for (int threads : {1, 2}) {
+            o.threads = threads;
+            const Mesh m = fm::marchingCubes(v, o);
+            const std::vector<std::uint32_t> truth = referenceRanks(m);
+            ASSERT_GE(distinct(truth), 5u);
+            EXPECT_TRUE(std::equal(m.component.begin(), m.component.end(), truth.begin(),
+                                   truth.end()))
+                << (roi ? "region of interest, " : "whole volume, ") << threads << " threads";
+        }
+    }
+}
+
 TEST(MeshComponents, KeptComponentsAreTheSameTrianglesRenumbered) {
     std::mt19937 rng(5);
     std::uniform_real_distribution<float> value(-1.0f, 1.0f);
