@@ -28,7 +28,6 @@
 namespace fm {
 namespace {
 
-constexpr double kParallelLimit = kRayParallelLimit;  // DenseRaySetup.h
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // Chunks per thread for parallelFor: balances rows that hit a lot of bone against empty ones.
 constexpr int kChunksPerThread = 8;
@@ -45,7 +44,7 @@ LocalRay makeRay(const glm::dvec3& q0, const glm::dvec3& q1) {
     r.q0 = q0;
     r.d = q1 - q0;
     for (int a = 0; a < 3; ++a) {
-        r.parallel[a] = std::abs(r.d[a]) < kParallelLimit;
+        r.parallel[a] = std::abs(r.d[a]) < kRayParallelLimit;
         r.invD[a] = r.parallel[a] ? 0.0 : 1.0 / r.d[a];
     }
     return r;
@@ -373,48 +372,45 @@ Image renderDrr(const DrrVolume& v, const ProjectionGeometry& g, const DrrRender
                 }
                 n = 0;
             };
-            if (simdSetup) {
-                // Eight pixels at a time set up in lanes (DenseRaySetup.h), the same rays.
-                glm::dvec3 q1[8];
-                int lane[8];
-                double laneLength[8];
-                DenseRay set[8];
-                int m = 0;
-                auto setUp = [&] {
-                    const unsigned hit =
-                        setupDenseRays8(v, q0, q1, m, tiles ? &*tiles : nullptr, lane, row, set);
+            // Eight pixels at a time: set up in lanes where the CPU has AVX-512
+            // (DenseRaySetup.h), else one by one; the same rays either way.
+            glm::dvec3 q1[8];
+            int lane[8];
+            double laneLength[8];
+            DenseRay set[8];
+            int m = 0;
+            auto setUp = [&] {
+                unsigned hit = 0;
+                if (simdSetup) {
+                    hit = setupDenseRays8(v, q0, q1, m, tiles ? &*tiles : nullptr, lane, row, set);
+                } else {
                     for (int i = 0; i < m; ++i) {
-                        if (!((hit >> i) & 1u)) continue;
-                        rays[n] = set[i];
-                        cols[n] = lane[i];
-                        lengths[n] = laneLength[i];
-                        if (++n == 16) flush();
+                        const LocalRay ray = makeRay(q0, q1[i]);
+                        double aMin, aMax;
+                        if (!clipRay(ray, glm::dvec3(0.0), boxExtent, aMin, aMax)) continue;
+                        if (tiles && !tiles->clip(lane[i], row, aMin, aMax)) continue;
+                        set[i] = denseRay(v, ray, aMin, aMax);
+                        hit |= 1u << i;
                     }
-                    m = 0;
-                };
-                for (int col = range.col0; col < range.col1; ++col) {
-                    if (tiles && tiles->empty(col, row)) continue;
-                    const glm::dvec3 pixel = det.pixelCenter(col, row);
-                    q1[m] = v.worldToLocalPoint(pixel);
-                    lane[m] = col;
-                    laneLength[m] = glm::length(pixel - g.source);
-                    if (++m == 8) setUp();
                 }
-                if (m > 0) setUp();
-            } else {
-                for (int col = range.col0; col < range.col1; ++col) {
-                    if (tiles && tiles->empty(col, row)) continue;
-                    const glm::dvec3 pixel = det.pixelCenter(col, row);
-                    const LocalRay ray = makeRay(q0, v.worldToLocalPoint(pixel));
-                    double aMin, aMax;
-                    if (!clipRay(ray, glm::dvec3(0.0), boxExtent, aMin, aMax)) continue;
-                    if (tiles && !tiles->clip(col, row, aMin, aMax)) continue;
-                    rays[n] = denseRay(v, ray, aMin, aMax);
-                    cols[n] = col;
-                    lengths[n] = glm::length(pixel - g.source);
+                for (int i = 0; i < m; ++i) {
+                    if (!((hit >> i) & 1u)) continue;
+                    rays[n] = set[i];
+                    cols[n] = lane[i];
+                    lengths[n] = laneLength[i];
                     if (++n == 16) flush();
                 }
+                m = 0;
+            };
+            for (int col = range.col0; col < range.col1; ++col) {
+                if (tiles && tiles->empty(col, row)) continue;
+                const glm::dvec3 pixel = det.pixelCenter(col, row);
+                q1[m] = v.worldToLocalPoint(pixel);
+                lane[m] = col;
+                laneLength[m] = glm::length(pixel - g.source);
+                if (++m == 8) setUp();
             }
+            if (m > 0) setUp();
             if (n > 0) flush();
         }
     };
