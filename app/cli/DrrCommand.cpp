@@ -47,6 +47,7 @@ struct DrrArgs {
     int repeat = 1;
     bool noSkip = false;
     std::string walk = "auto";
+    std::string voxels = "auto";
     std::string out;
     std::string raw;
 };
@@ -250,6 +251,7 @@ void runDrr(const DrrArgs& a) {
     valueOptions.values = fm::cli::reportValues(volume, a.values);
     valueOptions.thresholdHU = a.thresholdHU;
     valueOptions.threads = threads;
+    valueOptions.compactVoxels = a.voxels == "auto";
     start = std::chrono::steady_clock::now();
     const fm::DrrVolumePtr prepared = fm::prepareDrrVolume(volume, valueOptions);
     const double prepareMs = msSince(start);
@@ -270,8 +272,10 @@ void runDrr(const DrrArgs& a) {
     if (a.walk != "auto") std::printf(", %s walk", a.walk.c_str());
     std::printf(", %d thread%s\n", shownThreads, shownThreads == 1 ? "" : "s");
     const fm::DrrVolumeInfo info = fm::drrVolumeInfo(*prepared);
-    std::printf("prepare   %.2f ms (kept %d x %d x %d; bricks %d, %d mixed; %s walk)\n", prepareMs,
-                info.dims.x, info.dims.y, info.dims.z, info.bricksTotal,
+    std::printf("prepare   %.2f ms (kept %d x %d x %d as %s, %.1f MB; bricks %d, %d mixed; %s walk)\n",
+                prepareMs, info.dims.x, info.dims.y, info.dims.z,
+                info.voxelType == fm::DrrVoxelType::Int16 ? "int16" : "float32",
+                double(info.voxelBytes) / 1e6, info.bricksTotal,
                 info.bricksTotal - info.bricksEmpty - info.bricksUniform,
                 info.denseWalk ? "dense" : "bricks");
 
@@ -364,6 +368,12 @@ FM_REGISTER_COMMAND("drr", 20, [](CLI::App& app) {
                     "has AVX-512), bricks (skip empty bricks, one ray at a time) or dense (every "
                     "voxel, 16 rays at a time); the same image up to rounding")
         ->check(CLI::IsMember({"auto", "bricks", "dense"}))
+        ->capture_default_str();
+    cmd->add_option("--voxels", a->voxels,
+                    "How the prepared voxels are stored: auto (int16 where that holds every "
+                    "value exactly, as CTs in whole HU; else float) or float (always float32, "
+                    "to compare)")
+        ->check(CLI::IsMember({"auto", "float"}))
         ->capture_default_str();
     cmd->add_flag("--no-skip", a->noSkip,
                   "Plain traversal of every voxel and pixel, without empty-space skipping (to "

@@ -27,6 +27,13 @@ refused "pose x offset 1e+308 mm is beyond" "$FM" drr --pose 1e308,0,0,0,0,0 --o
 refused "source-to-isocenter distance must be positive and at most" "$FM" drr --distance 1e308 --out "$OUT/d.png"
 refused "film width must be positive and at most" "$FM" drr --film 1e308x1e308 --out "$OUT/d.png"
 refused "--mode approx was removed" "$FM" drr --mode approx --out "$OUT/d.png"
+refused "--voxels: int8 not in {auto,float}" "$FM" drr --voxels int8 --out "$OUT/d.png"
+# --voxels float keeps the float store; the knee phantom (fractional HU) is float either way,
+# and its raw image is the same file.
+"$FM" drr --voxels float --values raw --raw "$OUT/f.mha" 2>/dev/null | grep -q "as float32" || fail "drr --voxels float did not say float32"
+"$FM" drr --values raw --raw "$OUT/a.mha" > /dev/null 2>&1 || fail "drr --values raw exited $?"
+cmp -s "$OUT/f.mha" "$OUT/a.mha" || fail "drr --voxels float changed the knee's raw image"
+rm -f "$OUT/f.mha" "$OUT/a.mha"
 "$FM" geometry --pose 0,0,0,0,0,0 --center 0,0,0 --out "$OUT/g.json" > /dev/null || fail "geometry exited $?"
 sed 's/"source": \[/"source": [1e308, 0, 0], "source": [/' "$OUT/g.json" > "$OUT/g-dup.json"
 refused "duplicate key" "$FM" drr --geometry "$OUT/g-dup.json" --out "$OUT/d.png"

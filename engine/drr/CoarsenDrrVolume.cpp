@@ -23,6 +23,10 @@ DrrVolumePtr coarsenDrrVolume(const DrrVolume& v, int f, int threads) {
     c->spacing = v.spacing * double(f);
     c->invSpacing = 1.0 / c->spacing;
     c->paddedDims = c->dims + 2;
+    // Block means are not integers: the coarse copy stores float (value per mm, scale 1).
+    c->voxelType = DrrVoxelType::Float32;
+    c->valueScale = 1.0;
+    c->values16 = {};
     c->values.assign(static_cast<std::size_t>(c->paddedDims.x) * c->paddedDims.y * c->paddedDims.z,
                      0.0f);
     const double blockVolume = double(f) * f * f;
@@ -36,8 +40,9 @@ DrrVolumePtr coarsenDrrVolume(const DrrVolume& v, int f, int threads) {
                         for (int k = K * f; k < std::min(K * f + f, v.dims.z); ++k)
                             for (int j = J * f; j < std::min(J * f + f, v.dims.y); ++j)
                                 for (int i = I * f; i < std::min(I * f + f, v.dims.x); ++i)
-                                    sum += v.values[v.at(i, j, k)];
-                        c->values[c->at(I, J, K)] = static_cast<float>(sum / blockVolume);
+                                    sum += v.storedAt(v.at(i, j, k));
+                        c->values[c->at(I, J, K)] =
+                            static_cast<float>(sum * v.valueScale / blockVolume);
                     }
         },
         4);

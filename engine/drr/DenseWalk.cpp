@@ -7,11 +7,13 @@
 namespace fm {
 
 namespace detail {
-void walkDense16Avx512(const float* values, std::int64_t last, const DenseRay* rays, int count,
-                      double* sums);
+template <class T>
+void walkDense16Avx512(const T* values, std::int64_t last, const DenseRay* rays, int count,
+                       double* sums);
 }
 
-double walkDense(const float* values, std::int64_t last, const DenseRay& r) {
+template <class T>
+double walkDense(const T* values, std::int64_t last, const DenseRay& r) {
     double next[3] = {r.next[0], r.next[1], r.next[2]};
     std::int64_t linear = r.linear, steps = r.steps;
     double alpha = r.aBegin, acc = 0.0;
@@ -43,10 +45,11 @@ bool denseWalkSimdAvailable() {
 #endif
 }
 
-void walkDense16(const float* values, std::int64_t last, const DenseRay* rays, int count,
-                double* sums) {
+template <class T>
+void walkDense16(const T* values, std::int64_t last, const DenseRay* rays, int count,
+                 double* sums) {
 #if defined(__x86_64__) && defined(__GNUC__)
-    // The vector form indexes in 32 bits; a volume past that (over 8 GB of floats) walks
+    // The vector form indexes in 32 bits; a volume past that (2^31 voxels) walks
     // one ray at a time, with the same sums.
     if (denseWalkSimdAvailable() && last <= std::numeric_limits<std::int32_t>::max()) {
         detail::walkDense16Avx512(values, last, rays, count, sums);
@@ -55,5 +58,10 @@ void walkDense16(const float* values, std::int64_t last, const DenseRay* rays, i
 #endif
     for (int i = 0; i < count; ++i) sums[i] = walkDense(values, last, rays[i]);
 }
+
+template double walkDense(const float*, std::int64_t, const DenseRay&);
+template double walkDense(const std::int16_t*, std::int64_t, const DenseRay&);
+template void walkDense16(const float*, std::int64_t, const DenseRay*, int, double*);
+template void walkDense16(const std::int16_t*, std::int64_t, const DenseRay*, int, double*);
 
 }  // namespace fm

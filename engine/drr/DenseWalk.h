@@ -29,14 +29,17 @@ struct DenseRay {
     std::int64_t steps = 0;
 };
 
-// Sum over the ray's voxel segments of (alpha length) * value.
-// `last` is the index of the last padded value.
-double walkDense(const float* values, std::int64_t last, const DenseRay& ray);
+// Sum over the ray's voxel segments of (alpha length) * value, for the stored values of either
+// type (DrrVolume: float or int16; instantiated for both). `last` is the index of the last
+// padded value.
+template <class T>
+double walkDense(const T* values, std::int64_t last, const DenseRay& ray);
 
 // The same for `count` (1..16) rays at once; sums[i] is bit-identical to walkDense(rays[i]).
 // Uses AVX-512 when denseWalkSimdAvailable(), else the scalar walk.
-void walkDense16(const float* values, std::int64_t last, const DenseRay* rays, int count,
-                double* sums);
+template <class T>
+void walkDense16(const T* values, std::int64_t last, const DenseRay* rays, int count,
+                 double* sums);
 
 // True when this CPU (and OS) runs the AVX-512 form.
 bool denseWalkSimdAvailable();

@@ -33,14 +33,31 @@ struct Lanes {
     std::int32_t ahead0, ahead7;
 };
 
-inline std::uintptr_t prefetchAddress(const float* values, std::int32_t index, std::int32_t ahead) {
+template <class T>
+inline std::uintptr_t prefetchAddress(const T* values, std::int32_t index, std::int32_t ahead) {
     return reinterpret_cast<std::uintptr_t>(values) +
-           static_cast<std::uintptr_t>((std::int64_t(index) + ahead) * std::int64_t(sizeof(float)));
+           static_cast<std::uintptr_t>((std::int64_t(index) + ahead) * std::int64_t(sizeof(T)));
+}
+
+// Eight values widened to doubles, zero in the lanes not asked for: float -> double and
+// int16 -> int32 -> double are exact.
+FM_AVX512 inline __m512d widen(const float* values, const std::int32_t* idx, __mmask8 lanes) {
+    const __m128 lo = _mm_setr_ps(values[idx[0]], values[idx[1]], values[idx[2]], values[idx[3]]);
+    const __m128 hi = _mm_setr_ps(values[idx[4]], values[idx[5]], values[idx[6]], values[idx[7]]);
+    return _mm512_cvtps_pd(_mm256_maskz_mov_ps(lanes, _mm256_set_m128(hi, lo)));
+}
+FM_AVX512 inline __m512d widen(const std::int16_t* values, const std::int32_t* idx,
+                               __mmask8 lanes) {
+    const __m256i v = _mm256_setr_epi32(values[idx[0]], values[idx[1]], values[idx[2]],
+                                        values[idx[3]], values[idx[4]], values[idx[5]],
+                                        values[idx[6]], values[idx[7]]);
+    return _mm512_cvtepi32_pd(_mm256_maskz_mov_epi32(lanes, v));
 }
 
 // The values at the lanes' indices, each clamped to [0, last]; zero in the lanes not asked for
 // (those read a valid voxel too, then masked).
-FM_AVX512 inline __m512d gather(const float* values, __m256i linear, __m256i lastIndex,
+template <class T>
+FM_AVX512 inline __m512d gather(const T* values, __m256i linear, __m256i lastIndex,
                                 __mmask8 lanes, std::int32_t ahead0, std::int32_t ahead7) {
     const __m256i at =
         _mm256_min_epi32(_mm256_max_epi32(linear, _mm256_setzero_si256()), lastIndex);
@@ -52,13 +69,11 @@ FM_AVX512 inline __m512d gather(const float* values, __m256i linear, __m256i las
                  _MM_HINT_T0);
     _mm_prefetch(reinterpret_cast<const char*>(prefetchAddress(values, idx[7], ahead7)),
                  _MM_HINT_T0);
-    const __m128 lo = _mm_setr_ps(values[idx[0]], values[idx[1]], values[idx[2]], values[idx[3]]);
-    const __m128 hi = _mm_setr_ps(values[idx[4]], values[idx[5]], values[idx[6]], values[idx[7]]);
-    const __m256 v = _mm256_maskz_mov_ps(lanes, _mm256_set_m128(hi, lo));
-    return _mm512_cvtps_pd(v);
+    return widen(values, idx, lanes);
 }
 
-FM_AVX512 inline void load(Lanes& l, const float* values, __m256i lastIndex,
+template <class T>
+FM_AVX512 inline void load(Lanes& l, const T* values, __m256i lastIndex,
                            const DenseRay* rays, int count) {
     alignas(64) double lane[8][8];
     alignas(64) std::int32_t ilane[5][8];
@@ -104,7 +119,8 @@ FM_AVX512 inline void load(Lanes& l, const float* values, __m256i lastIndex,
 }
 
 // One step of every active lane: walkDense's loop body.
-FM_AVX512 inline void step(Lanes& l, const float* values, __m256i lastIndex) {
+template <class T>
+FM_AVX512 inline void step(Lanes& l, const T* values, __m256i lastIndex) {
     // The axis of the smallest next crossing, ties to the later axis (as walkDense).
     const __m512d nextMin = _mm512_min_pd(l.nx, _mm512_min_pd(l.ny, l.nz));
     const __mmask8 onZ = _mm512_cmp_pd_mask(l.nz, nextMin, _CMP_EQ_OQ);
@@ -138,7 +154,8 @@ FM_AVX512 inline void store(const Lanes& l, int count, double* sums) {
 
 }  // namespace
 
-FM_AVX512 void walkDense16Avx512(const float* values, std::int64_t last, const DenseRay* rays,
+template <class T>
+FM_AVX512 void walkDense16Avx512(const T* values, std::int64_t last, const DenseRay* rays,
                                  int count, double* sums) {
     const __m256i lastIndex = _mm256_set1_epi32(static_cast<std::int32_t>(last));
     const int countA = count < 8 ? count : 8, countB = count - countA;
@@ -154,6 +171,9 @@ FM_AVX512 void walkDense16Avx512(const float* values, std::int64_t last, const D
     store(a, countA, sums);
     store(b, countB, sums + countA);
 }
+
+template void walkDense16Avx512(const float*, std::int64_t, const DenseRay*, int, double*);
+template void walkDense16Avx512(const std::int16_t*, std::int64_t, const DenseRay*, int, double*);
 
 }  // namespace fm::detail
 #endif

@@ -31,7 +31,14 @@ struct DrrVolume {
     // Converted (mu or raw), thresholded values of the kept voxels, i fastest, stored with one
     // layer of zeros on every side (padded dims = dims + 2): the traversal may then read a
     // neighbour of a border voxel without a bounds check (with zero weight). Use at().
-    std::vector<float> values;
+    // One copy, in the smallest type that holds them exactly (DrrValueOptions::compactVoxels):
+    // int16 when every value per mm is valueScale times an integer of int16's range (CTs in
+    // whole HU: mu = (mu_water / 1000) (HU + 1000)), else float with valueScale 1. A ray sums
+    // stored values times lengths and multiplies by valueScale once, at the end.
+    DrrVoxelType voxelType = DrrVoxelType::Float32;
+    std::vector<float> values;           // Float32
+    std::vector<std::int16_t> values16;  // Int16
+    double valueScale = 1.0;
     glm::ivec3 paddedDims{2};
     bool empty = true;
 
@@ -41,7 +48,7 @@ struct DrrVolume {
     int brickSize = 8;
     int brickShift = 3;  // log2(brickSize) if a power of two (fast division), else -1
     glm::ivec3 brickDims{0};
-    std::vector<float> brickValue;         // the common value of a uniform brick
+    std::vector<float> brickValue;  // the common stored value of a uniform brick (exact for int16)
     std::vector<std::uint8_t> brickMixed;  // 1 = voxels differ: walk the voxels
     // Few bricks to skip (real CTs: air noise above -1000 HU): walking every voxel 16 rays at
     // a time beats skipping one ray at a time (DenseWalk.h; measured in docs/drr.md).
@@ -55,6 +62,19 @@ struct DrrVolume {
     }
     glm::dvec3 worldToLocalPoint(const glm::dvec3& world) const {
         return worldToLocal * (world - origin) + localShift;
+    }
+    std::size_t valueCount() const {
+        return voxelType == DrrVoxelType::Int16 ? values16.size() : values.size();
+    }
+    // The stored value at a padded index, as a double (times valueScale: per mm).
+    double storedAt(std::ptrdiff_t n) const {
+        return voxelType == DrrVoxelType::Int16 ? double(values16[n]) : double(values[n]);
+    }
+    // Calls f(const T* values) with the array in use (T = float or std::int16_t): the walks are
+    // compiled once per type.
+    template <class F>
+    decltype(auto) withValues(F&& f) const {
+        return voxelType == DrrVoxelType::Int16 ? f(values16.data()) : f(values.data());
     }
 };
 

@@ -1,14 +1,16 @@
 // Preparation of a volume for DRRs: value conversion, threshold, optional downsampling,
 // cropping to the non-zero content and the brick map for empty-space skipping.
 //
-// Two passes over the source and no volume-sized scratch array: (1) the bounding box of the
-// non-zero converted values, and the check for infinite values; (2) per slab of bricks in
-// parallel, the kept box converted into the padded array and that slab's bricks classified
-// while its values are fresh. (Before: a converted full-size copy, then a cropped copy of it,
-// then the bricks: three passes and two extra volume-sized arrays.)
+// Passes over the source and no volume-sized scratch array: (1) the check for infinite values
+// and whether int16 holds every converted value exactly; (2) the bounding box of the non-zero
+// values; (3) per slab of bricks in parallel, the kept box converted into the padded array (of
+// int16 or float) and that slab's bricks classified while its values are fresh. (Before: a
+// converted full-size copy, then a cropped copy of it, then the bricks: three passes and two
+// extra volume-sized arrays.)
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <type_traits>
 
 #include "core/Error.h"
 #include "core/Parallel.h"
@@ -30,19 +32,36 @@ double drrVoxelValue(double stored, const DrrValueOptions& options) {
 
 namespace {
 
-// The grid the DRR volume is cut from: the source volume's values converted on the fly, or
-// (downsampling) a converted block-mean grid.
+// The int16 form of a stored value: value per mm = kInt16Scale(options) * this. NaN and voxels
+// below the threshold give 0, as in drrVoxelValue; mu = (mu_water / 1000) (HU + 1000), which is
+// huToMu without its rounding, for HU >= -1000.
+double int16Form(double stored, const DrrValueOptions& options) {
+    if (std::isnan(stored)) return 0.0;
+    if (options.thresholdHU && stored < *options.thresholdHU) return 0.0;
+    return options.values == DrrValues::Mu ? std::max(0.0, stored + 1000.0) : stored;
+}
+double int16Scale(const DrrValueOptions& options) {
+    return options.values == DrrValues::Mu ? kMuWaterPerMm / 1000.0 : 1.0;
+}
+bool fitsInt16(double q) {
+    return q == std::trunc(q) && q >= -32768.0 && q <= 32767.0;
+}
+
+// The grid the DRR volume is cut from: the source volume's values converted on the fly (to
+// float, or to their int16 form), or (downsampling) a converted block-mean grid.
 struct SourceGrid {
     glm::ivec3 dims{0};
     glm::dvec3 spacing{1.0};
     glm::dvec3 origin{0.0};  // world position of voxel (0,0,0)'s centre
     const Volume* volume = nullptr;  // converted on the fly when `coarse` is empty
     const DrrValueOptions* options = nullptr;
+    bool int16 = false;  // at() gives the int16 form (exact in a double)
     std::vector<float> coarse;
 
-    float at(std::size_t n) const {
-        return coarse.empty() ? static_cast<float>(drrVoxelValue(volume->values[n], *options))
-                              : coarse[n];
+    double at(std::size_t n) const {
+        if (!coarse.empty()) return coarse[n];
+        return int16 ? int16Form(volume->values[n], *options)
+                     : static_cast<float>(drrVoxelValue(volume->values[n], *options));
     }
     std::size_t index(int i, int j, int k) const {
         return static_cast<std::size_t>(i) +
@@ -51,21 +70,27 @@ struct SourceGrid {
     }
 };
 
-// Refuses infinite voxels, naming the first in memory order (per slice in parallel; the
-// result does not depend on the thread count).
-void checkFinite(const Volume& volume, int threads) {
+// Refuses infinite voxels, naming the first in memory order, and tells whether every voxel's
+// int16 form is exact (per slice in parallel; the result does not depend on the thread count).
+bool checkFiniteAndFitsInt16(const Volume& volume, const DrrValueOptions& options, int threads) {
     const std::size_t sliceSize = static_cast<std::size_t>(volume.dims.x) * volume.dims.y;
     constexpr std::size_t kNone = static_cast<std::size_t>(-1);
     std::vector<std::size_t> firstInfinite(volume.dims.z, kNone);
+    std::vector<std::uint8_t> sliceFits(volume.dims.z, 1);
     parallelFor(
         volume.dims.z, threads,
         [&](int k0, int k1) {
-            for (int k = k0; k < k1; ++k)
-                for (std::size_t n = k * sliceSize; n < (k + 1) * sliceSize; ++n)
+            for (int k = k0; k < k1; ++k) {
+                bool fits = options.compactVoxels && options.downsample == 1;
+                for (std::size_t n = k * sliceSize; n < (k + 1) * sliceSize; ++n) {
                     if (std::isinf(volume.values[n])) {
                         firstInfinite[k] = n;
                         break;
                     }
+                    if (fits) fits = fitsInt16(int16Form(volume.values[n], options));
+                }
+                sliceFits[k] = fits;
+            }
         },
         4);
     for (std::size_t n : firstInfinite) {
@@ -75,6 +100,7 @@ void checkFinite(const Volume& volume, int threads) {
             << ": cannot compute a DRR";
         throw Error(msg.str());
     }
+    return std::all_of(sliceFits.begin(), sliceFits.end(), [](std::uint8_t f) { return f != 0; });
 }
 
 SourceGrid sourceGrid(const Volume& volume, const DrrValueOptions& options, int threads) {
@@ -128,10 +154,10 @@ void nonZeroBox(const SourceGrid& grid, int threads, glm::ivec3& lo, glm::ivec3&
                 for (int j = 0; j < dims.y; ++j) {
                     const std::size_t row = grid.index(0, j, k);
                     int first = 0;
-                    while (first < dims.x && grid.at(row + first) == 0.0f) ++first;
+                    while (first < dims.x && grid.at(row + first) == 0.0) ++first;
                     if (first == dims.x) continue;
                     int last = dims.x - 1;
-                    while (grid.at(row + last) == 0.0f) --last;
+                    while (grid.at(row + last) == 0.0) --last;
                     sliceLo[k] = glm::min(sliceLo[k], glm::ivec3(first, j, k));
                     sliceHi[k] = glm::max(sliceHi[k], glm::ivec3(last, j, k));
                 }
@@ -145,25 +171,26 @@ void nonZeroBox(const SourceGrid& grid, int threads, glm::ivec3& lo, glm::ivec3&
     }
 }
 
-// Classifies the bricks of slab bk (brick index bk along k) from v.values.
-void classifyBrickSlab(DrrVolume& v, int bk) {
+// Classifies the bricks of slab bk (brick index bk along k) from the stored values.
+template <class T>
+void classifyBrickSlab(DrrVolume& v, const T* values, int bk) {
     const int b = v.brickSize;
     for (int bj = 0; bj < v.brickDims.y; ++bj)
         for (int bi = 0; bi < v.brickDims.x; ++bi) {
             const std::size_t brick =
                 bi + static_cast<std::size_t>(v.brickDims.x) *
                          (bj + static_cast<std::size_t>(v.brickDims.y) * bk);
-            const float first = v.values[v.at(bi * b, bj * b, bk * b)];
+            const T first = values[v.at(bi * b, bj * b, bk * b)];
             bool mixed = false;
             for (int k = bk * b; k < std::min(bk * b + b, v.dims.z) && !mixed; ++k)
                 for (int j = bj * b; j < std::min(bj * b + b, v.dims.y) && !mixed; ++j)
                     for (int i = bi * b; i < std::min(bi * b + b, v.dims.x); ++i)
-                        if (v.values[v.at(i, j, k)] != first) {
+                        if (values[v.at(i, j, k)] != first) {
                             mixed = true;
                             break;
                         }
             v.brickMixed[brick] = mixed ? 1 : 0;
-            v.brickValue[brick] = mixed ? 0.0f : first;
+            v.brickValue[brick] = mixed ? 0.0f : static_cast<float>(first);
         }
 }
 
@@ -201,7 +228,8 @@ void buildDrrBricks(DrrVolume& v, int threads) {
     parallelFor(
         v.brickDims.z, threads,
         [&](int bk0, int bk1) {
-            for (int bk = bk0; bk < bk1; ++bk) classifyBrickSlab(v, bk);
+            for (int bk = bk0; bk < bk1; ++bk)
+                v.withValues([&](const auto* values) { classifyBrickSlab(v, values, bk); });
         },
         4);
     decideWalk(v);
@@ -228,8 +256,9 @@ DrrVolumePtr prepareDrrVolume(const Volume& volume, const DrrValueOptions& optio
     for (int shift = 0; shift < 9; ++shift)
         if ((1 << shift) == options.brickSize) v->brickShift = shift;
     const int threads = options.threads <= 0 ? defaultThreadCount() : options.threads;
-    checkFinite(volume, threads);
-    const SourceGrid grid = sourceGrid(volume, options, threads);
+    const bool int16 = checkFiniteAndFitsInt16(volume, options, threads);
+    SourceGrid grid = sourceGrid(volume, options, threads);
+    grid.int16 = int16;
     v->spacing = grid.spacing;
 
     // Bounding box of the non-zero values (everything outside contributes exactly nothing).
@@ -245,26 +274,41 @@ DrrVolumePtr prepareDrrVolume(const Volume& volume, const DrrValueOptions& optio
     v->cropBegin = lo;
     v->dims = hi - lo + 1;
     v->paddedDims = v->dims + 2;
-    v->values.assign(static_cast<std::size_t>(v->paddedDims.x) * v->paddedDims.y * v->paddedDims.z,
-                     0.0f);
+    const std::size_t padded =
+        static_cast<std::size_t>(v->paddedDims.x) * v->paddedDims.y * v->paddedDims.z;
+    if (int16) {
+        v->voxelType = DrrVoxelType::Int16;
+        v->valueScale = int16Scale(options);
+        v->values16.assign(padded, 0);
+    } else {
+        v->values.assign(padded, 0.0f);
+    }
     // The kept box converted, slab of bricks by slab of bricks, each slab's bricks classified
     // right after its values are written.
     allocateBricks(*v);
     const int b = v->brickSize;
-    parallelFor(
-        v->brickDims.z, threads,
-        [&](int bk0, int bk1) {
-            for (int bk = bk0; bk < bk1; ++bk) {
-                for (int k = bk * b; k < std::min(bk * b + b, v->dims.z); ++k)
-                    for (int j = 0; j < v->dims.y; ++j) {
-                        const std::size_t src = grid.index(lo.x, lo.y + j, lo.z + k);
-                        float* dst = &v->values[v->at(0, j, k)];
-                        for (int i = 0; i < v->dims.x; ++i) dst[i] = grid.at(src + i);
-                    }
-                classifyBrickSlab(*v, bk);
-            }
-        },
-        4);
+    auto convert = [&](auto* values) {
+        using T = std::remove_pointer_t<decltype(values)>;
+        parallelFor(
+            v->brickDims.z, threads,
+            [&](int bk0, int bk1) {
+                for (int bk = bk0; bk < bk1; ++bk) {
+                    for (int k = bk * b; k < std::min(bk * b + b, v->dims.z); ++k)
+                        for (int j = 0; j < v->dims.y; ++j) {
+                            const std::size_t src = grid.index(lo.x, lo.y + j, lo.z + k);
+                            T* dst = values + v->at(0, j, k);
+                            for (int i = 0; i < v->dims.x; ++i)
+                                dst[i] = static_cast<T>(grid.at(src + i));
+                        }
+                    classifyBrickSlab(*v, static_cast<const T*>(values), bk);
+                }
+            },
+            4);
+    };
+    if (int16)
+        convert(v->values16.data());
+    else
+        convert(v->values.data());
     decideWalk(*v);
 
     v->origin = grid.origin;
@@ -281,6 +325,9 @@ DrrVolumeInfo drrVolumeInfo(const DrrVolume& v) {
     info.spacing = v.spacing;
     info.empty = v.empty;
     info.denseWalk = v.preferDenseWalk && denseWalkSimdAvailable();
+    info.voxelType = v.voxelType;
+    info.voxelBytes = v.voxelType == DrrVoxelType::Int16 ? v.values16.size() * sizeof(std::int16_t)
+                                                         : v.values.size() * sizeof(float);
     info.bricksTotal = static_cast<int>(v.brickMixed.size());
     // decideWalk counted the empty bricks; the other unmixed ones are uniform.
     info.bricksEmpty = static_cast<int>(v.bricksEmpty);

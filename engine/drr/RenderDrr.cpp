@@ -113,7 +113,9 @@ DenseRay denseRay(const DrrVolume& v, const LocalRay& r, double aBegin, double a
 }
 
 void walkVoxels(const DrrVolume& v, const LocalRay& r, double aBegin, double aEnd, double& acc) {
-    acc += walkDense(v.values.data(), std::int64_t(v.values.size()) - 1, denseRay(v, r, aBegin, aEnd));
+    const DenseRay ray = denseRay(v, r, aBegin, aEnd);
+    const std::int64_t last = std::int64_t(v.valueCount()) - 1;
+    acc += v.withValues([&](const auto* values) { return walkDense(values, last, ray); });
 }
 
 // The fast walk: the same segments as walkVoxels, with empty-space skipping. While the ray is
@@ -124,7 +126,9 @@ void walkVoxels(const DrrVolume& v, const LocalRay& r, double aBegin, double aEn
 // floor (clamped to the brick) on the others.
 // (A branch-free variant that walks slabs of the dominant axis, at most three segments per
 // slab, was measured 35% slower on the knee phantom: mostly-one-axis rays predict well.)
-void walkSkipping(const DrrVolume& v, const LocalRay& r, double aBegin, double aEnd, double& acc) {
+template <class T>
+void walkSkipping(const DrrVolume& v, const T* values, const LocalRay& r, double aBegin,
+                  double aEnd, double& acc) {
     const int B = v.brickSize;
     int index[3], step[3], brick[3], remaining[3];
     double next[3], delta[3], nextBrick[3];
@@ -147,7 +151,6 @@ void walkSkipping(const DrrVolume& v, const LocalRay& r, double aBegin, double a
                       r.q0[a]) *
                          r.invD[a];
     };
-    const float* values = v.values.data();
     double alpha = aBegin;
     for (;;) {
         if (!v.brickMixed[brickLinear]) {
@@ -299,10 +302,10 @@ double traceExact(const DrrVolume& v, const LocalRay& ray, bool skipEmptySpace) 
     if (!clipRay(ray, glm::dvec3(0.0), glm::dvec3(v.dims) * v.spacing, aMin, aMax)) return 0.0;
     double acc = 0.0;
     if (skipEmptySpace)
-        walkSkipping(v, ray, aMin, aMax, acc);
+        v.withValues([&](const auto* values) { walkSkipping(v, values, ray, aMin, aMax, acc); });
     else
         walkVoxels(v, ray, aMin, aMax, acc);
-    return acc;
+    return acc * v.valueScale;  // stored units -> per mm (1 for float voxels)
 }
 
 }  // namespace
@@ -364,9 +367,11 @@ Image renderDrr(const DrrVolume& v, const ProjectionGeometry& g, const DrrRender
         for (int row = range.row0 + rowBegin; row < range.row0 + rowEnd; ++row) {
             int n = 0;
             auto flush = [&] {
-                walkDense16(v.values.data(), std::int64_t(v.values.size()) - 1, rays, n, sums);
+                v.withValues([&](const auto* values) {
+                    walkDense16(values, std::int64_t(v.valueCount()) - 1, rays, n, sums);
+                });
                 for (int i = 0; i < n; ++i) {
-                    const double integral = sums[i] * lengths[i];
+                    const double integral = sums[i] * v.valueScale * lengths[i];
                     image.at(cols[i], row) =
                         static_cast<float>(intensity ? std::exp(-integral) : integral);
                 }

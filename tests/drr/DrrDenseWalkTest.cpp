@@ -59,6 +59,26 @@ TEST(DrrDenseWalk, EqualsTheScalarWalkBitForBit) {
     }
 }
 
+// The same on int16 voxels (whole numbers, stored in half the bytes: the lanes widen int16, not
+// float).
+TEST(DrrDenseWalk, EqualsTheScalarWalkBitForBitOnInt16Voxels) {
+    fm::Volume volume = fm::test::makeVolume({23, 17, 19}, {1.3, 0.7, 2.1}, 0.0f, {-5.0, 3.0, 2.0},
+                                             fm::test::rotation(27.0, {1.0, 2.0, -0.5}));
+    std::mt19937 rng(9);
+    std::uniform_int_distribution<int> value(-300, 2000);
+    for (float& x : volume.values) x = rng() % 4 == 0 ? 0.0f : float(value(rng));
+    fm::DrrValueOptions raw;
+    raw.values = fm::DrrValues::Raw;
+    const fm::DrrVolumePtr v = fm::prepareDrrVolume(volume, raw);
+    ASSERT_EQ(fm::drrVolumeInfo(*v).voxelType, fm::DrrVoxelType::Int16);
+    for (double azimuth : {0.0, 33.0, 211.0}) {
+        fm::ProjectionGeometry g =
+            fm::test::orbitGeometry(volume.center(), azimuth, 17.0, 200.0, 150.0, 37, 1.1);
+        g.detector.size.y = 29;
+        expectDenseEqualsScalar(*v, g);
+    }
+}
+
 // Axis-aligned grid and views along the axes: central rays parallel to two axes, rays on
 // voxel faces and through edges (ties between axes), where the lanes' masks must choose as the
 // scalar walk does.

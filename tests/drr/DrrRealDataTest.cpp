@@ -11,7 +11,8 @@
 
 namespace {
 
-// mu stored as float (1.2e-7 relative) plus float pixels (3e-7), against the image peak.
+// mu stored as float (1.2e-7 relative; int16 stores are exact) plus float pixels (3e-7),
+// against the image peak.
 constexpr double kFastVsReferenceRelTol = 5e-7;
 
 void expectFastEqualsReference(const fm::Volume& volume, const fm::DrrValueOptions& values,
@@ -46,6 +47,11 @@ TEST(DrrRealData, TotalSegmentatorCtMatchesReference) {
         fm::readVolume(fm::test::sharedDataDir() / "totalseg-example-ct/example_ct.nii.gz");
     fm::DrrValueOptions mu;
     expectFastEqualsReference(ct, mu, 0.0, 0.0);
+    // Whole HU: kept as int16 (half the bytes of float); the float store meets the reference too.
+    EXPECT_EQ(fm::drrVolumeInfo(*fm::prepareDrrVolume(ct, mu)).voxelType, fm::DrrVoxelType::Int16);
+    fm::DrrValueOptions muFloat;
+    muFloat.compactVoxels = false;
+    expectFastEqualsReference(ct, muFloat, 0.0, 0.0);
     // The README's metal object in the hip (> 2000 HU): a 2000 HU threshold keeps it, and the
     // crop then shrinks the volume to (about) the object.
     fm::DrrValueOptions metal;
