@@ -103,10 +103,12 @@ bool checkFiniteAndFitsInt16(const Volume& volume, const DrrValueOptions& option
     return std::all_of(sliceFits.begin(), sliceFits.end(), [](std::uint8_t f) { return f != 0; });
 }
 
-SourceGrid sourceGrid(const Volume& volume, const DrrValueOptions& options, int threads) {
+SourceGrid sourceGrid(const Volume& volume, const DrrValueOptions& options, bool int16,
+                      int threads) {
     SourceGrid g;
     g.volume = &volume;
     g.options = &options;
+    g.int16 = int16;
     const int f = options.downsample;
     if (f == 1) {
         g.dims = volume.dims;
@@ -257,8 +259,7 @@ DrrVolumePtr prepareDrrVolume(const Volume& volume, const DrrValueOptions& optio
         if ((1 << shift) == options.brickSize) v->brickShift = shift;
     const int threads = options.threads <= 0 ? defaultThreadCount() : options.threads;
     const bool int16 = checkFiniteAndFitsInt16(volume, options, threads);
-    SourceGrid grid = sourceGrid(volume, options, threads);
-    grid.int16 = int16;
+    const SourceGrid grid = sourceGrid(volume, options, int16, threads);
     v->spacing = grid.spacing;
 
     // Bounding box of the non-zero values (everything outside contributes exactly nothing).

@@ -11,3 +11,5 @@ if(TARGET fluoromatch)
     set_property(SOURCE ${dir}/TrackRunnerTest.cpp ${dir}/TrackUiTest.cpp APPEND PROPERTY COMPILE_DEFINITIONS
         FM_FLUOROMATCH_EXE="$<TARGET_FILE:fluoromatch>")
 endif()
+# The longest executable under the sanitizers (307 s as one process, 2026-12-03): started first.
+set(FM_TEST_SANITIZED_SECONDS 310)
