@@ -15,7 +15,6 @@
 // exactly the same values and isovalues (docs/marching-cubes.md has the comparison).
 #include <benchmark/benchmark.h>
 
-#include <algorithm>
 #include <cstdio>
 #include <cstring>
 #include <ctime>
@@ -24,15 +23,20 @@
 #include <string>
 #include <vector>
 
+#include "core/HeapReuse.h"
 #include "io/AtomicFile.h"
 #include "io/ReadVolume.h"
 #include "io/VolumeWriter.h"
 #include "mesh/MarchingCubes.h"
 #include "mesh/MeshCheck.h"
-#include "mesh/MeshComponents.h"
 #include "phantom/Phantoms.h"
 
 namespace {
+
+// As in fluoromatch (app/main.cpp): freed large blocks are reused, not mapped and faulted in
+// again at every call. Without it the timings depended on what the process had freed before
+// (glibc's adaptive mmap threshold): the old command's aorta crop took 22 or 30 ms by run.
+const bool kHeapReuse = (fm::keepFreedMemoryForReuse(), true);
 
 struct BenchVolume {
     std::string name;
@@ -93,23 +97,19 @@ void runMarchingCubes(benchmark::State& state, const fm::Volume* volume, double 
 }
 
 // The in-memory work of `fluoromatch mesh --volume V --iso I --threads T --out F`
-// (app/cli/MeshCommand.cpp, runMesh): marching cubes with the components labelled (and the
-// `--components N` largest kept, N = `keep`), then the components counted for the report line.
+// (app/cli/MeshCommand.cpp, runMesh): marching cubes with the components counted for the
+// report line (and, with `--components N`, N = `keep`, labelled and the N largest kept).
 void runCommand(benchmark::State& state, const fm::Volume* volume, double iso, int threads,
                 int keep) {
     fm::MarchingCubesOptions options;
     options.isoValue = iso;
     options.threads = threads;
-    options.labelComponents = true;
     options.keepLargestComponents = keep;
     fm::Mesh mesh;
     std::size_t components = 0;
     const double cpuStart = processCpuMs();
     for (auto _ : state) {
-        mesh = fm::marchingCubes(*volume, options);
-        const auto sizes = fm::componentSizes(mesh);
-        components = static_cast<std::size_t>(
-            std::count_if(sizes.begin(), sizes.end(), [](std::size_t n) { return n > 0; }));
+        mesh = fm::marchingCubes(*volume, options, &components);
         benchmark::DoNotOptimize(components);
     }
     state.counters["cpu_ms"] = (processCpuMs() - cpuStart) / static_cast<double>(state.iterations());

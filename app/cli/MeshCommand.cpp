@@ -1,6 +1,5 @@
 // `fluoromatch mesh`: the bone surface of a volume (our marching cubes) written as
 // .ply / .stl / .obj, e.g. to look at it in MeshLab or 3D Slicer. --check runs CGAL's checks.
-#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <memory>
@@ -17,7 +16,6 @@
 #include "core/Error.h"
 #include "mesh/MarchingCubes.h"
 #include "mesh/MeshCheck.h"
-#include "mesh/MeshComponents.h"
 #include "mesh/MeshWriter.h"
 #include "volume/VolumeSource.h"
 
@@ -47,7 +45,6 @@ void runMesh(const MeshArgs& a) {
     o.isoValue = a.iso;
     o.keepLargestComponents = a.components;
     o.threads = a.threads;
-    o.labelComponents = true;
     if (a.componentRank >= 0) o.onlyComponentRank = a.componentRank;
     if (!a.near.empty()) {
         if (a.near.size() != 3) throw fm::Error("--component-near needs three numbers: X Y Z (mm)");
@@ -71,7 +68,9 @@ void runMesh(const MeshArgs& a) {
     const fm::Volume& v = choice.volume;
     const double loadMs = msSince(start);
     const auto meshStart = std::chrono::steady_clock::now();
-    const fm::Mesh mesh = fm::marchingCubes(v, o);
+    // Components in the file, counted (ranks only when a component option needs them).
+    std::size_t components = 0;
+    const fm::Mesh mesh = fm::marchingCubes(v, o, &components);
     const double meshMs = msSince(meshStart);
     if (mesh.triangles.empty()) {
         std::ostringstream msg;
@@ -80,11 +79,6 @@ void runMesh(const MeshArgs& a) {
         throw fm::Error(msg.str());
     }
     fm::writeMesh(mesh, a.out);
-    // Components in the file (--component-rank R keeps rank R alone: the ranks before it are
-    // empty, not written).
-    const auto sizes = fm::componentSizes(mesh);
-    const auto components = static_cast<std::size_t>(
-        std::count_if(sizes.begin(), sizes.end(), [](std::size_t n) { return n > 0; }));
     if (!choice.describe.empty()) std::printf("%s\n", choice.describe.c_str());
     std::printf(
         "wrote %s: %zu triangles, %zu vertices, %zu components (iso %.6g; load %.0f ms, "

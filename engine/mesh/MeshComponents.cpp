@@ -143,6 +143,19 @@ std::size_t labelComponentsFromForest(Mesh& mesh, std::uint32_t* parent, int thr
     return count;
 }
 
+std::size_t countForestRoots(const std::uint32_t* parent, std::size_t vertexCount, int threads) {
+    const int parts = partsFor(vertexCount, threads);
+    std::vector<std::size_t> roots(static_cast<std::size_t>(parts), 0);
+    forParts(parts, [&](int part) {
+        std::size_t n = 0;
+        const std::size_t end = partBegin(vertexCount, part + 1, parts);
+        for (std::size_t v = partBegin(vertexCount, part, parts); v < end; ++v)
+            n += parent[v] == v;
+        roots[part] = n;
+    });
+    return std::accumulate(roots.begin(), roots.end(), std::size_t{0});
+}
+
 std::vector<std::size_t> componentSizes(const Mesh& mesh) {
     // The largest rank first (a vectorised reduction), then a count without size checks, by
     // runs (top of the file).

@@ -21,6 +21,10 @@ std::size_t labelComponents(Mesh& mesh, int threads = 1);
 // triangles. `parent` (one entry per vertex) is overwritten.
 std::size_t labelComponentsFromForest(Mesh& mesh, std::uint32_t* parent, int threads);
 
+// The number of sets of a finished forest over `vertexCount` vertices: the mesh's components
+// when every vertex lies on a triangle, as marching cubes' vertices do.
+std::size_t countForestRoots(const std::uint32_t* parent, std::size_t vertexCount, int threads);
+
 // Triangles per component rank (needs mesh.component).
 std::vector<std::size_t> componentSizes(const Mesh& mesh);
 

@@ -10,6 +10,7 @@
 #include <queue>
 #include <random>
 #include <set>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -150,6 +151,67 @@ TEST(MeshComponents, LabelsMatchABreadthFirstSearchOnAMirroredGridAndARegionOfIn
             EXPECT_TRUE(std::equal(m.component.begin(), m.component.end(), truth.begin(),
                                    truth.end()))
                 << (roi ? "region of interest, " : "whole volume, ") << threads << " threads";
+        }
+    }
+}
+
+TEST(MeshComponents, CountWithoutLabelsMatchesABreadthFirstSearchWithAnyThreadCount) {
+    // What `fluoromatch mesh` reports: the count from the generate pass's forest, no triangle
+    // labelled. Volumes: tall and flat noise, and noise in one slab of a constant volume, where
+    // the work-balanced chunks of the generate pass are a slice or two each (all their segments
+    // cross into the next chunk).
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<float> value(-1.0f, 1.0f);
+    struct Case {
+        glm::ivec3 dims;
+        int slabFirst, slabLast;  // slices holding noise; the rest is -1 (outside)
+    };
+    for (const Case c : {Case{glm::ivec3(23, 17, 61), 0, 60}, Case{glm::ivec3(40, 33, 3), 0, 2},
+                         Case{glm::ivec3(20, 22, 64), 40, 46}}) {
+        Volume v = Volume::allocate(c.dims);
+        v.meta.source = "noise";
+        for (int z = 0; z < c.dims.z; ++z)
+            for (int y = 0; y < c.dims.y; ++y)
+                for (int x = 0; x < c.dims.x; ++x)
+                    v.values[v.index(x, y, z)] =
+                        z >= c.slabFirst && z <= c.slabLast ? value(rng) : -1.0f;
+        for (const float iso : {0.6f, 0.0f}) {
+            const std::string what = "noise " + std::to_string(c.dims.x) + "x" +
+                                     std::to_string(c.dims.y) + "x" + std::to_string(c.dims.z) +
+                                     " iso " + std::to_string(iso);
+            fm::MarchingCubesOptions o;
+            o.isoValue = iso;
+            o.threads = 1;
+            const Mesh plain = fm::marchingCubes(v, o);
+            const std::size_t truth = distinct(referenceRanks(plain));
+            ASSERT_GE(truth, 3u) << what;
+            for (int threads : {1, 2, 3, 4}) {
+                o.threads = threads;
+                std::size_t count = 0;
+                const Mesh m = fm::marchingCubes(v, o, &count);
+                EXPECT_EQ(count, truth) << what << ", " << threads << " threads";
+                EXPECT_TRUE(m.component.empty()) << what;  // counted, not labelled
+                EXPECT_TRUE(std::equal(m.triangles.begin(), m.triangles.end(),
+                                       plain.triangles.begin(), plain.triangles.end()))
+                    << what << ", " << threads << " threads";
+            }
+            // With a component option the count is that of the mesh returned.
+            o.threads = 2;
+            std::size_t count = 0;
+            o.keepLargestComponents = 2;
+            const Mesh kept = fm::marchingCubes(v, o, &count);
+            EXPECT_EQ(count, 2u) << what;
+            EXPECT_EQ(distinct(referenceRanks(kept)), 2u) << what;
+            o.keepLargestComponents = 0;
+            o.onlyComponentRank = 1;
+            count = 0;
+            fm::marchingCubes(v, o, &count);
+            EXPECT_EQ(count, 1u) << what;
+            o.onlyComponentRank.reset();
+            o.labelComponents = true;
+            const Mesh labelled = fm::marchingCubes(v, o, &count);
+            EXPECT_EQ(count, truth) << what << ", labelled";
+            EXPECT_EQ(fm::componentSizes(labelled).size(), truth) << what;
         }
     }
 }
