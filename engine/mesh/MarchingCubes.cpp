@@ -281,7 +281,8 @@ Mesh marchingCubes(const Volume& volume, const MarchingCubesOptions& options,
     const std::size_t sliceStride = g.sliceStride;
 
     // Pass 1: classify every ROI voxel (inside = value >= iso), note where each row has inside
-    // points, and the ROI minimum for the padding value. Padding stays 0 (outside).
+    // points, and the ROI minimum for the padding value. Padding stays 0 (outside). It runs
+    // in one loop with pass 2 (below).
     // The array is left uninitialised and written in full by the parallel pass: a zeroing
     // memset up front would touch every page twice (it cost ~20% on large CTs).
     const std::size_t byteCount = sliceStride * (g.p.z + 1);
@@ -293,85 +294,102 @@ Mesh marchingCubes(const Volume& volume, const MarchingCubesOptions& options,
     std::vector<RowInfo> rows(static_cast<std::size_t>(g.p.y) * g.p.z);
     std::vector<float> layerMin(g.p.z, std::numeric_limits<float>::infinity());
     const float iso = g.iso;
-    parallelFor(
-        g.m.z, threads,
-        [&](int begin, int end) {
-            for (int uz = begin + 1; uz <= end; ++uz) {
-                float lowest = std::numeric_limits<float>::infinity();
-                // Padding rows of this slice.
-                std::memset(&cls[g.pointIndex(0, 0, uz)], 0, rowStride);
-                std::memset(&cls[g.pointIndex(0, g.p.y - 1, uz)], 0, rowStride);
-                for (int uy = 1; uy <= g.m.y; ++uy) {
-                    const float* src =
-                        &volume.values[volume.index(lo.x, lo.y + uy - 1, lo.z + uz - 1)];
-                    std::uint8_t* row = &cls[g.pointIndex(0, uy, uz)];
-                    std::uint8_t* dst = row + 1;
-                    const int width = g.m.x;
-                    row[0] = 0;
-                    const float rowLowest = mc::classifyRow(src, dst, width, iso);
-                    lowest = rowLowest < lowest ? rowLowest : lowest;
-                    std::memset(dst + width, 0, rowStride - 1 - width);
-                    const void* firstInside = std::memchr(dst, 1, width);
-                    if (!firstInside) continue;
-                    int last = width - 1;
-                    while (!dst[last]) --last;
-                    RowInfo& info = rows[g.rowIndex(uy, uz)];
-                    info.insideFirst =
-                        static_cast<int>(static_cast<const std::uint8_t*>(firstInside) - dst) + 1;
-                    info.insideLast = last + 1;
-                }
-                layerMin[uz] = lowest;
-            }
-        },
-        4);
-    if (options.padValue) {
-        g.pad = static_cast<float>(*options.padValue);
-    } else {
-        const float lowest = *std::min_element(layerMin.begin(), layerMin.end());
-        g.pad = lowest < iso ? lowest : iso - 1.0f;
-    }
+    auto classifySlice = [&](int uz) {
+        float lowest = std::numeric_limits<float>::infinity();
+        // Padding rows of this slice.
+        std::memset(&cls[g.pointIndex(0, 0, uz)], 0, rowStride);
+        std::memset(&cls[g.pointIndex(0, g.p.y - 1, uz)], 0, rowStride);
+        for (int uy = 1; uy <= g.m.y; ++uy) {
+            const float* src =
+                &volume.values[volume.index(lo.x, lo.y + uy - 1, lo.z + uz - 1)];
+            std::uint8_t* row = &cls[g.pointIndex(0, uy, uz)];
+            std::uint8_t* dst = row + 1;
+            const int width = g.m.x;
+            row[0] = 0;
+            const float rowLowest = mc::classifyRow(src, dst, width, iso);
+            lowest = rowLowest < lowest ? rowLowest : lowest;
+            std::memset(dst + width, 0, rowStride - 1 - width);
+            const void* firstInside = std::memchr(dst, 1, width);
+            if (!firstInside) continue;
+            int last = width - 1;
+            while (!dst[last]) --last;
+            RowInfo& info = rows[g.rowIndex(uy, uz)];
+            info.insideFirst =
+                static_cast<int>(static_cast<const std::uint8_t*>(firstInside) - dst) + 1;
+            info.insideLast = last + 1;
+        }
+        layerMin[uz] = lowest;
+    };
 
     // Pass 2: per cube row, the cubes worth visiting (those near an inside point of the four
     // point rows it touches: the rest are all outside and are skipped), the crossed edges its
     // point row owns, and its triangle count. 8 cubes per step; a step whose cubes are all
     // outside or all inside (the block's values do not straddle the iso) costs 8 loads.
     const int cubeRowsY = g.m.y + 1, cubeRowsZ = g.m.z + 1;
-    parallelFor(
-        cubeRowsZ, threads,
-        [&](int begin, int end) {
-            for (int uz = begin; uz < end; ++uz) {
-                for (int uy = 0; uy < cubeRowsY; ++uy) {
-                    RowInfo& row = rows[g.rowIndex(uy, uz)];
-                    int first = std::numeric_limits<int>::max(), last = -1;
-                    for (int dz = 0; dz < 2; ++dz)
-                        for (int dy = 0; dy < 2; ++dy) {
-                            const RowInfo& q = rows[g.rowIndex(uy + dy, uz + dz)];
-                            first = std::min(first, q.insideFirst);
-                            last = std::max(last, q.insideLast);
-                        }
-                    if (last < 0) continue;
-                    const std::size_t base = g.pointIndex(0, uy, uz);
-                    row.cubeFirst = first - 1;
-                    row.cubeLast = last;
-                    std::uint32_t edges = 0, triangles = 0;
-                    const std::uint8_t* r0 = cls + base;
-                    const std::uint8_t* r1 = r0 + rowStride;
-                    const std::uint8_t* r2 = r0 + sliceStride;
-                    const std::uint8_t* r3 = r2 + rowStride;
-                    for (int ux = row.cubeFirst; ux <= row.cubeLast; ux += 8) {
-                        const std::uint64_t c = caseWord(r0, r1, r2, r3, ux);
-                        if (c == 0 || c == ~std::uint64_t{0}) continue;
-                        const std::uint64_t o = ownedWord(r0, rowStride, sliceStride, ux);
-                        edges += static_cast<std::uint32_t>((laneBitCounts(o) * kLanes) >> 56);
-                        for (int k = 0; k < 8; ++k)
-                            triangles += packed.asIs[lane(c, k)].triangleCount;
-                    }
-                    row.edgeVertices = edges;
-                    row.triangles = triangles;
+    auto countCubeSlice = [&](int uz) {
+        for (int uy = 0; uy < cubeRowsY; ++uy) {
+            RowInfo& row = rows[g.rowIndex(uy, uz)];
+            int first = std::numeric_limits<int>::max(), last = -1;
+            for (int dz = 0; dz < 2; ++dz)
+                for (int dy = 0; dy < 2; ++dy) {
+                    const RowInfo& q = rows[g.rowIndex(uy + dy, uz + dz)];
+                    first = std::min(first, q.insideFirst);
+                    last = std::max(last, q.insideLast);
                 }
+            if (last < 0) continue;
+            const std::size_t base = g.pointIndex(0, uy, uz);
+            row.cubeFirst = first - 1;
+            row.cubeLast = last;
+            std::uint32_t edges = 0, triangles = 0;
+            const std::uint8_t* r0 = cls + base;
+            const std::uint8_t* r1 = r0 + rowStride;
+            const std::uint8_t* r2 = r0 + sliceStride;
+            const std::uint8_t* r3 = r2 + rowStride;
+            for (int ux = row.cubeFirst; ux <= row.cubeLast; ux += 8) {
+                const std::uint64_t c = caseWord(r0, r1, r2, r3, ux);
+                if (c == 0 || c == ~std::uint64_t{0}) continue;
+                const std::uint64_t o = ownedWord(r0, rowStride, sliceStride, ux);
+                edges += static_cast<std::uint32_t>((laneBitCounts(o) * kLanes) >> 56);
+                for (int k = 0; k < 8; ++k)
+                    triangles += packed.asIs[lane(c, k)].triangleCount;
+            }
+            row.edgeVertices = edges;
+            row.triangles = triangles;
+        }
+    };
+
+    // Passes 1 and 2 run together: a chunk of point slices counts each cube slice as soon as
+    // its two point slices are classified, while they are in the cache. The first cube slice
+    // of a chunk also needs the previous chunk's last point slice: those are counted after.
+    std::vector<std::uint8_t> counted(static_cast<std::size_t>(cubeRowsZ), 0);
+    parallelFor(
+        g.m.z, threads,
+        [&](int begin, int end) {
+            for (int uz = begin + 1; uz <= end; ++uz) {
+                classifySlice(uz);
+                if (uz - 1 > begin || begin == 0) {  // point slice 0 is padding: ready
+                    countCubeSlice(uz - 1);
+                    counted[uz - 1] = 1;
+                }
+            }
+            if (end == g.m.z) {  // the last cube slice reaches into padding only
+                countCubeSlice(end);
+                counted[end] = 1;
             }
         },
         4);
+    std::vector<int> chunkStarts;
+    for (int uz = 0; uz < cubeRowsZ; ++uz)
+        if (!counted[uz]) chunkStarts.push_back(uz);
+    parallelFor(static_cast<int>(chunkStarts.size()), threads, [&](int begin, int end) {
+        for (int i = begin; i < end; ++i) countCubeSlice(chunkStarts[i]);
+    });
+    if (options.padValue) {
+        g.pad = static_cast<float>(*options.padValue);
+    } else {
+        const float lowest = *std::min_element(layerMin.begin(), layerMin.end());
+        g.pad = lowest < iso ? lowest : iso - 1.0f;
+    }
 
     // Pass 3: prefix sums give every row its output ranges (allocate once, no locks).
     std::size_t vertexTotal = 0, triangleTotal = 0;
