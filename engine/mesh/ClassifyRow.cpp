@@ -46,7 +46,9 @@ float classifyRowAvx2(const float* src, std::uint8_t* dst, int width, float iso)
     return classify(src, dst, width, iso);
 }
 
-bool classifyRowAvx2Available() { return false; }
+bool classifyRowAvx2Available() {
+    return false;
+}
 #endif
 
 float classifyRow(const float* src, std::uint8_t* dst, int width, float iso) {

@@ -454,165 +454,165 @@ Mesh marchingCubes(const Volume& volume, const MarchingCubesOptions& options,
     // its next owned vertex, so vertices owned by other rows are found without a lookup
     // table.
     auto generateSlices = [&](int begin, int end) {
-            const std::uint32_t ownFirst = slicesFirstVertex(begin);
-            const std::uint32_t ownEnd = slicesFirstVertex(end);
-            if (label)
-                std::iota(forest.begin() + ownFirst, forest.begin() + ownEnd, ownFirst);
-            std::uint32_t* const parent = forest.data();
-            // Collected here, not in crossing[begin] directly: the chunks' vector headers share
-            // cache lines, and growing them from two threads made them bounce between cores.
-            std::vector<Segment> deferred;
-            for (int uz = begin; uz < end; ++uz) {
-                const bool defer = label && uz == end - 1 && end < cubeRowsZ;
-                const bool unite = label && !defer;
-                for (int uy = 0; uy < cubeRowsY; ++uy) {
-                    const RowInfo& row = rows[g.rowIndex(uy, uz)];
-                    if (row.cubeLast < row.cubeFirst) continue;
-                    const std::size_t base = g.pointIndex(0, uy, uz);
-                    {
-                        // The volume row the z-edge gradients two rows on will read first: it
-                        // comes from memory, the other rows they read are already cached.
-                        const int vy = g.lo.y + uy + 2, vz = g.lo.z + uz + 1;
-                        if (vy < volume.dims.y && vz < volume.dims.z) {
-                            const float* pf = &volume.values[volume.index(g.lo.x, vy, vz)];
-                            const int xEnd = std::min(row.cubeLast + 1, g.m.x - 1);
-                            for (int x = std::max(row.cubeFirst - 2, 0); x <= xEnd; x += 16)
-                                __builtin_prefetch(pf + x);  // one 64-byte line per 16 floats
-                        }
-                    }
-                    if (row.edgeVertices) {
-                        const std::uint8_t* r0 = cls + base;
-                        // Central differences at both edge ends stay inside the ROI in y, z.
-                        const bool yz = uy >= 2 && uz >= 2;
-                        const bool interiorX = yz && uy <= g.m.y - 1 && uz <= g.m.z - 1;
-                        const bool interiorY = yz && uy + 1 <= g.m.y - 1 && uz <= g.m.z - 1;
-                        const bool interiorZ = yz && uy <= g.m.y - 1 && uz + 1 <= g.m.z - 1;
-                        std::uint32_t id = row.vertexBase;
-                        for (int ux = row.cubeFirst; ux <= row.cubeLast; ux += 8) {
-                            std::uint64_t w = ownedWord(r0, rowStride, sliceStride, ux);
-                            while (w) {
-                                const int k = std::countr_zero(w) >> 3;
-                                const unsigned bits = lane(w, k);
-                                w &= ~(std::uint64_t{0xff} << (8 * k));
-                                if (bits & 1) maker.make<0>(ux + k, uy, uz, id++, interiorX);
-                                if (bits & 2) maker.make<1>(ux + k, uy, uz, id++, interiorY);
-                                if (bits & 4) maker.make<2>(ux + k, uy, uz, id++, interiorZ);
-                            }
-                        }
-                    }
-                    if (row.triangles == 0) continue;
-
-                    // Triangles. The four point rows q = dy + 2 dz hold the cube row's edges.
-                    const std::uint8_t* r0 = cls + base;
-                    const std::uint8_t* r1 = r0 + rowStride;
-                    const std::uint8_t* r2 = r0 + sliceStride;
-                    const std::uint8_t* r3 = r2 + rowStride;
-                    const std::uint8_t* pointRow[4];
-                    std::uint32_t cursor[4];
-                    int walkFirst = row.cubeFirst;
-                    for (int q = 0; q < 4; ++q) {
-                        const int qy = uy + (q & 1), qz = uz + (q >> 1);
-                        pointRow[q] = cls + g.pointIndex(0, qy, qz);
-                        cursor[q] = 0;
-                        if (qy >= cubeRowsY || qz >= cubeRowsZ) continue;  // owns nothing
-                        const RowInfo& r = rows[g.rowIndex(qy, qz)];
-                        cursor[q] = r.vertexBase;
-                        // Start where the earliest of the four rows has owned edges.
-                        if (r.edgeVertices) walkFirst = std::min(walkFirst, r.cubeFirst);
-                    }
-                    std::size_t triangleId = row.triangleBase;
-                    for (int ux = walkFirst; ux <= row.cubeLast; ux += 8) {
-                        std::uint64_t o[4];
-                        for (int q = 0; q < 4; ++q)
-                            o[q] = ownedWord(pointRow[q], rowStride, sliceStride, ux);
-                        const std::uint64_t c = caseWord(r0, r1, r2, r3, ux);
-                        if (c == 0 || c == ~std::uint64_t{0}) {
-                            // No triangles here, but rows 1-3 may own edges leaving the four
-                            // rows: step their cursors over them.
-                            for (int q = 0; q < 4; ++q)
-                                if (o[q])
-                                    cursor[q] += static_cast<std::uint32_t>(
-                                        (laneBitCounts(o[q]) * kLanes) >> 56);
-                            continue;
-                        }
-                        // Per lane: owned vertices of each row up to and including that point.
-                        std::uint64_t upTo[4];
-                        for (int q = 0; q < 4; ++q) upTo[q] = laneBitCounts(o[q]) * kLanes;
-                        // Owned edges of the next point (y and z edges at the cube's far x).
-                        const std::uint64_t next0 = ownedWord(r0, rowStride, sliceStride, ux + 1),
-                                            next1 = ownedWord(r1, rowStride, sliceStride, ux + 1),
-                                            next2 = ownedWord(r2, rowStride, sliceStride, ux + 1);
-                        for (int k = 0; k < 8; ++k) {
-                            const PackedCase& pc = table[lane(c, k)];
-                            if (!pc.triangleCount) continue;
-                            // Ids of the first owned vertex of point ux + k (before) and of
-                            // point ux + k + 1 (after) in rows 0, 1 and 2; row 3 needs before.
-                            std::uint32_t before[4], after[3];
-                            for (int q = 0; q < 4; ++q)
-                                before[q] = cursor[q] + (k ? lane(upTo[q], k - 1) : 0u);
-                            for (int q = 0; q < 3; ++q) after[q] = cursor[q] + lane(upTo[q], k);
-                            const unsigned b0 = lane(o[0], k), b1 = lane(o[1], k),
-                                           b2 = lane(o[2], k);
-                            const unsigned n0 = lane(next0, k), n1 = lane(next1, k),
-                                           n2 = lane(next2, k);
-                            // Edge e: axis e / 4 from the corner offset by bits of e % 4 in
-                            // the other two axes (lower axis first). Within a point the owned
-                            // vertices come in the order x, y, z.
-                            std::uint32_t ref[12];
-                            ref[0] = before[0];
-                            ref[1] = before[1];
-                            ref[2] = before[2];
-                            ref[3] = before[3];
-                            ref[4] = before[0] + (b0 & 1);
-                            ref[5] = after[0] + (n0 & 1);
-                            ref[6] = before[2] + (b2 & 1);
-                            ref[7] = after[2] + (n2 & 1);
-                            ref[8] = before[0] + (b0 & 1) + ((b0 >> 1) & 1);
-                            ref[9] = after[0] + (n0 & 1) + ((n0 >> 1) & 1);
-                            ref[10] = before[1] + (b1 & 1) + ((b1 >> 1) & 1);
-                            ref[11] = after[1] + (n1 & 1) + ((n1 >> 1) & 1);
-                            const std::uint8_t* e = pc.edges;
-                            for (int t = 0; t < pc.triangleCount; ++t, e += 3)
-                                outTriangles[triangleId++] =
-                                    glm::uvec3(ref[e[0]], ref[e[1]], ref[e[2]]);
-                            if (unite) {
-                                const mc::CubeLinks& l = links[lane(c, k)];
-                                std::uint32_t root = 0;
-                                for (int i = 0; i < l.count; ++i) {
-                                    const std::uint8_t step = l.steps[i];
-                                    const std::uint32_t v = ref[step & 15];
-                                    const std::uint32_t r = step & mc::CubeLinks::kFirstCube
-                                                                ? v
-                                                                : forestRoot(parent, v);
-                                    if (step & mc::CubeLinks::kPathStart) {
-                                        root = r;
-                                    } else if (r > root) {
-                                        parent[r] = root;
-                                    } else if (r < root) {
-                                        parent[root] = r;
-                                        root = r;
-                                    }
-                                }
-                            } else if (defer) {
-                                const mc::CubeLinks& l = links[lane(c, k)];
-                                for (int i = 1; i < l.count; ++i) {
-                                    if (l.steps[i] & mc::CubeLinks::kPathStart) continue;
-                                    const std::uint32_t a = ref[l.steps[i - 1] & 15],
-                                                        b = ref[l.steps[i] & 15];
-                                    if (a < ownEnd && b < ownEnd)
-                                        forestUnite(parent, a, b);
-                                    else
-                                        deferred.emplace_back(a, b);
-                                }
-                            }
-                        }
-                        for (int q = 0; q < 4; ++q)
-                            cursor[q] += static_cast<std::uint32_t>(upTo[q] >> 56);
+        const std::uint32_t ownFirst = slicesFirstVertex(begin);
+        const std::uint32_t ownEnd = slicesFirstVertex(end);
+        if (label)
+            std::iota(forest.begin() + ownFirst, forest.begin() + ownEnd, ownFirst);
+        std::uint32_t* const parent = forest.data();
+        // Collected here, not in crossing[begin] directly: the chunks' vector headers share
+        // cache lines, and growing them from two threads made them bounce between cores.
+        std::vector<Segment> deferred;
+        for (int uz = begin; uz < end; ++uz) {
+            const bool defer = label && uz == end - 1 && end < cubeRowsZ;
+            const bool unite = label && !defer;
+            for (int uy = 0; uy < cubeRowsY; ++uy) {
+                const RowInfo& row = rows[g.rowIndex(uy, uz)];
+                if (row.cubeLast < row.cubeFirst) continue;
+                const std::size_t base = g.pointIndex(0, uy, uz);
+                {
+                    // The volume row the z-edge gradients two rows on will read first: it
+                    // comes from memory, the other rows they read are already cached.
+                    const int vy = g.lo.y + uy + 2, vz = g.lo.z + uz + 1;
+                    if (vy < volume.dims.y && vz < volume.dims.z) {
+                        const float* pf = &volume.values[volume.index(g.lo.x, vy, vz)];
+                        const int xEnd = std::min(row.cubeLast + 1, g.m.x - 1);
+                        for (int x = std::max(row.cubeFirst - 2, 0); x <= xEnd; x += 16)
+                            __builtin_prefetch(pf + x);  // one 64-byte line per 16 floats
                     }
                 }
+                if (row.edgeVertices) {
+                    const std::uint8_t* r0 = cls + base;
+                    // Central differences at both edge ends stay inside the ROI in y, z.
+                    const bool yz = uy >= 2 && uz >= 2;
+                    const bool interiorX = yz && uy <= g.m.y - 1 && uz <= g.m.z - 1;
+                    const bool interiorY = yz && uy + 1 <= g.m.y - 1 && uz <= g.m.z - 1;
+                    const bool interiorZ = yz && uy <= g.m.y - 1 && uz + 1 <= g.m.z - 1;
+                    std::uint32_t id = row.vertexBase;
+                    for (int ux = row.cubeFirst; ux <= row.cubeLast; ux += 8) {
+                        std::uint64_t w = ownedWord(r0, rowStride, sliceStride, ux);
+                        while (w) {
+                            const int k = std::countr_zero(w) >> 3;
+                            const unsigned bits = lane(w, k);
+                            w &= ~(std::uint64_t{0xff} << (8 * k));
+                            if (bits & 1) maker.make<0>(ux + k, uy, uz, id++, interiorX);
+                            if (bits & 2) maker.make<1>(ux + k, uy, uz, id++, interiorY);
+                            if (bits & 4) maker.make<2>(ux + k, uy, uz, id++, interiorZ);
+                        }
+                    }
+                }
+                if (row.triangles == 0) continue;
+
+                // Triangles. The four point rows q = dy + 2 dz hold the cube row's edges.
+                const std::uint8_t* r0 = cls + base;
+                const std::uint8_t* r1 = r0 + rowStride;
+                const std::uint8_t* r2 = r0 + sliceStride;
+                const std::uint8_t* r3 = r2 + rowStride;
+                const std::uint8_t* pointRow[4];
+                std::uint32_t cursor[4];
+                int walkFirst = row.cubeFirst;
+                for (int q = 0; q < 4; ++q) {
+                    const int qy = uy + (q & 1), qz = uz + (q >> 1);
+                    pointRow[q] = cls + g.pointIndex(0, qy, qz);
+                    cursor[q] = 0;
+                    if (qy >= cubeRowsY || qz >= cubeRowsZ) continue;  // owns nothing
+                    const RowInfo& r = rows[g.rowIndex(qy, qz)];
+                    cursor[q] = r.vertexBase;
+                    // Start where the earliest of the four rows has owned edges.
+                    if (r.edgeVertices) walkFirst = std::min(walkFirst, r.cubeFirst);
+                }
+                std::size_t triangleId = row.triangleBase;
+                for (int ux = walkFirst; ux <= row.cubeLast; ux += 8) {
+                    std::uint64_t o[4];
+                    for (int q = 0; q < 4; ++q)
+                        o[q] = ownedWord(pointRow[q], rowStride, sliceStride, ux);
+                    const std::uint64_t c = caseWord(r0, r1, r2, r3, ux);
+                    if (c == 0 || c == ~std::uint64_t{0}) {
+                        // No triangles here, but rows 1-3 may own edges leaving the four
+                        // rows: step their cursors over them.
+                        for (int q = 0; q < 4; ++q)
+                            if (o[q])
+                                cursor[q] += static_cast<std::uint32_t>(
+                                    (laneBitCounts(o[q]) * kLanes) >> 56);
+                        continue;
+                    }
+                    // Per lane: owned vertices of each row up to and including that point.
+                    std::uint64_t upTo[4];
+                    for (int q = 0; q < 4; ++q) upTo[q] = laneBitCounts(o[q]) * kLanes;
+                    // Owned edges of the next point (y and z edges at the cube's far x).
+                    const std::uint64_t next0 = ownedWord(r0, rowStride, sliceStride, ux + 1),
+                                        next1 = ownedWord(r1, rowStride, sliceStride, ux + 1),
+                                        next2 = ownedWord(r2, rowStride, sliceStride, ux + 1);
+                    for (int k = 0; k < 8; ++k) {
+                        const PackedCase& pc = table[lane(c, k)];
+                        if (!pc.triangleCount) continue;
+                        // Ids of the first owned vertex of point ux + k (before) and of
+                        // point ux + k + 1 (after) in rows 0, 1 and 2; row 3 needs before.
+                        std::uint32_t before[4], after[3];
+                        for (int q = 0; q < 4; ++q)
+                            before[q] = cursor[q] + (k ? lane(upTo[q], k - 1) : 0u);
+                        for (int q = 0; q < 3; ++q) after[q] = cursor[q] + lane(upTo[q], k);
+                        const unsigned b0 = lane(o[0], k), b1 = lane(o[1], k),
+                                       b2 = lane(o[2], k);
+                        const unsigned n0 = lane(next0, k), n1 = lane(next1, k),
+                                       n2 = lane(next2, k);
+                        // Edge e: axis e / 4 from the corner offset by bits of e % 4 in
+                        // the other two axes (lower axis first). Within a point the owned
+                        // vertices come in the order x, y, z.
+                        std::uint32_t ref[12];
+                        ref[0] = before[0];
+                        ref[1] = before[1];
+                        ref[2] = before[2];
+                        ref[3] = before[3];
+                        ref[4] = before[0] + (b0 & 1);
+                        ref[5] = after[0] + (n0 & 1);
+                        ref[6] = before[2] + (b2 & 1);
+                        ref[7] = after[2] + (n2 & 1);
+                        ref[8] = before[0] + (b0 & 1) + ((b0 >> 1) & 1);
+                        ref[9] = after[0] + (n0 & 1) + ((n0 >> 1) & 1);
+                        ref[10] = before[1] + (b1 & 1) + ((b1 >> 1) & 1);
+                        ref[11] = after[1] + (n1 & 1) + ((n1 >> 1) & 1);
+                        const std::uint8_t* e = pc.edges;
+                        for (int t = 0; t < pc.triangleCount; ++t, e += 3)
+                            outTriangles[triangleId++] =
+                                glm::uvec3(ref[e[0]], ref[e[1]], ref[e[2]]);
+                        if (unite) {
+                            const mc::CubeLinks& l = links[lane(c, k)];
+                            std::uint32_t root = 0;
+                            for (int i = 0; i < l.count; ++i) {
+                                const std::uint8_t step = l.steps[i];
+                                const std::uint32_t v = ref[step & 15];
+                                const std::uint32_t r = step & mc::CubeLinks::kFirstCube
+                                                            ? v
+                                                            : forestRoot(parent, v);
+                                if (step & mc::CubeLinks::kPathStart) {
+                                    root = r;
+                                } else if (r > root) {
+                                    parent[r] = root;
+                                } else if (r < root) {
+                                    parent[root] = r;
+                                    root = r;
+                                }
+                            }
+                        } else if (defer) {
+                            const mc::CubeLinks& l = links[lane(c, k)];
+                            for (int i = 1; i < l.count; ++i) {
+                                if (l.steps[i] & mc::CubeLinks::kPathStart) continue;
+                                const std::uint32_t a = ref[l.steps[i - 1] & 15],
+                                                    b = ref[l.steps[i] & 15];
+                                if (a < ownEnd && b < ownEnd)
+                                    forestUnite(parent, a, b);
+                                else
+                                    deferred.emplace_back(a, b);
+                            }
+                        }
+                    }
+                    for (int q = 0; q < 4; ++q)
+                        cursor[q] += static_cast<std::uint32_t>(upTo[q] >> 56);
+                }
             }
-            if (!deferred.empty()) crossing[begin] = std::move(deferred);
-        };
+        }
+        if (!deferred.empty()) crossing[begin] = std::move(deferred);
+    };
     // One chunk on one thread (nothing deferred); else 4 per thread.
     const std::vector<int> chunkBounds = balancedSliceChunks(
         rows, g, cubeRowsY, cubeRowsZ, threads == 1 ? 1 : 4 * threads);
