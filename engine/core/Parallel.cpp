@@ -88,13 +88,9 @@ class WorkerPool {
         job.closed = true;
         job_ = nullptr;
         if (job.active != 0) {
-            // The workers are finishing their last chunks: wait for them awake (see spinForJob).
+            // The workers are finishing their last chunks: wait for them awake (see spinUntil).
             lock.unlock();
-            const auto until = std::chrono::steady_clock::now() + kSpinTime;
-            for (int i = 1; job.active.load(std::memory_order_acquire) != 0; ++i) {
-                spinPause();
-                if (i % 64 == 0 && std::chrono::steady_clock::now() >= until) break;
-            }
+            spinUntil([&] { return job.active.load(std::memory_order_acquire) == 0; });
             lock.lock();
         }
         done_.wait(lock, [&] { return job.active == 0; });
@@ -108,7 +104,7 @@ class WorkerPool {
         for (;;) {
             if (generation_.load(std::memory_order_relaxed) == seen && !shutdown_) {
                 lock.unlock();
-                spinForJob(seen);
+                spinUntil([&] { return generation_.load(std::memory_order_relaxed) != seen; });
                 lock.lock();
             }
             wake_.wait(lock, [&] { return shutdown_ || generation_ != seen; });
@@ -125,13 +121,15 @@ class WorkerPool {
         }
     }
 
-    // Waits up to kSpinTime for a new job before sleeping: the passes of one algorithm follow
-    // each other within microseconds, and a sleeping worker took 40-60 us to wake here (a VM
-    // with 2 cores), most of a small pass. (Yielding in the loop instead of PAUSE cost about
-    // 8 us per wake-up here.) After kSpinTime the worker sleeps: an idle app uses no CPU.
-    void spinForJob(std::uint64_t seen) const {
+    // Waits awake, up to kSpinTime, until done() (a new job for a worker, the helpers gone for
+    // the caller) before the condition variable puts the thread to sleep: the passes of one
+    // algorithm follow each other within microseconds, and a sleeping thread took 40-60 us to
+    // wake here (a VM with 2 cores), most of a small pass. (Yielding instead of PAUSE cost
+    // about 8 us per wake-up here.) After kSpinTime it sleeps: an idle app uses no CPU.
+    template <class Done>
+    static void spinUntil(Done done) {
         const auto until = std::chrono::steady_clock::now() + kSpinTime;
-        for (int i = 1; generation_.load(std::memory_order_relaxed) == seen; ++i) {
+        for (int i = 1; !done(); ++i) {
             spinPause();
             if (i % 64 == 0 && std::chrono::steady_clock::now() >= until) return;
         }
