@@ -7,7 +7,7 @@
 namespace fm {
 
 namespace detail {
-template <class T>
+template <class T, bool Prefetch>
 void walkDense16Avx512(const T* values, std::int64_t last, const DenseRay* rays, int count,
                        double* sums);
 }
@@ -52,7 +52,10 @@ void walkDense16(const T* values, std::int64_t last, const DenseRay* rays, int c
     // The vector form indexes in 32 bits; a volume past that (2^31 voxels) walks
     // one ray at a time, with the same sums.
     if (denseWalkSimdAvailable() && last <= std::numeric_limits<std::int32_t>::max()) {
-        detail::walkDense16Avx512(values, last, rays, count, sums);
+        if (denseWalkPrefetches(std::uint64_t(last + 1) * sizeof(T)))
+            detail::walkDense16Avx512<T, true>(values, last, rays, count, sums);
+        else
+            detail::walkDense16Avx512<T, false>(values, last, rays, count, sums);
         return;
     }
 #endif

@@ -12,6 +12,7 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/type_precision.hpp>
 
+#include "core/LargeAllocation.h"
 #include "drr/Drr.h"
 
 namespace fm {
@@ -34,10 +35,11 @@ struct DrrVolume {
     // One copy, in the smallest type that holds them exactly (DrrValueOptions::compactVoxels):
     // int16 when every value per mm is valueScale times an integer of int16's range (CTs in
     // whole HU: mu = (mu_water / 1000) (HU + 1000)), else float with valueScale 1. A ray sums
-    // stored values times lengths and multiplies by valueScale once, at the end.
+    // stored values times lengths and multiplies by valueScale once, at the end. Large arrays
+    // live in huge pages of their own (allocateMapped): rays read them in scattered order.
     DrrVoxelType voxelType = DrrVoxelType::Float32;
-    std::vector<float> values;           // Float32
-    std::vector<std::int16_t> values16;  // Int16
+    std::vector<float, MappedAllocator<float>> values;                // Float32
+    std::vector<std::int16_t, MappedAllocator<std::int16_t>> values16;  // Int16
     double valueScale = 1.0;
     glm::ivec3 paddedDims{2};
     bool empty = true;

@@ -9,6 +9,7 @@
 
 #include "DrrTestUtil.h"
 #include "common/TestData.h"
+#include "drr/DenseWalk.h"
 #include "drr/Drr.h"
 #include "geometry/Pose.h"
 #include "io/ReadVolume.h"
@@ -76,6 +77,34 @@ TEST(DrrDenseWalk, EqualsTheScalarWalkBitForBitOnInt16Voxels) {
             fm::test::orbitGeometry(volume.center(), azimuth, 17.0, 200.0, 150.0, 37, 1.1);
         g.detector.size.y = 29;
         expectDenseEqualsScalar(*v, g);
+    }
+}
+
+// Volumes past kDenseWalkPrefetchFromBytes, float and int16: there the walk runs a shadow of
+// every group ahead to prefetch its voxels (DenseWalkAvx512.cpp), which must not change a bit.
+// Views near x (lanes in different rows), near z (lanes sharing cache lines) and oblique.
+TEST(DrrDenseWalk, EqualsTheScalarWalkBitForBitOnVolumesLargeEnoughToPrefetch) {
+    for (bool int16 : {false, true}) {
+        SCOPED_TRACE(int16 ? "int16" : "float");
+        const glm::ivec3 dims = int16 ? glm::ivec3{256, 240, 150} : glm::ivec3{200, 180, 130};
+        fm::Volume volume = fm::test::makeVolume(dims, {0.9, 0.8, 1.3}, 0.0f, {2.0, -1.0, 3.0},
+                                                 fm::test::rotation(11.0, {0.3, 1.0, 0.2}));
+        std::mt19937 rng(int16 ? 13 : 12);
+        std::uniform_int_distribution<int> value(-1000, 2000);
+        for (float& x : volume.values)
+            x = int16 ? float(value(rng)) : float(value(rng)) * 0.37f + 0.01f;
+        fm::DrrValueOptions raw;
+        raw.values = fm::DrrValues::Raw;
+        const fm::DrrVolumePtr v = fm::prepareDrrVolume(volume, raw);
+        const fm::DrrVolumeInfo info = fm::drrVolumeInfo(*v);
+        ASSERT_EQ(info.voxelType, int16 ? fm::DrrVoxelType::Int16 : fm::DrrVoxelType::Float32);
+        ASSERT_TRUE(fm::denseWalkPrefetches(info.voxelBytes)) << info.voxelBytes << " bytes";
+        for (auto [azimuth, elevation] : {std::pair{0.0, 0.0}, {0.0, 90.0}, {33.0, 17.0}}) {
+            fm::ProjectionGeometry g = fm::test::orbitGeometry(volume.center(), azimuth,
+                                                               elevation, 400.0, 300.0, 37, 7.0);
+            g.detector.size.y = 29;
+            expectDenseEqualsScalar(*v, g);
+        }
     }
 }
 
