@@ -46,9 +46,9 @@ bool denseWalkSimdAvailable();
 
 // From this many bytes of stored values up, the AVX-512 form prefetches every lane's voxels
 // some steps ahead (DenseWalkAvx512.cpp). Measured on crops of the GE head (docs/drr.md,
-// "Prefetching on large volumes"): 2-3x faster from 80 MB up, ~1.3x at 20 MB, but 5-35 %
-// slower at 3-12 MB (example_ct, the aorta crop, the DICOM series), whose voxels stay in the
-// caches after the first rays.
+// "Prefetching on large volumes"): 2-3x faster from 80 MB up, ~1.3x at 20 MB, but up to 40 %
+// slower at 5-12 MB (the aorta crop, the DICOM series), whose voxels stay in the caches after
+// the first rays.
 inline constexpr std::uint64_t kDenseWalkPrefetchFromBytes = std::uint64_t{16} << 20;
 inline bool denseWalkPrefetches(std::uint64_t valueBytes) {
     return valueBytes >= kDenseWalkPrefetchFromBytes;
