@@ -99,20 +99,38 @@ FM_AVX512 inline void prefetchLanes(const T* values, __m256i linear) {
     for (int i = 0; i < 8; ++i) prefetch(values, idx[i]);
 }
 
-// One step of the shadow: step()'s choice of axis and index update, for every lane (a lane
-// past its end walks on harmlessly).
+// The smallest of the next crossings and the lanes whose smallest is on y or z; ties go to
+// the later axis (as walkDense).
+struct Crossing {
+    __m512d nextMin;
+    __mmask8 onY, onZ;
+};
+FM_AVX512 inline Crossing nextCrossing(__m512d nx, __m512d ny, __m512d nz) {
+    Crossing c;
+    c.nextMin = _mm512_min_pd(nx, _mm512_min_pd(ny, nz));
+    c.onZ = _mm512_cmp_pd_mask(nz, c.nextMin, _CMP_EQ_OQ);
+    c.onY = _mm512_mask_cmp_pd_mask(static_cast<__mmask8>(~c.onZ), ny, c.nextMin, _CMP_EQ_OQ);
+    return c;
+}
+
+// The lanes in `move` cross the plane of their next crossing: the linear index steps along
+// that axis and the axis's next crossing moves one increment on.
+FM_AVX512 inline void cross(const Lanes& l, const Crossing& c, __mmask8 move, __m512d& nx,
+                            __m512d& ny, __m512d& nz, __m256i& linear) {
+    const __mmask8 sz = move & c.onZ, sy = move & c.onY,
+                   sx = move & static_cast<__mmask8>(~(c.onZ | c.onY));
+    linear = _mm256_mask_add_epi32(linear, sx, linear, l.ox);
+    linear = _mm256_mask_add_epi32(linear, sy, linear, l.oy);
+    linear = _mm256_mask_add_epi32(linear, sz, linear, l.oz);
+    nx = _mm512_mask_add_pd(nx, sx, nx, l.dx);
+    ny = _mm512_mask_add_pd(ny, sy, ny, l.dy);
+    nz = _mm512_mask_add_pd(nz, sz, nz, l.dz);
+}
+
+// One step of the shadow: step()'s crossing for every lane (a lane past its end walks on
+// harmlessly).
 FM_AVX512 inline void shadowStep(Lanes& l) {
-    const __m512d nextMin = _mm512_min_pd(l.snx, _mm512_min_pd(l.sny, l.snz));
-    const __mmask8 onZ = _mm512_cmp_pd_mask(l.snz, nextMin, _CMP_EQ_OQ);
-    const __mmask8 onY =
-        _mm512_mask_cmp_pd_mask(static_cast<__mmask8>(~onZ), l.sny, nextMin, _CMP_EQ_OQ);
-    const __mmask8 onX = static_cast<__mmask8>(~(onZ | onY));
-    l.slinear = _mm256_mask_add_epi32(l.slinear, onX, l.slinear, l.ox);
-    l.slinear = _mm256_mask_add_epi32(l.slinear, onY, l.slinear, l.oy);
-    l.slinear = _mm256_mask_add_epi32(l.slinear, onZ, l.slinear, l.oz);
-    l.snx = _mm512_mask_add_pd(l.snx, onX, l.snx, l.dx);
-    l.sny = _mm512_mask_add_pd(l.sny, onY, l.sny, l.dy);
-    l.snz = _mm512_mask_add_pd(l.snz, onZ, l.snz, l.dz);
+    cross(l, nextCrossing(l.snx, l.sny, l.snz), 0xff, l.snx, l.sny, l.snz, l.slinear);
 }
 
 template <class T, bool Prefetch>
@@ -175,28 +193,17 @@ FM_AVX512 inline void load(Lanes& l, const T* values, __m256i lastIndex,
 // One step of every active lane: walkDense's loop body.
 template <class T, bool Prefetch>
 FM_AVX512 inline void step(Lanes& l, const T* values, __m256i lastIndex) {
-    // The axis of the smallest next crossing, ties to the later axis (as walkDense).
-    const __m512d nextMin = _mm512_min_pd(l.nx, _mm512_min_pd(l.ny, l.nz));
-    const __mmask8 onZ = _mm512_cmp_pd_mask(l.nz, nextMin, _CMP_EQ_OQ);
-    const __mmask8 onY =
-        _mm512_mask_cmp_pd_mask(static_cast<__mmask8>(~onZ), l.ny, nextMin, _CMP_EQ_OQ);
-    const __m512d aNext = _mm512_min_pd(nextMin, l.aEnd);
+    const Crossing c = nextCrossing(l.nx, l.ny, l.nz);
+    const __m512d aNext = _mm512_min_pd(c.nextMin, l.aEnd);
     // Segments never run backwards (walkDense), so no test for a positive length.
     l.acc = _mm512_mask_add_pd(l.acc, l.active, l.acc,
                                _mm512_mul_pd(_mm512_sub_pd(aNext, l.alpha), l.value));
     l.alpha = aNext;
     // Done: the next crossing is at or beyond the end, or no step is left.
-    l.active = _mm512_mask_cmp_pd_mask(l.active, nextMin, l.aEnd, _CMP_LT_OQ) &
+    l.active = _mm512_mask_cmp_pd_mask(l.active, c.nextMin, l.aEnd, _CMP_LT_OQ) &
                _mm256_test_epi32_mask(l.steps, l.steps);
     l.steps = _mm256_mask_sub_epi32(l.steps, l.active, l.steps, _mm256_set1_epi32(1));
-    const __mmask8 sz = l.active & onZ, sy = l.active & onY,
-                   sx = l.active & static_cast<__mmask8>(~(onZ | onY));
-    l.linear = _mm256_mask_add_epi32(l.linear, sx, l.linear, l.ox);
-    l.linear = _mm256_mask_add_epi32(l.linear, sy, l.linear, l.oy);
-    l.linear = _mm256_mask_add_epi32(l.linear, sz, l.linear, l.oz);
-    l.nx = _mm512_mask_add_pd(l.nx, sx, l.nx, l.dx);
-    l.ny = _mm512_mask_add_pd(l.ny, sy, l.ny, l.dy);
-    l.nz = _mm512_mask_add_pd(l.nz, sz, l.nz, l.dz);
+    cross(l, c, l.active, l.nx, l.ny, l.nz, l.linear);
     if constexpr (Prefetch) {
         shadowStep(l);
         prefetchLanes(values, l.slinear);
