@@ -99,7 +99,9 @@ Bytes readFilePrefix(const fs::path& path, std::size_t maxLength) {
     return bytes;
 }
 
-Bytes readFileRange(const fs::path& path, std::uintmax_t offset, std::size_t length) {
+namespace {
+
+void checkRange(const fs::path& path, std::uintmax_t offset, std::size_t length) {
     const std::uintmax_t size = fileSize(path);
     if (offset > size || length > size - offset) {
         std::ostringstream msg;
@@ -107,6 +109,28 @@ Bytes readFileRange(const fs::path& path, std::uintmax_t offset, std::size_t len
             << " bytes of data at byte " << offset << " but the file has only " << size << " bytes";
         throw Error(msg.str());
     }
+}
+
+}  // namespace
+
+void readFileRangeStreamed(const fs::path& path, std::uintmax_t offset, std::size_t length,
+                           const std::function<void(const std::uint8_t*, std::size_t)>& consume) {
+    checkRange(path, offset, length);
+    std::ifstream in = openForReading(path);
+    in.seekg(static_cast<std::streamoff>(offset));
+    Bytes piece(std::min<std::size_t>(length, std::size_t{4} << 20));
+    for (std::size_t done = 0; done < length;) {
+        const std::size_t n = std::min(piece.size(), length - done);
+        in.read(reinterpret_cast<char*>(piece.data()), static_cast<std::streamsize>(n));
+        if (!in || static_cast<std::size_t>(in.gcount()) != n)
+            throw Error("cannot read " + quoted(path) + ": read failed");
+        consume(piece.data(), n);
+        done += n;
+    }
+}
+
+Bytes readFileRange(const fs::path& path, std::uintmax_t offset, std::size_t length) {
+    checkRange(path, offset, length);
     std::ifstream in = openForReading(path);
     in.seekg(static_cast<std::streamoff>(offset));
     Bytes bytes(length);

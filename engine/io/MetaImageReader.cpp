@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <sstream>
 
 #include "core/Error.h"
@@ -185,22 +186,32 @@ Volume readMetaImage(const fs::path& path) {
                     " files, the dimensions need " + std::to_string(expectedFiles));
 
     const bool local = files.size() == 1 && files[0] == path;
+    const std::size_t perFile = totalBytes / files.size();
+    // Where a file's samples start: after the header in the .mha itself, after HeaderSize bytes
+    // in a data file, or (HeaderSize -1) the last perFile bytes of it.
+    auto dataOffset = [&](const fs::path& file) {
+        std::uintmax_t offset =
+            local ? dataStart : static_cast<std::uintmax_t>(std::max<long long>(headerSize, 0));
+        if (!local && headerSize == -1 && !compressed) {
+            const std::uintmax_t size = fileSize(file);
+            if (size < perFile)
+                throw Error(quoted(file) + " is truncated: " + std::to_string(perFile) +
+                            " bytes of data expected, the file has " + std::to_string(size));
+            offset = size - perFile;
+        }
+        return offset;
+    };
+    const bool swapBytes = msb == hostIsLittleEndian();
     Bytes raw;
     std::string asciiText;
-    if (binary) {
-        const std::size_t perFile = totalBytes / files.size();
+    std::optional<Volume> streamed;
+    if (binary && !compressed && files.size() == 1) {
+        // The usual case: one uncompressed run of samples, converted as it is read.
+        streamed = volumeFromFile(dims, files[0], dataOffset(files[0]), type, swapBytes, what);
+    } else if (binary) {
         raw.reserve(std::min<std::size_t>(totalBytes, 1 << 26));
         for (const fs::path& file : files) {
-            std::uintmax_t offset =
-                local ? dataStart : static_cast<std::uintmax_t>(std::max<long long>(headerSize, 0));
-            if (!local && headerSize == -1 && !compressed) {
-                const std::uintmax_t size = fileSize(file);
-                if (size < perFile)
-                    throw Error(quoted(file) + " is truncated: " + std::to_string(perFile) +
-                                " bytes of data expected, the file has " + std::to_string(size));
-                offset = size - perFile;
-            }
-            const Bytes part = readSampleBytes(file, offset, perFile, compressed);
+            const Bytes part = readSampleBytes(file, dataOffset(file), perFile, compressed);
             raw.insert(raw.end(), part.begin(), part.end());
         }
     } else {
@@ -215,8 +226,9 @@ Volume readMetaImage(const fs::path& path) {
         }
     }
 
-    Volume v = binary ? volumeFromRaw(dims, raw, 0, type, msb == hostIsLittleEndian(), what)
-                      : volumeFromText(dims, asciiText, what);
+    Volume v = streamed ? std::move(*streamed)
+               : binary ? volumeFromRaw(dims, raw, 0, type, swapBytes, what)
+                        : volumeFromText(dims, asciiText, what);
     v.spacing = spacing;
     v.origin = origin;
     v.direction = direction;

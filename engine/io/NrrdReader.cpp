@@ -395,6 +395,7 @@ Volume readNrrd(const fs::path& path) {
     const std::size_t perFile = totalBytes / files.size();
     Bytes raw;
     std::string asciiText;
+    std::optional<Volume> streamed;
     for (const fs::path& file : files) {
         std::uintmax_t offset = attached ? attachedStart : 0;
         offset = skipLines(file, offset, lineSkip);
@@ -407,6 +408,11 @@ Volume readNrrd(const fs::path& path) {
                 offset = size - perFile;
             } else {
                 offset += static_cast<std::uintmax_t>(byteSkip);
+            }
+            if (files.size() == 1) {
+                // The usual case: one run of raw samples, converted as it is read.
+                streamed = volumeFromFile(dims, file, offset, type, swap, what);
+                break;
             }
             const Bytes part = readFileRange(file, offset, perFile);
             raw.insert(raw.end(), part.begin(), part.end());
@@ -425,8 +431,9 @@ Volume readNrrd(const fs::path& path) {
         }
     }
 
-    Volume v = enc == Encoding::Ascii ? volumeFromText(dims, asciiText, what)
-                                      : volumeFromRaw(dims, raw, 0, type, swap, what);
+    Volume v = streamed                  ? std::move(*streamed)
+               : enc == Encoding::Ascii ? volumeFromText(dims, asciiText, what)
+                                        : volumeFromRaw(dims, raw, 0, type, swap, what);
     v.spacing = geometry.spacing;
     v.direction = geometry.direction;
     v.origin = geometry.origin;

@@ -59,6 +59,28 @@ Volume volumeFromRaw(glm::ivec3 dims, const Bytes& raw, std::size_t offset, Scal
     return v;
 }
 
+Volume volumeFromFile(glm::ivec3 dims, const std::filesystem::path& path, std::uintmax_t offset,
+                      ScalarType type, bool swapBytes, const std::string& what) {
+    checkedDims(dims.x, dims.y, dims.z, what);
+    const std::size_t sample = scalarSize(type);
+    const std::size_t need = rawByteCount(dims, type);
+    Volume v = Volume::allocate(dims);
+    std::size_t converted = 0, overflowed = 0;
+    // Pieces are 4 MiB (a multiple of every sample size) but the last: no sample is split.
+    readFileRangeStreamed(path, offset, need, [&](const std::uint8_t* data, std::size_t size) {
+        const std::size_t count = size / sample;
+        overflowed += convertToFloat(data, count, type, swapBytes, v.values.data() + converted);
+        converted += count;
+    });
+    if (overflowed > 0) {
+        std::ostringstream msg;
+        msg << what << ": " << overflowed << " of " << v.voxelCount() << " " << toString(type)
+            << " samples fall outside float range";
+        throw Error(msg.str());
+    }
+    return v;
+}
+
 Bytes readSampleBytes(const std::filesystem::path& path, std::uintmax_t offset, std::size_t length,
                       bool compressed) {
     if (!compressed) return readFileRange(path, offset, length);

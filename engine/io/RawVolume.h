@@ -22,6 +22,12 @@ Volume volumeFromRaw(glm::ivec3 dims, const Bytes& raw, std::size_t offset, Scal
                      bool swapBytes, const std::string& what, double slope = 1.0,
                      double intercept = 0.0);
 
+// The same from the samples at `offset` of an uncompressed file, read and converted piece by
+// piece (no copy of all the raw bytes beside the volume); fm::Error naming the file when it is
+// shorter than the samples need.
+Volume volumeFromFile(glm::ivec3 dims, const std::filesystem::path& path, std::uintmax_t offset,
+                      ScalarType type, bool swapBytes, const std::string& what);
+
 // Reads `length` sample bytes at `offset` of `path`; when `compressed`, the bytes from `offset`
 // on are a gzip/zlib stream inflated to at most `length` bytes. fm::Error naming the file when
 // fewer bytes are there than promised.

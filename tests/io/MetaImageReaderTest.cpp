@@ -93,6 +93,26 @@ TEST(MetaImageReader, EveryElementTypeBothByteOrdersCompressedOrNot) {
             }
 }
 
+// Uncompressed samples are read and converted in 4 MiB pieces (volumeFromFile): 2.25 M
+// samples are two pieces of int16 and five of double, the last one partial, in both byte orders.
+TEST(MetaImageReader, SamplesSpanningSeveralReadPiecesConvertExactly) {
+    const fs::path dir = fm::test::scratchDir("mha_pieces");
+    for (ScalarType type : {ScalarType::I16, ScalarType::F64})
+        for (bool msb : {false, true}) {
+            MetaSpec s;
+            s.type = type;
+            s.msb = msb;
+            s.dims = "160 128 110";
+            s.values = fm::test::sampleValues(type, 160 * 128 * 110);
+            const fs::path p = dir / "big.mha";
+            fm::test::writeFile(p, s.bytes());
+            SCOPED_TRACE(std::string(metType(type)) + (msb ? " msb" : ""));
+            const fm::Volume v = fm::readVolume(p);
+            EXPECT_EQ(v.dims, glm::ivec3(160, 128, 110));
+            expectValues(v, s.values);
+        }
+}
+
 TEST(MetaImageReader, GeometryIsLpsAsWritten) {
     const fs::path dir = fm::test::scratchDir("mha_geometry");
     MetaSpec s;
