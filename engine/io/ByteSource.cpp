@@ -99,9 +99,7 @@ Bytes readFilePrefix(const fs::path& path, std::size_t maxLength) {
     return bytes;
 }
 
-namespace {
-
-void checkRange(const fs::path& path, std::uintmax_t offset, std::size_t length) {
+void checkFileRange(const fs::path& path, std::uintmax_t offset, std::size_t length) {
     const std::uintmax_t size = fileSize(path);
     if (offset > size || length > size - offset) {
         std::ostringstream msg;
@@ -111,11 +109,9 @@ void checkRange(const fs::path& path, std::uintmax_t offset, std::size_t length)
     }
 }
 
-}  // namespace
-
 void readFileRangeStreamed(const fs::path& path, std::uintmax_t offset, std::size_t length,
                            const std::function<void(const std::uint8_t*, std::size_t)>& consume) {
-    checkRange(path, offset, length);
+    checkFileRange(path, offset, length);
     std::ifstream in = openForReading(path);
     in.seekg(static_cast<std::streamoff>(offset));
     Bytes piece(std::min<std::size_t>(length, std::size_t{4} << 20));
@@ -130,7 +126,7 @@ void readFileRangeStreamed(const fs::path& path, std::uintmax_t offset, std::siz
 }
 
 Bytes readFileRange(const fs::path& path, std::uintmax_t offset, std::size_t length) {
-    checkRange(path, offset, length);
+    checkFileRange(path, offset, length);
     std::ifstream in = openForReading(path);
     in.seekg(static_cast<std::streamoff>(offset));
     Bytes bytes(length);

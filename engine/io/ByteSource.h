@@ -38,12 +38,16 @@ Bytes readFilePrefix(const std::filesystem::path& path, std::size_t maxLength);
 // shorter. The file size is checked before anything is allocated.
 Bytes readFileRange(const std::filesystem::path& path, std::uintmax_t offset, std::size_t length);
 
+// readFileRange's check alone: fm::Error naming the file and both sizes when it holds fewer
+// than `length` bytes at `offset`.
+void checkFileRange(const std::filesystem::path& path, std::uintmax_t offset, std::size_t length);
+
 // The same bytes handed to `consume` in pieces of at most 4 MiB, in order (same checks and
 // messages): for readers that convert samples as they arrive instead of holding all the raw
 // bytes next to the volume.
-void readFileRangeStreamed(const std::filesystem::path& path, std::uintmax_t offset,
-                           std::size_t length,
-                           const std::function<void(const std::uint8_t* data, std::size_t size)>& consume);
+void readFileRangeStreamed(
+    const std::filesystem::path& path, std::uintmax_t offset, std::size_t length,
+    const std::function<void(const std::uint8_t* data, std::size_t size)>& consume);
 
 bool hasGzipMagic(const std::uint8_t* data, std::size_t size);
 bool fileHasGzipMagic(const std::filesystem::path& path);

@@ -64,6 +64,7 @@ Volume volumeFromFile(glm::ivec3 dims, const std::filesystem::path& path, std::u
     checkedDims(dims.x, dims.y, dims.z, what);
     const std::size_t sample = scalarSize(type);
     const std::size_t need = rawByteCount(dims, type);
+    checkFileRange(path, offset, need);  // before allocating what the header promises
     Volume v = Volume::allocate(dims);
     std::size_t converted = 0, overflowed = 0;
     // Pieces are 4 MiB (a multiple of every sample size) but the last: no sample is split.

@@ -23,8 +23,8 @@ Volume volumeFromRaw(glm::ivec3 dims, const Bytes& raw, std::size_t offset, Scal
                      double intercept = 0.0);
 
 // The same from the samples at `offset` of an uncompressed file, read and converted piece by
-// piece (no copy of all the raw bytes beside the volume); fm::Error naming the file when it is
-// shorter than the samples need.
+// piece (no copy of all the raw bytes beside the volume); fm::Error naming the file, before
+// anything is allocated, when it is shorter than the samples need.
 Volume volumeFromFile(glm::ivec3 dims, const std::filesystem::path& path, std::uintmax_t offset,
                       ScalarType type, bool swapBytes, const std::string& what);
 
