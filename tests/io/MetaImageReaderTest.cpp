@@ -234,6 +234,10 @@ TEST(MetaImageReader, RejectsBadFiles) {
     check(absurd, "absurd.mha", "exceed the supported maximum");
     absurd.dims = "300 300 300";  // allowed size, but the file holds 120 bytes
     check(absurd, "promised.mha", "truncated");
+    // Just under the voxel limit (4 GB of floats): refused from the file size, before the volume
+    // is allocated.
+    absurd.dims = "1024 1024 1000";
+    check(absurd, "promised_huge.mha", "truncated");
     absurd.dims = "3 -4 5";
     check(absurd, "negative.mha", "positive integers");
     MetaSpec count;
