@@ -1,5 +1,7 @@
 #include "common/TestData.h"
 
+#include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <string>
 
@@ -28,10 +30,14 @@ std::filesystem::path scratchDir(const std::string& name) {
     auto dir = std::filesystem::path(FM_BINARY_DIR) / "test-scratch" / name;
     // One folder per test: ctest runs the tests of a fixture in parallel processes, and two of
     // them emptying the same folder raced (MeshTrialInput's t.json, seen once in 746 tests).
+    // Named by a hash of the test's suite and name, 8 hex digits: the whole name made a socket
+    // path too long for sun_path (108 bytes) in AtomicFile's test.
     if (const auto* test = ::testing::UnitTest::GetInstance()->current_test_info()) {
-        std::string id = std::string(test->test_suite_name()) + "." + test->name();
-        for (char& c : id)
-            if (c == '/') c = '_';
+        std::uint32_t hash = 2166136261u;  // FNV-1a: the same folder for a test on every run
+        for (const char* p : {test->test_suite_name(), ".", test->name()})
+            for (; *p; ++p) hash = (hash ^ static_cast<unsigned char>(*p)) * 16777619u;
+        char id[9];
+        std::snprintf(id, sizeof id, "%08x", hash);
         dir /= id;
     }
     std::filesystem::remove_all(dir);

@@ -14,7 +14,7 @@ bool underCI();
 // True when the shared data is the one beside the repository (../shared/data), as the shipped
 // trials (data/trials/) name it.
 bool sharedDataBesideRepo();
-// A fresh scratch folder for one test (under the build tree, named `name` and then the running
+// A fresh scratch folder for one test (under the build tree: `name`, then a hash of the running
 // test's suite and name, so tests running in parallel never share one), emptied on creation.
 std::filesystem::path scratchDir(const std::string& name);
 
