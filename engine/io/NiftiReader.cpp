@@ -87,13 +87,7 @@ Volume inflateVolume(const fs::path& dataPath, std::size_t dataOffset, glm::ivec
         });
     if (produced < dataOffset + dataBytes)
         throw Error(truncatedMessage(dataPath, dataBytes, type, dataOffset, produced));
-    if (overflowed > 0) {
-        std::ostringstream msg;
-        msg << what << ": " << overflowed << " of " << v.voxelCount() << " " << toString(type)
-            << " samples fall outside float range once rescaled (slope " << slope
-            << ", intercept " << intercept << "): the header's scaling is absurd";
-        throw Error(msg.str());
-    }
+    refuseOverflow(overflowed, v.voxelCount(), type, slope, intercept, what);
     return v;
 }
 

@@ -36,6 +36,16 @@ std::size_t rawByteCount(glm::ivec3 dims, ScalarType type) {
            static_cast<std::size_t>(dims.z) * scalarSize(type);
 }
 
+void refuseOverflow(std::size_t overflowed, std::size_t count, ScalarType type, double slope,
+                    double intercept, const std::string& what) {
+    if (overflowed == 0) return;
+    std::ostringstream msg;
+    msg << what << ": " << overflowed << " of " << count << " " << toString(type)
+        << " samples fall outside float range once rescaled (slope " << slope << ", intercept "
+        << intercept << "): the header's scaling is absurd";
+    throw Error(msg.str());
+}
+
 Volume volumeFromRaw(glm::ivec3 dims, const Bytes& raw, std::size_t offset, ScalarType type,
                      bool swapBytes, const std::string& what, double slope, double intercept) {
     checkedDims(dims.x, dims.y, dims.z, what);
@@ -49,13 +59,7 @@ Volume volumeFromRaw(glm::ivec3 dims, const Bytes& raw, std::size_t offset, Scal
     Volume v = Volume::allocate(dims);
     const std::size_t overflowed = convertToFloat(raw.data() + offset, v.voxelCount(), type,
                                                   swapBytes, v.values.data(), slope, intercept);
-    if (overflowed > 0) {
-        std::ostringstream msg;
-        msg << what << ": " << overflowed << " of " << v.voxelCount() << " " << toString(type)
-            << " samples fall outside float range once rescaled (slope " << slope
-            << ", intercept " << intercept << "): the header's scaling is absurd";
-        throw Error(msg.str());
-    }
+    refuseOverflow(overflowed, v.voxelCount(), type, slope, intercept, what);
     return v;
 }
 
@@ -73,12 +77,7 @@ Volume volumeFromFile(glm::ivec3 dims, const std::filesystem::path& path, std::u
         overflowed += convertToFloat(data, count, type, swapBytes, v.values.data() + converted);
         converted += count;
     });
-    if (overflowed > 0) {
-        std::ostringstream msg;
-        msg << what << ": " << overflowed << " of " << v.voxelCount() << " " << toString(type)
-            << " samples fall outside float range";
-        throw Error(msg.str());
-    }
+    refuseOverflow(overflowed, v.voxelCount(), type, 1.0, 0.0, what);
     return v;
 }
 

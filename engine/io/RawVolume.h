@@ -17,6 +17,11 @@ glm::ivec3 checkedDims(long long nx, long long ny, long long nz, const std::stri
 // Bytes needed for dims of `type`.
 std::size_t rawByteCount(glm::ivec3 dims, ScalarType type);
 
+// fm::Error when `overflowed` of `count` samples left float range in convertToFloat (the one
+// message of every binary reader).
+void refuseOverflow(std::size_t overflowed, std::size_t count, ScalarType type, double slope,
+                    double intercept, const std::string& what);
+
 // Allocates a volume of `dims` and converts raw[offset ...] (checked to hold enough bytes).
 Volume volumeFromRaw(glm::ivec3 dims, const Bytes& raw, std::size_t offset, ScalarType type,
                      bool swapBytes, const std::string& what, double slope = 1.0,
