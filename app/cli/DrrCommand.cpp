@@ -346,7 +346,8 @@ FM_REGISTER_COMMAND("drr", 20, [](CLI::App& app) {
                     "geometry JSON per line; outputs numbered (drr_000.png, ...)");
     cmd->add_option("--angles", a->angles,
                     "Azimuth sweep from --pose: this many views (plastimatch drr -a); outputs "
-                    "numbered");
+                    "numbered")
+        ->check(CLI::Range(1, 100000));  // "--angles 0" is refused, never read as "not given"
     cmd->add_option("--angle-step", a->angleStep,
                     "Degrees between the views of --angles (plastimatch drr -N; default 360 / N)");
     cmd->add_option("--threshold", a->thresholdHU,

@@ -37,6 +37,7 @@ Range rangeOf(const fm::Image& img, const fm::Mask* valid) {
 }
 
 void runRadiograph(const RadiographArgs& a) {
+    fm::cli::checkPageApplies(a.image, a.page);
     const fm::RadiographFile file = fm::readRadiograph(a.image, a.page);
     for (const auto& w : file.warnings) std::fprintf(stderr, "warning: %s: %s\n", a.image.c_str(), w.c_str());
     if (!a.camera.empty()) {
@@ -76,7 +77,7 @@ FM_REGISTER_COMMAND("radiograph", 35, [](CLI::App& app) {
                       "PNG of the prepared image and of its valid pixels");
     auto args = std::make_shared<RadiographArgs>();
     cmd->add_option("image", args->image, "X-ray frame (.tif/.tiff, .png, .jpg)")->required();
-    cmd->add_option("--page", args->page, "Page of a multi-page TIFF (0-based)");
+    fm::cli::addPageOption(cmd, args->page, "Page of a multi-page TIFF (0-based)");
     fm::cli::addRadiographOptions(cmd, args->prep);
     cmd->add_option("--camera", args->camera, "Calibration whose image size the radiograph must have");
     cmd->add_option("--out", args->out, "Write the prepared image as PNG (valid pixels windowed to their range)");

@@ -12,7 +12,7 @@ namespace fm::cli {
 struct RadiographOptions {
     bool invert = false;
     bool log = false;
-    double i0 = 0.0;
+    std::string i0;  // number > 0; empty = the full scale
     std::string excludeBelow;  // number; empty = keep every pixel
     int erode = 3;
     std::string roi;  // "x,y,w,h"
@@ -20,6 +20,11 @@ struct RadiographOptions {
 
 // Adds --invert, --log, --i0, --exclude-below, --erode, --roi.
 void addRadiographOptions(CLI::App* cmd, RadiographOptions& options);
+
+// --page: the 0-based page of a multi-page TIFF (-1 = not given).
+void addPageOption(CLI::App* cmd, int& page, const std::string& help);
+// --page applies to TIFF files only: refused (naming the file) for a PNG or JPEG.
+void checkPageApplies(const std::string& image, int page);
 
 // The preparation the flags describe for a file of `bitsPerSample` (full scale 2^bits - 1).
 // Throws fm::Error naming the flag for malformed values.

@@ -17,6 +17,7 @@
 #include "scene/MeshXrayModel.h"
 #include "scene/ObjectPoseParameterization.h"
 #include "xray/CameraPoseDifference.h"
+#include "xray/ModelCoverage.h"
 #include "xray/ObjectRegistration.h"
 #include "xray/PoseSpec.h"
 
@@ -50,7 +51,7 @@ void addXrayRegisterOptions(CLI::App* cmd, XrayRegisterArgs& a) {
     cmd->add_option("--mask", a.masks,
                     "Label mask per model (binary image): the silhouette IoU is reported");
     cmd->add_option("--mu", a.mu, "Model attenuation 1/mm (default 1.2, cobalt-chromium)");
-    cmd->add_option("--page", a.page, "Page of a multi-page TIFF reference (0-based)");
+    addPageOption(cmd, a.page, "Page of a multi-page TIFF reference (0-based)");
     addRadiographOptions(cmd, a.prep);
 }
 
@@ -72,6 +73,7 @@ void runXrayRegister(const std::string& reference, const XrayRegisterArgs& a,
         checkPoseOutput(outPaths.back(), a.frame);
     }
 
+    checkPageApplies(reference, a.page);
     const RadiographFile file = readRadiograph(reference, a.page);
     for (const auto& w : file.warnings)
         std::fprintf(stderr, "warning: %s: %s\n", reference.c_str(), w.c_str());
@@ -92,12 +94,21 @@ void runXrayRegister(const std::string& reference, const XrayRegisterArgs& a,
     for (std::size_t k = 0; k < n; ++k) {
         const MeshModel model = loadMeshModel(a.models[k]);
         const double mu = a.mu > 0.0 ? a.mu : kMuCobaltChromePerMm;
-        auto xray = std::make_shared<MeshXrayModel>(prepareMeshDrr(model), mu,
-                                                    std::filesystem::path(a.models[k]).stem().string());
+        // Models are told apart by position: the same file name twice gets implant, implant_2.
+        const std::string name =
+            uniqueObjectName(scene, std::filesystem::path(a.models[k]).stem().string());
+        auto xray = std::make_shared<MeshXrayModel>(prepareMeshDrr(model), mu, name);
         const std::string& spec = perModel(starts, k, n, "--start");
         startPoses.push_back(readPoseSpec(spec, a.frame, starts.size() == n ? 0 : k));
-        scene.objects.push_back({std::filesystem::path(a.models[k]).stem().string(), xray,
-                                 startPoses.back(), true});
+        scene.objects.push_back({name, xray, startPoses.back(), true});
+    }
+    // A start that covers no valid pixel leaves the search blind: refused with the numbers.
+    for (std::size_t k = 0; k < n; ++k) {
+        const std::string blind = blindness(
+            modelCoverage(scene.objects[k], scene.cameras[0], prepared.valid, search.threads));
+        if (!blind.empty())
+            throw Error(a.models[k] + " at its start " + formatPoseSpec(startPoses[k]) + " (" +
+                        perModel(starts, k, n, "--start") + ", camera " + a.camera + ") " + blind);
     }
     SearchArgs given = search;
     if (!similarityGiven) given.similarity = toString(SimilarityMeasure::EdgeDistance);
@@ -135,6 +146,7 @@ void runXrayRegister(const std::string& reference, const XrayRegisterArgs& a,
     }
     const double wallSeconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    std::vector<std::string> lost;
     for (std::size_t k = 0; k < n; ++k) {
         SceneObject& object = scene.objects[k];
         const ObjectRegistrationResult& r = results[k];
@@ -161,6 +173,15 @@ void runXrayRegister(const std::string& reference, const XrayRegisterArgs& a,
         }
         std::printf("time        %.3f s (%d evaluations)%s\n", r.seconds, r.evaluations,
                     r.stopped ? " (stopped)" : "");
+        // The search may have walked off the image: a pose with nothing under it is not an
+        // answer and is not written.
+        const std::string blind =
+            blindness(modelCoverage(object, scene.cameras[0], prepared.valid, search.threads));
+        if (!blind.empty()) {
+            std::printf("verdict     lost: the final pose %s\n", blind.c_str());
+            lost.push_back(a.models[k]);
+            continue;
+        }
         if (!a.outs.empty()) {
             const std::string& out = outPaths[k];
             writePoseSpec(out, a.frame, a.outs.size() == n ? 0 : k, r.worldFromObject);
@@ -170,6 +191,11 @@ void runXrayRegister(const std::string& reference, const XrayRegisterArgs& a,
     if (n > 1)
         std::printf("\ntotal time  %.3f s for %zu models (%s)\n", wallSeconds, n,
                     sideBySide ? "side by side" : "one after the other");
+    if (!lost.empty()) {
+        std::string names;
+        for (const std::string& m : lost) names += (names.empty() ? "" : ", ") + m;
+        throw Error("lost (nothing written for it): " + names);
+    }
 }
 
 }  // namespace fm::cli

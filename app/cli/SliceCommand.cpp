@@ -9,6 +9,8 @@
 #include "cli/SliceCli.h"
 #include "cli/VolumeOption.h"
 #include "core/Error.h"
+#include "io/ImageFileWriter.h"
+#include "io/OutputPath.h"
 #include "io/PngWriter.h"
 #include "io/VolumeWriter.h"
 #include "slice/SliceSampler.h"
@@ -29,6 +31,12 @@ void runSlice(const SliceArgs& a) {
     if (a.out.empty() && a.raw.empty() && a.mask.empty())
         throw fm::Error("nothing to write: give --out slice.png, --raw slice.mha and/or --mask m.png");
     if (a.threads < 0) throw fm::Error("--threads must be 0 (all cores) or more");
+    // Every output is checked before the volume is read: --raw holds exact values (a PNG's 8
+    // bits cannot), and each folder must take the file.
+    if (!a.raw.empty()) fm::checkExactImagePath(a.raw, "--raw");
+    fm::io::checkOutputPath(a.out, "--out");
+    fm::io::checkOutputPath(a.raw, "--raw");
+    fm::io::checkOutputPath(a.mask, "--mask");
     const fm::Pose pose = fm::parsePose(a.pose);
     const fm::SliceInterpolation interpolation = fm::parseSliceInterpolation(a.interpolation);
     const auto t0 = std::chrono::steady_clock::now();
@@ -65,7 +73,7 @@ void runSlice(const SliceArgs& a) {
         std::printf("wrote     %s (window %.6g .. %.6g)\n", a.out.c_str(), w.low, w.high);
     }
     if (!a.raw.empty()) {
-        fm::writeImage(s.image, a.raw);
+        fm::writeExactImage(s.image, a.raw);
         std::printf("wrote     %s (%s values, 0 where there is no data)\n", a.raw.c_str(),
                     fm::toString(interpolation));
     }
@@ -95,7 +103,7 @@ FM_REGISTER_COMMAND("slice", 25, [](CLI::App& app) {
     cmd->add_option("--interpolation", a->interpolation, "linear (trilinear) or cubic (B-spline)")
         ->capture_default_str();
     cmd->add_option("--out", a->out, "PNG to write (windowed; no-data pixels black)");
-    cmd->add_option("--raw", a->raw, "Exact float values: .mha, .nii or .nii.gz (row 0 first)");
+    cmd->add_option("--raw", a->raw, "Exact float values: .tif (float32), .mha, .nii or .nii.gz (row 0 first)");
     cmd->add_option("--mask", a->mask, "Data mask: .png (white = data) or .mha/.nii");
     cmd->add_option("--threads", a->threads, "Threads (0 = all cores)")->capture_default_str();
     cmd->callback([a] { runSlice(*a); });

@@ -10,16 +10,22 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <map>
 #include <memory>
+#include <set>
 #include <sstream>
 #include <string>
 
+#include "cli/CameraList.h"
 #include "cli/CommandRegistry.h"
+#include "cli/NumberChecks.h"
+#include "cli/TrackCsv.h"
 #include "core/Error.h"
 #include "distributed/JobRunner.h"
 #include "distributed/ProcessTransport.h"
 #include "io/AtomicFile.h"
 #include "io/ByteSource.h"
+#include "io/OutputPath.h"
 #include "pose/AutoscoperTra.h"
 #include "track/FrameRecordBytes.h"
 #include "track/SegmentTracking.h"
@@ -51,43 +57,6 @@ fs::path outFor(const fs::path& out, const std::string& bone, bool several) {
     return out.parent_path() / (out.stem().string() + "_" + bone + out.extension().string());
 }
 
-std::vector<std::size_t> parseCameras(const std::string& text, std::size_t count) {
-    std::vector<std::size_t> out;
-    if (text.empty()) return out;
-    std::stringstream in(text);
-    std::string item;
-    while (std::getline(in, item, ',')) {
-        char* end = nullptr;
-        const long v = std::strtol(item.c_str(), &end, 10);
-        if (item.empty() || *end != '\0' || v < 1 || static_cast<std::size_t>(v) > count)
-            throw fm::Error("--cameras must list camera numbers 1.." + std::to_string(count) +
-                            ", not '" + text + "'");
-        out.push_back(static_cast<std::size_t>(v - 1));
-    }
-    return out;
-}
-
-std::string csvHeader(std::size_t cameras) {
-    std::string h = "frame,bone,status,cameras_used";
-    for (std::size_t c = 0; c < cameras; ++c) h += ",cost_cam" + std::to_string(c + 1);
-    return h + ",evaluations,time_ms,note\n";
-}
-
-std::string csvRow(const fm::FrameRecord& r, const std::string& bone) {
-    char buf[64];
-    std::string row = std::to_string(r.frame) + "," + bone + "," + fm::toString(r.status) + "," +
-                      std::to_string(r.camerasUsed);
-    for (double c : r.viewCost) {
-        std::snprintf(buf, sizeof buf, ",%.6f", c);
-        row += std::isnan(c) ? std::string(",") : std::string(buf);
-    }
-    std::snprintf(buf, sizeof buf, ",%d,%.1f,", r.evaluations, 1000.0 * r.seconds);
-    std::string note = r.note;
-    for (char& ch : note)
-        if (ch == ',' || ch == '\n') ch = ';';
-    return row + buf + note + "\n";
-}
-
 // One bone's inputs (the same on every rank) and, on rank 0, what has been found so far.
 struct BoneRun {
     std::string name;
@@ -97,6 +66,7 @@ struct BoneRun {
     std::size_t todo = 0;                 // frames to track in this run
     fm::TraFile tra;                      // rank 0: one row per trial frame
     std::map<int, fm::FrameRecord> rows;  // rank 0: this run's frames, by tracking position
+    std::map<int, std::string> keptRows;  // rank 0, --resume: CSV rows of `done` frames, by frame
 };
 
 // A job: one segment of one bone; its record holds the segment's frames (a count, then one
@@ -143,7 +113,37 @@ std::map<int, fm::RigidTransform> resumedFrames(const fm::TrialScene& scene,
     return poses;
 }
 
+// Every output is checked before any work (a long run must not end in "cannot write"): each
+// bone's .tra and the CSV are distinct files in writable folders.
+void checkTrackOutputs(const TrackArgs& a) {
+    for (std::size_t i = 0; i < a.bones.size(); ++i)
+        for (std::size_t j = 0; j < i; ++j)
+            if (a.bones[i] == a.bones[j])
+                throw fm::Error("--bone " + a.bones[i] + " is given twice");
+    if (fs::path(a.out).extension() != ".tra")
+        throw fm::Error("--out " + fm::io::quoted(a.out) +
+                        ": the result is an Autoscoper .tra; name it NAME.tra (the per-frame rows "
+                        "go to --csv)");
+    const auto same = [](const fs::path& x, const fs::path& y) {
+        std::error_code ec;
+        return fs::weakly_canonical(fs::absolute(x), ec) == fs::weakly_canonical(fs::absolute(y), ec);
+    };
+    for (const std::string& bone : a.bones) {
+        const fs::path out = outFor(a.out, bone, a.bones.size() > 1);
+        fm::io::checkOutputPath(out, "--out");
+        if (!a.csv.empty() && same(out, a.csv))
+            throw fm::Error("--csv " + fm::io::quoted(a.csv) + " is the same file as the .tra of " +
+                            bone + " (--out); give them different names");
+        if (!a.start.empty() && same(out, a.start) && !a.resume)
+            throw fm::Error("--out " + fm::io::quoted(out) +
+                            " is the --start file: it would be overwritten (use another --out, "
+                            "or --resume to continue it)");
+    }
+    fm::io::checkOutputPath(a.csv, "--csv");
+}
+
 void runTrack(const TrackArgs& a) {
+    checkTrackOutputs(a);
     fm::distributed::Transport& transport = fm::distributed::processTransport();
     const bool writer = transport.rank() == 0;
     if (!writer) fm::distributed::silenceStandardOutput();
@@ -160,7 +160,7 @@ void runTrack(const TrackArgs& a) {
     if (writer)
         for (const std::string& w : scene.trial.warnings)
             std::fprintf(stderr, "warning: %s\n", w.c_str());
-    const std::vector<std::size_t> cameras = parseCameras(a.cameras, scene.cameras.size());
+    const std::vector<std::size_t> cameras = fm::cli::parseCameraList(a.cameras, scene.cameras.size());
     const std::vector<int> frames = fm::parseFrameRange(
         a.frames.empty() ? "0:" + std::to_string(scene.frameCount - 1) : a.frames, scene.frameCount,
         a.reverse);
@@ -185,6 +185,11 @@ void runTrack(const TrackArgs& a) {
         b.out = outFor(a.out, b.name, several);
         b.tra.frames.assign(static_cast<std::size_t>(scene.frameCount), {std::nullopt});
         if (a.resume && fs::exists(b.out)) b.done = resumedFrames(scene, b.name, b.out, b.tra);
+        if (a.resume && writer && !a.csv.empty()) {
+            std::set<int> kept;
+            for (const auto& [frame, pose] : b.done) kept.insert(frame);
+            b.keptRows = fm::cli::keptTrackCsvRows(a.csv, scene.cameras.size(), b.name, kept);
+        }
         b.segments =
             fm::splitAtKeyframes(frames, keyframesOf(scene, b.name, bi, startTra, a.start));
         for (std::size_t s = 0; s < b.segments.size(); ++s) {
@@ -224,9 +229,20 @@ void runTrack(const TrackArgs& a) {
     };
     auto writeOutputs = [&](const BoneRun& b) {
         if (!a.csv.empty()) {
-            std::string text = csvHeader(scene.cameras.size());
-            for (const BoneRun& each : bones)
-                for (const auto& [pos, r] : each.rows) text += csvRow(r, each.name);
+            // Each bone's rows in tracking order: the kept rows of an interrupted run (by their
+            // place in this run's order; frames outside it last), then this run's.
+            std::string text = fm::cli::trackCsvHeader(scene.cameras.size());
+            for (const BoneRun& each : bones) {
+                std::map<std::pair<int, int>, std::string> ordered;
+                for (const auto& [frame, row] : each.keptRows) {
+                    const auto p = position.find(frame);
+                    ordered[{p == position.end() ? static_cast<int>(frames.size()) : p->second,
+                             frame}] = row;
+                }
+                for (const auto& [pos, r] : each.rows)
+                    ordered[{pos, r.frame}] = fm::cli::trackCsvRow(r, each.name);
+                for (const auto& [key, row] : ordered) text += row;
+            }
             fm::io::writeFileAtomically(a.csv, text);
         }
         fm::writeTra(b.out, b.tra);  // atomically
@@ -349,7 +365,8 @@ FM_REGISTER_COMMAND("track", 45, [](CLI::App& app) {
     cmd->add_option("--csv", a->csv, "Per-frame rows: status, cost per camera, evaluations, time");
     cmd->add_flag("--resume", a->resume, "Continue a run: frames already in --out are kept");
     cmd->add_option("--seed", a->seed, "Random seed (frame k uses a seed made from it and k)")
-        ->capture_default_str();
+        ->capture_default_str()
+        ->check(fm::cli::kSeedNumber);
     cmd->add_option("--threads", a->threads, "Threads (0 = all cores)")->capture_default_str();
     cmd->add_option("--cameras", a->cameras, "Cameras to use, e.g. 1 or 1,2 (default: all)");
     cmd->callback([a] { runTrack(*a); });

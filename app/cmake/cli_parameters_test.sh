@@ -43,4 +43,15 @@ sed 's/"source": \[[^]]*\]/"source": [1e308, 0, 0]/' "$OUT/g.json" > "$OUT/g-far
 refused '"source" must lie within' "$FM" drr --geometry "$OUT/g-far.json" --out "$OUT/d.png"
 sed 's/"spacing": \[[^]]*\]/"spacing": [1e300, 1e300]/' "$OUT/g.json" > "$OUT/g-wide.json"
 refused '"detector.spacing[0]" makes the film' "$FM" drr --geometry "$OUT/g-wide.json" --out "$OUT/d.png"
+# Sentinels never hide a value: --i0 0 and --angles 0 are refused, not read as "not given";
+# --page is bounded (2147483647 printed "page -2147483648") and applies to TIFF only.
+IN=$(mktemp -d); trap 'rm -rf "$OUT" "$IN"' EXIT
+"$FM" drr --size 16x16 --out "$IN/r.tif" >/dev/null 2>&1 || fail "could not write a TIFF"
+"$FM" drr --size 16x16 --out "$IN/r.png" >/dev/null 2>&1 || fail "could not write a PNG"
+refused "--i0 must be a positive intensity" "$FM" radiograph "$IN/r.tif" --log --i0 0 --out "$OUT/p.png"
+refused "--i0 applies to --log only" "$FM" radiograph "$IN/r.tif" --i0 100 --out "$OUT/p.png"
+refused "--angles: Value 0 not in range" "$FM" drr --angles 0 --out "$OUT/d.png"
+refused "--page: Value 2147483647 not in range" "$FM" radiograph "$IN/r.tif" --page 2147483647
+refused "is not a TIFF (only a TIFF has pages)" "$FM" radiograph "$IN/r.png" --page 0
+"$FM" radiograph "$IN/r.tif" --log --i0 300 >/dev/null || fail "--log --i0 300 refused"
 echo PASS

@@ -66,7 +66,14 @@ msg=$("$FM" geometry --slice --center 0,0,0 --film 100x100 2>&1)
 [ $? -ne 0 ] && grep -q -- "--film" <<<"$msg" || fail "geometry --slice --film not refused: $msg"
 msg=$("$FM" register --reference-pose 0,0,0,0,0,0 --thickness 3 2>&1)
 [ $? -ne 0 ] && grep -q -- "--slice" <<<"$msg" || fail "--thickness without --slice not refused: $msg"
-[ ! -e "$OUT/t.png" ] || fail "a PNG was written for refused options"
+msg=$("$FM" slice --volume phantom:sphere --raw "$OUT/s.png" 2>&1)
+[ $? -ne 0 ] && grep -q -- "--raw .*cannot hold the exact values" <<<"$msg" || fail "slice --raw .png not refused: $msg"
+msg=$("$FM" slice --volume phantom:sphere --raw "$OUT/nofolder/s.mha" 2>&1)
+[ $? -ne 0 ] && grep -q -- "--raw .*does not exist" <<<"$msg" || fail "slice --raw in a missing folder not refused: $msg"
+[ ! -e "$OUT/t.png" ] && [ ! -e "$OUT/s.png" ] || fail "a PNG was written for refused options"
+# --raw .tif: float32 TIFF of exact values.
+"$FM" slice --volume phantom:sphere --size 16x16 --raw "$OUT/s.tif" >/dev/null || fail "slice --raw .tif failed"
+[ "$(head -c 4 "$OUT/s.tif" | od -An -tx1 | tr -d ' \n')" = "49492a00" ] || fail "slice --raw .tif is not a TIFF"
 # 6. The slice evaluation (tiny: 1 start per bin, a coarse grid, a small budget).
 for run in a b; do
     "$FM" evaluate --slice --volume phantom:knee --truth 3,-2,4,20,10,5 --methods cmaes \

@@ -38,11 +38,20 @@ awk -F, 'NR<=2 && (NF!=16 || $16+0!=1) {exit 1} NR==3 && $1!="NaN" {exit 1}' "$T
 head -1 "$T/whole.csv" | grep -q "cost_cam1,cost_cam2,evaluations,time_ms" || fail "CSV header"
 # "Killed" after frame 0, then resumed.
 "$FM" track --trial "$TRIAL" --bone radius --start "$T/start.tra" --frames 0:0 --threads 2 \
-    --out "$T/resumed.tra" >/dev/null 2>&1 || fail "first part failed"
+    --out "$T/resumed.tra" --csv "$T/resumed.csv" >/dev/null 2>&1 || fail "first part failed"
+cp "$T/resumed.csv" "$T/first.csv"
 "$FM" track --trial "$TRIAL" --bone radius --start "$T/start.tra" --frames 0:1 --threads 2 --resume \
-    --out "$T/resumed.tra" >"$T/out" 2>&1 || { cat "$T/out"; fail "resume failed"; }
+    --out "$T/resumed.tra" --csv "$T/resumed.csv" >"$T/out" 2>&1 || { cat "$T/out"; fail "resume failed"; }
 grep -q "1 frames of radius already in" "$T/out" || fail "resume did not say what it kept"
 cmp "$T/whole.tra" "$T/resumed.tra" || fail "resumed run differs from the uninterrupted one"
+# The CSV is resumed as the .tra is: the kept frame's row (byte for byte), then the new frame's.
+[ "$(wc -l < "$T/resumed.csv")" -eq 3 ] || { cat "$T/resumed.csv"; fail "the resumed CSV must hold header, frame 0, frame 1"; }
+cmp <(head -2 "$T/first.csv") <(head -2 "$T/resumed.csv") || { cat "$T/resumed.csv"; fail "the kept frame's CSV row was lost"; }
+sed -n 3p "$T/resumed.csv" | grep -q "^1,radius," || fail "the resumed frame's CSV row is missing"
+# A CSV of another trial (another header) is refused, not merged into this one.
+printf 'frame,bone,status,cameras_used,cost_cam1,evaluations,time_ms,note\n0,radius,tracked,1,0.5,10,1.0,\n' > "$T/other.csv"
+expect_error "is not this run's" "$FM" track --trial "$TRIAL" --bone radius --start "$T/start.tra" \
+    --frames 0:1 --resume --out "$T/resumed.tra" --csv "$T/other.csv"
 
 # overlay: one PNG per camera at the trial's tracking size (512 x 512, its RenderResolution), refusals named.
 "$FM" overlay --trial "$TRIAL" --bone radius --tra "$T/whole.tra" --frame 1 --out "$T/ov.png" >"$T/out" 2>&1 \
@@ -91,4 +100,39 @@ miss=$T/missing; mkframes "$miss"; mktrial "$miss"; rm "$miss/cam02/xr_rad_uln_c
 expect_error "camera cam01 has 3 frames but camera cam02 has 2 (.*missing/cam02.; a frame missing?)" \
     "$FM" track --trial "$miss/t.json" --bone radius --start "$T/start.tra" --out "$T/miss.tra"
 [ ! -e "$T/miss.tra" ] || fail "a refused trial must not write a .tra"
+
+# Outputs and numbers checked before any work: nothing tracked, nothing written.
+before_work() {  # before_work TEXT command...: refused with TEXT, and no frame was tracked
+    expect_error "$@"
+    if grep -q "frame [0-9]*  \[" "$T/out"; then cat "$T/out"; fail "'$1' was refused only after tracking"; fi
+}
+K=(track --trial "$TRIAL" --bone radius --start "$T/start.tra" --threads 2)
+before_work "is the same file as the .tra" "$FM" "${K[@]}" --out "$T/same.tra" --csv "$T/same.tra"
+before_work "is the same file as the .tra" "$FM" "${K[@]}" --out "$T/same.tra" --csv "$T/./same.tra"
+before_work "name it NAME.tra" "$FM" "${K[@]}" --out "$T/poses.csv"
+before_work "does not exist" "$FM" "${K[@]}" --out "$T/r.tra" --csv "$T/nofolder/x.csv"
+before_work "does not exist" "$FM" "${K[@]}" --out "$T/nofolder/x.tra"
+before_work "is the --start file" "$FM" "${K[@]}" --out "$T/start.tra"
+before_work "seed" "$FM" "${K[@]}" --out "$T/r.tra" --seed -1
+before_work "seed" "$FM" "${K[@]}" --out "$T/r.tra" --seed 18446744073709551616
+before_work "names camera 1 twice" "$FM" "${K[@]}" --out "$T/r.tra" --cameras 1,1
+before_work "distinct camera numbers" "$FM" "${K[@]}" --out "$T/r.tra" --cameras 1,
+before_work "given twice" "$FM" track --trial "$TRIAL" --bone radius --bone radius --out "$T/r.tra"
+if [ "$(id -u)" -ne 0 ]; then  # root may write anywhere
+    mkdir -p "$T/ro"; chmod 555 "$T/ro"
+    before_work "not writable" "$FM" "${K[@]}" --out "$T/ro/x.tra"
+fi
+for f in r.tra same.tra poses.csv; do [ ! -e "$T/$f" ] || fail "a refused run wrote $f"; done
+# A keyframe past the last frame is refused, naming the bone and the frames there are.
+sed -e "s#\.\./\.\./\.\./shared/data/autoscoper-bvr#$W#g" -e 's#"frame": 1,#"frame": 7,#' "$TRIAL" > "$T/late.json"
+before_work "keyframes.radius has a keyframe for frame 7, but the trial's frames are 0..2" \
+    "$FM" track --trial "$T/late.json" --bone radius --out "$T/r.tra"
+# The same camera listed twice in a trial.
+python3 - "$T/late.json" "$T/twice.json" <<'PY'
+import json, sys
+t = json.load(open(sys.argv[1])); t["keyframes"] = {}
+t["cameras"][1] = dict(t["cameras"][0], name="again")
+json.dump(t, open(sys.argv[2], "w"))
+PY
+before_work "are the same camera" "$FM" track --trial "$T/twice.json" --bone radius --out "$T/r.tra"
 echo "track CLI: all checks passed"

@@ -67,6 +67,21 @@ cmp -s "$OUT/both.tra" "$OUT/both1.tra" || fail "side by side and one after the 
 $(cat "$OUT/both.tra")
 $(cat "$OUT/both1.tra")"
 
+# The same file name twice (here the same STL through two paths) is two models: each is
+# registered on its own and both land where one alone does (the second used to move the first,
+# hidden one, and end 17 mm off).
+mkdir -p "$OUT/a" "$OUT/b"; ln -s "$(realpath "$FEM")" "$OUT/a/implant.stl"; ln -s "$(realpath "$FEM")" "$OUT/b/implant.stl"
+out=$("$FM" register --reference "$D/AT_K1_V1_0170.tif" --camera "$CAL" --model "$OUT/a/implant.stl" \
+    --model "$OUT/b/implant.stl" --invert --start "$D/fem.jts" --start "$D/fem.jts" --frame 1 \
+    --out "$OUT/twice.tra" --threads 2) || fail "the same model twice exited $?: $out"
+python3 - "$OUT/twice.tra" "$OUT/both.tra" <<'PY' || fail "two models of one file name differ from one alone"
+import sys
+twice = [float(v) for v in open(sys.argv[1]).read().split("\n")[1].split(",")]
+alone = [float(v) for v in open(sys.argv[2]).read().split("\n")[1].split(",")][:16]
+assert twice[:16] == twice[16:], (twice[:16], twice[16:])
+assert twice[:16] == alone, (twice[:16], alone)
+PY
+
 refuse() {  # refuse WHAT PATTERN args...
     local what=$1 pattern=$2; shift 2
     msg=$("$FM" register "$@" 2>&1) && fail "$what accepted"
@@ -97,5 +112,18 @@ open(sys.argv[1], "wb").write(b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(
     + chunk(b"IDAT", zlib.compress(raw)) + chunk(b"IEND", b""))
 PY
 refuse "a mask of another size" "small.png" "${base[@]}" --start "$D/fem.jts" --mask "$OUT/small.png"
+# Blind starts: nothing of the model on valid pixels. Refused with the numbers, never a "final pose".
+refuse "a start behind the source" "behind the source" "${base[@]}" --start 0,0,1000,0,0,0
+refuse "a start 100 m away" "valid pixels" "${base[@]}" --start 0,0,-100000,0,0,0
+refuse "an ROI away from the model" "check --roi" "${base[@]}" --start "$D/fem.jts" --roi 0,0,40,40
+python3 - "$FEM" "$OUT/metres.stl" <<'PY'
+import sys  # the ASCII STL's vertices in metres
+out = []
+for line in open(sys.argv[1]):
+    w = line.split()
+    out.append("vertex " + " ".join(repr(float(x) / 1000) for x in w[1:4]) + "\n" if w and w[0] == "vertex" else line)
+open(sys.argv[2], "w").writelines(out)
+PY
+refuse "a mesh in metres" "in metres" --reference "$IMG" --camera "$CAL" --model "$OUT/metres.stl" --invert --start "$D/fem.jts"
 refuse "--camera without --model" "needs --model" --reference "$IMG" --camera "$CAL" --start "$D/fem.jts"
 echo "register --camera --model CLI checks passed"

@@ -11,6 +11,8 @@
 
 #include "bones/LabelMap.h"
 #include "core/Error.h"
+#include "io/ByteSource.h"
+#include "io/StrictJson.h"
 
 namespace fm {
 namespace {
@@ -54,12 +56,8 @@ void addEntry(LabelTable& table, const std::string& name, long long label,
 }
 
 LabelTable parseJson(const std::string& text, const std::string& what) {
-    nlohmann::json j;
-    try {
-        j = nlohmann::json::parse(text);
-    } catch (const nlohmann::json::exception& e) {
-        throw Error(what + ": not valid JSON (" + e.what() + ")");
-    }
+    // Strict: {"femur_left": 1, "femur_left": 2} is refused, not read as its last entry.
+    const nlohmann::json j = io::parseStrictJson(text, what);
     LabelTable table;
     auto number = [&](const nlohmann::json& v, const std::string& where) -> long long {
         if (!v.is_number_integer())
@@ -134,12 +132,14 @@ std::string LabelTable::nameOf(int label) const {
 }
 
 LabelTable parseLabelTable(const std::string& text, const std::string& what) {
-    const std::string t = trim(text);
+    // A UTF-8 byte-order mark (spreadsheet exports write one) is not part of the table.
+    const std::string t = trim(text.rfind("\xEF\xBB\xBF", 0) == 0 ? text.substr(3) : text);
     if (t.empty()) throw Error(what + ": empty label table");
     return (t[0] == '{' || t[0] == '[') ? parseJson(t, what) : parseCsv(t, what);
 }
 
 LabelTable readLabelTable(const std::string& path) {
+    io::fileSize(path);  // names a missing file, a folder or a device as such
     std::ifstream in(path, std::ios::binary);
     if (!in) throw Error("label table " + path + ": cannot open the file");
     constexpr std::streamsize kMaxBytes = 1 << 20;  // a table of names, not a data file

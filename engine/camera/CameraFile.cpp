@@ -1,5 +1,10 @@
 #include "camera/CameraFile.h"
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <utility>
+
 #include "camera/JointTrackCalibration.h"
 #include "core/Error.h"
 #include "io/HeaderText.h"
@@ -7,8 +12,31 @@
 
 namespace fm {
 
-CameraReadResult parseCameraText(const std::string& text, const std::string& what,
-                                 std::optional<glm::ivec2> imageSize) {
+namespace {
+
+// A focal length (in pixels) no X-ray camera has: real ones are 1-20 times the image's larger
+// side (a C-arm at 1 m with 0.4 mm pixels, 1024 of them: 2.5). Beyond these bounds a typo in
+// the calibration (a pitch in m, a distance in um) would make every model blind or huge.
+constexpr double kMaxFocalPerSide = 100.0;
+constexpr double kMinFocalPerSide = 0.05;
+
+CameraReadResult plausible(CameraReadResult r, const std::string& what) {
+    const double side = std::max(r.camera.imageSize.x, r.camera.imageSize.y);
+    for (const auto& [name, f] : {std::pair{"fx", r.camera.fx}, std::pair{"fy", r.camera.fy}})
+        if (side > 0 && std::isfinite(f) && (f > kMaxFocalPerSide * side || f < kMinFocalPerSide * side)) {
+            char text[200];
+            std::snprintf(text, sizeof text,
+                          ": the focal length %s = %.6g pixels is %.3g times the image's %d-pixel "
+                          "side; a real X-ray camera has %.2g..%.3g (wrong units?)",
+                          name, f, f / side, static_cast<int>(side), kMinFocalPerSide, kMaxFocalPerSide);
+            throw Error(what + text);
+        }
+    (void)toProjectionGeometry(r.camera, what);  // what every command makes of it, checked here
+    return r;
+}
+
+CameraReadResult parseAnyCamera(const std::string& text, const std::string& what,
+                                std::optional<glm::ivec2> imageSize) {
     std::size_t pos = 0;
     std::string first;
     while (io::nextLine(text, pos, first) && io::trim(first).empty()) {
@@ -36,6 +64,13 @@ CameraReadResult parseCameraText(const std::string& text, const std::string& wha
         return r;
     }
     return parseMayaCam1(text, what);
+}
+
+}  // namespace
+
+CameraReadResult parseCameraText(const std::string& text, const std::string& what,
+                                 std::optional<glm::ivec2> imageSize) {
+    return plausible(parseAnyCamera(text, what, imageSize), what);
 }
 
 CameraReadResult readCameraFile(const std::filesystem::path& path, std::optional<glm::ivec2> imageSize) {

@@ -100,8 +100,8 @@ PinholeCamera makePinholeCamera(const CameraMatrix& K, const double R[3][3], con
     return cam;
 }
 
-ProjectionGeometry toProjectionGeometry(const PinholeCamera& camera) {
-    camera.validate("camera");
+ProjectionGeometry toProjectionGeometry(const PinholeCamera& camera, const std::string& what) {
+    camera.validate(what);
     const double d = camera.pixelPitch > 0.0 ? camera.fx * camera.pixelPitch : kDefaultPlaneDistanceMm;
     const glm::dmat3 rt = glm::transpose(camera.rotation);  // camera axes in world: columns
     ProjectionGeometry g;
@@ -113,6 +113,7 @@ ProjectionGeometry toProjectionGeometry(const PinholeCamera& camera) {
     det.v = rt[1];
     // Pixel (0, 0) lies on the ray through camera point (-cx/fx, -cy/fy, 1), at depth d.
     det.origin = g.source + rt * glm::dvec3(-camera.cx * d / camera.fx, -camera.cy * d / camera.fy, d);
+    g.validate(what);  // a valid camera can still give an absurd detector (a pitch of 1e-300)
     return g;
 }
 

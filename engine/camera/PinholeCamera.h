@@ -76,7 +76,7 @@ PinholeCamera makePinholeCamera(const CameraMatrix& K, const double R[3][3], con
 // at distance d = fx * pixelPitch (or kDefaultPlaneDistanceMm when the pitch is unknown),
 // u = R row 0, v = R row 1, spacing (d/fx, d/fy), pixel (c, r) on the ray of camera pixel
 // (c, r). projectToPixel of the result equals project() of the camera.
-ProjectionGeometry toProjectionGeometry(const PinholeCamera& camera);
+ProjectionGeometry toProjectionGeometry(const PinholeCamera& camera, const std::string& what = "camera");
 
 // Renderer geometry -> camera (exact inverse of the above, pitch = detector du). Refuses a
 // mirrored detector (u x v pointing from the detector back to the source): no rotation with

@@ -72,6 +72,9 @@ std::uintmax_t fileSize(const fs::path& path) {
     const auto status = fs::status(path, ec);
     if (ec || !fs::exists(status)) throw Error("file not found: " + quoted(path));
     if (fs::is_directory(status)) throw Error(quoted(path) + " is a folder, not a file");
+    // A device or pipe has no size to check against (/dev/zero would be read for ever).
+    if (!fs::is_regular_file(status))
+        throw Error(quoted(path) + " is not a regular file (a device or pipe?)");
     const std::uintmax_t size = fs::file_size(path, ec);
     if (ec) throw Error("cannot read " + quoted(path) + ": " + ec.message());
     return size;

@@ -14,6 +14,10 @@ std::string readTextFile(const std::filesystem::path& path, std::size_t maxBytes
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec))
         throw Error(path.string() + ": is a folder, not a " + what);
+    if (!std::filesystem::exists(path, ec))
+        throw Error(path.string() + ": the " + what + " does not exist");
+    if (!std::filesystem::is_regular_file(path, ec))
+        throw Error(path.string() + ": is not a regular file (a device or pipe?), not a " + what);
     const auto size = std::filesystem::file_size(path, ec);
     if (ec) throw Error(path.string() + ": cannot open the " + what + " (" + ec.message() + ")");
     if (size > maxBytes)
@@ -25,6 +29,8 @@ std::string readTextFile(const std::filesystem::path& path, std::size_t maxBytes
     in.read(text.data(), static_cast<std::streamsize>(text.size()));
     if (in.gcount() != static_cast<std::streamsize>(text.size()))
         throw Error(path.string() + ": cannot read the " + what);
+    // A UTF-8 byte-order mark (Windows editors write one) is not part of the first field.
+    if (text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);
     return text;
 }
 

@@ -115,12 +115,17 @@ Mesh readStlBytes(const std::vector<std::uint8_t>& bytes, const std::string& wha
             return readBinary(bytes, count, what);
         }
     }
-    // Not binary by size: ASCII must start with "solid" (after optional whitespace).
+    // Not binary by size: ASCII must start with "solid" in any case (SolidWorks writes
+    // "SOLID"), after optional whitespace and a UTF-8 byte-order mark.
+    if (bytes.size() >= 3 && bytes[0] == 0xEF && bytes[1] == 0xBB && bytes[2] == 0xBF)
+        return readStlBytes(std::vector<std::uint8_t>(bytes.begin() + 3, bytes.end()), what);
     std::size_t i = 0;
     while (i < bytes.size() && (bytes[i] == ' ' || bytes[i] == '\t' || bytes[i] == '\r' ||
                                 bytes[i] == '\n'))
         ++i;
-    const bool solid = bytes.size() - i >= 5 && std::memcmp(bytes.data() + i, "solid", 5) == 0;
+    const bool solid =
+        bytes.size() - i >= 5 &&
+        io::equalsIgnoreCase(std::string_view(reinterpret_cast<const char*>(bytes.data() + i), 5), "solid");
     if (!solid) {
         if (bytes.size() < kBinaryHeader)
             throw Error(what + ": " + std::to_string(bytes.size()) +

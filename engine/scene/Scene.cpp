@@ -7,9 +7,26 @@
 namespace fm {
 
 std::optional<std::size_t> Scene::find(const std::string& name) const {
+    std::optional<std::size_t> found;
     for (std::size_t i = 0; i < objects.size(); ++i)
-        if (objects[i].name == name) return i;
-    return std::nullopt;
+        if (objects[i].name == name) {
+            if (found)
+                throw Error("scene: objects " + std::to_string(*found + 1) + " and " +
+                            std::to_string(i + 1) + " are both called '" + name + "'");
+            found = i;
+        }
+    return found;
+}
+
+std::string uniqueObjectName(const Scene& scene, const std::string& base) {
+    auto taken = [&](const std::string& name) {
+        for (const SceneObject& o : scene.objects)
+            if (o.name == name) return true;
+        return false;
+    };
+    std::string name = base;
+    for (int k = 2; taken(name); ++k) name = base + "_" + std::to_string(k);
+    return name;
 }
 
 SceneObject& Scene::object(const std::string& name) {

@@ -32,12 +32,17 @@ struct Scene {
     std::vector<SceneObject> objects;
     std::vector<ProjectionGeometry> cameras;  // world frame
 
-    // Index of the object called `name`, or nullopt.
+    // Index of the object called `name`, or nullopt. Throws fm::Error when two objects share
+    // the name: which one a parameterization moves must never be a guess.
     std::optional<std::size_t> find(const std::string& name) const;
     // Throws fm::Error naming the object if it does not exist.
     SceneObject& object(const std::string& name);
     const SceneObject& object(const std::string& name) const;
 };
+
+// `base`, or base_2, base_3, ... : a name no object of `scene` has yet (two models from files
+// of the same name, a/implant.stl and b/implant.stl, are two objects).
+std::string uniqueObjectName(const Scene& scene, const std::string& base);
 
 enum class XrayImageOutput {
     LineIntegral,  // sum over objects of the line integrals

@@ -115,6 +115,12 @@ TrialScene loadTrialScene(const Trial& trial, const std::vector<std::string>& bo
                                            " in camera " + trial.cameras[c].name + " (not simultaneous?)");
         }
     }
+    // A keyframe past the last frame is a typo or a trial of another take: never ignored.
+    for (const auto& [bone, poses] : trial.keyframes)
+        if (!poses.empty() && poses.back().frame >= t.frameCount)
+            throw Error(where + ": keyframes." + bone + " has a keyframe for frame " +
+                        std::to_string(poses.back().frame) + ", but the trial's frames are 0.." +
+                        std::to_string(t.frameCount - 1));
     std::vector<std::string> names = bones;
     if (names.empty())
         for (const TrialBone& b : trial.bones) names.push_back(b.name);

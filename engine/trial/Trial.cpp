@@ -217,11 +217,47 @@ const TrialBone& Trial::bone(const std::string& name) const {
     throw Error("trial " + io::quoted(source) + " has no bone \"" + name + "\" (it has " + names + ")");
 }
 
+namespace {
+
+// The same file or folder however it is spelled ("f", "./f", "f/", through a link).
+bool sameFile(const fs::path& a, const fs::path& b) {
+    auto normal = [](const fs::path& p) {
+        std::error_code ec;
+        fs::path n = fs::weakly_canonical(fs::absolute(p), ec);
+        return n.has_filename() ? n : n.parent_path();
+    };
+    return normal(a) == normal(b);
+}
+
+// A camera listed twice (the same name, or the same calibration and frames) is a copy-paste
+// slip: it would double one view's weight and hide the camera that was meant.
+void refuseRepeatedCameras(const Trial& t) {
+    for (std::size_t i = 0; i < t.cameras.size(); ++i)
+        for (std::size_t j = 0; j < i; ++j) {
+            const TrialCamera &a = t.cameras[j], &b = t.cameras[i];
+            if (a.name == b.name)
+                throw Error(io::quoted(t.source) + ": cameras " + std::to_string(j + 1) + " and " +
+                            std::to_string(i + 1) + " are both named \"" + a.name + "\"");
+            if (sameFile(a.calibration, b.calibration) && sameFile(a.frames, b.frames))
+                throw Error(io::quoted(t.source) + ": cameras " + a.name + " and " + b.name +
+                            " are the same camera (calibration " + io::quoted(a.calibration) +
+                            ", frames " + io::quoted(a.frames) + ")");
+        }
+}
+
+}  // namespace
+
 Trial readTrial(const fs::path& path) {
     const std::string ext = io::toLower(path.extension().string());
-    if (ext == ".cfg") return trialFromConfig(path);
-    if (ext == ".json") return readTrialJson(path);
-    throw Error(io::quoted(path) + ": a trial is an Autoscoper .cfg or a fluoromatch .json file");
+    Trial t;
+    if (ext == ".cfg")
+        t = trialFromConfig(path);
+    else if (ext == ".json")
+        t = readTrialJson(path);
+    else
+        throw Error(io::quoted(path) + ": a trial is an Autoscoper .cfg or a fluoromatch .json file");
+    refuseRepeatedCameras(t);
+    return t;
 }
 
 void writeTrialJson(const fs::path& path, const Trial& trial) {
@@ -254,20 +290,36 @@ void writeTrialJson(const fs::path& path, const Trial& trial) {
     io::writeFileAtomically(path, std::vector<std::uint8_t>(s.begin(), s.end()));
 }
 
+namespace {
+
+// What is wrong with a path that should name a regular file ("" when it does): missing, a
+// folder, or a device or pipe (/dev/zero would never end).
+std::string notAFile(const fs::path& p) {
+    std::error_code ec;
+    const fs::file_status s = fs::status(p, ec);
+    if (!fs::exists(s)) return "does not exist";
+    if (fs::is_directory(s)) return "is a folder, not a file";
+    if (!fs::is_regular_file(s)) return "is not a regular file (a device or pipe?)";
+    return "";
+}
+
+}  // namespace
+
 void checkTrialFiles(const Trial& trial) {
     std::error_code ec;
     const std::string t = "trial " + io::quoted(trial.source);
+    auto needFile = [&](const std::string& what, const fs::path& p) {
+        if (const std::string why = notAFile(p); !why.empty())
+            throw Error(t + ": " + what + " " + io::quoted(p) + " " + why);
+    };
     for (const TrialCamera& c : trial.cameras) {
-        if (!fs::is_regular_file(c.calibration, ec))
-            throw Error(t + ": camera " + c.name + " calibration " + io::quoted(c.calibration) + " does not exist");
+        needFile("camera " + c.name + " calibration", c.calibration);
         if (!fs::exists(c.frames, ec))
             throw Error(t + ": camera " + c.name + " frames " + io::quoted(c.frames) + " do not exist");
     }
     for (const TrialBone& b : trial.bones) {
-        if (!b.meshOnly() && !fs::is_regular_file(b.volume, ec))
-            throw Error(t + ": bone " + b.name + " volume " + io::quoted(b.volume) + " does not exist");
-        if (!b.mesh.empty() && !fs::is_regular_file(b.mesh, ec))
-            throw Error(t + ": bone " + b.name + " mesh " + io::quoted(b.mesh) + " does not exist");
+        if (!b.meshOnly()) needFile("bone " + b.name + " volume", b.volume);
+        if (!b.mesh.empty()) needFile("bone " + b.name + " mesh", b.mesh);
         if (!b.masks.empty() && !fs::exists(b.masks, ec))
             throw Error(t + ": bone " + b.name + " masks " + io::quoted(b.masks) + " do not exist");
     }

@@ -49,6 +49,26 @@ TEST(LabelTable, RefusesBadTablesNamingTheEntry) {
     EXPECT_THROW(fm::readLabelTable("/nonexistent/table.json"), fm::Error);
 }
 
+// docs/bones.md promises a bone named twice is refused: a JSON object repeating a key must not
+// be read as its last entry (femur_left would render the right femur).
+TEST(LabelTable, JsonNamingABoneTwiceIsRefused) {
+    const std::string msg =
+        messageOf([] { fm::parseLabelTable(R"({"femur_left": 75, "femur_left": 76})", "t.json"); });
+    EXPECT_NE(msg.find("t.json"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("femur_left"), std::string::npos) << msg;
+}
+
+TEST(LabelTable, ByteOrderMarkIsNotPartOfTheTable) {
+    EXPECT_EQ(fm::parseLabelTable("\xEF\xBB\xBF{\"sacrum\": 25}", "t").find("sacrum")->label, 25);
+    EXPECT_EQ(fm::parseLabelTable("\xEF\xBB\xBFlabel,name\n25,sacrum\n", "t").find("sacrum")->label, 25);
+}
+
+TEST(LabelTable, AFolderOrDeviceIsNamedAsSuch) {
+    EXPECT_NE(messageOf([] { fm::readLabelTable("/tmp"); }).find("is a folder"), std::string::npos);
+    EXPECT_NE(messageOf([] { fm::readLabelTable("/dev/zero"); }).find("not a regular file"),
+              std::string::npos);
+}
+
 TEST(LabelTable, ResolvesNamesNumbersAndUnions) {
     const fm::LabelTable t = fm::parseLabelTable(R"({"tibia": 2, "fibula": 3})", "t");
     EXPECT_EQ(fm::resolveBone("tibia", t).labels, std::vector<int>({2}));

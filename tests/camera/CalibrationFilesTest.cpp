@@ -81,6 +81,35 @@ TEST(MayaCam2, UndistortionBlockIsIgnoredWithAWarning) {
     expectSameProjections(r.camera, fm::parseMayaCam2(kCam01, "x").camera, 0.0);
 }
 
+// A focal length no X-ray camera has (here 1000 times too long or too short, as a pitch in m
+// or a distance in um gives) is refused naming the file and the field, before any model is
+// registered blind with it.
+TEST(Calibration, FocalLengthsOutsideAnyRealCameraAreRefused) {
+    std::string tele = kCam01;
+    tele.replace(tele.find("6167.35342293"), 13, "6167353.42293");
+    const std::string far = errorOf(tele);
+    EXPECT_NE(far.find("calib.txt"), std::string::npos) << far;
+    EXPECT_NE(far.find("focal length fx"), std::string::npos) << far;
+    EXPECT_NE(far.find("wrong units?"), std::string::npos) << far;
+    std::string wide = kCam01;
+    wide.replace(wide.find("6165.63244754"), 13, "6.16563244754");
+    EXPECT_NE(errorOf(wide).find("focal length fy"), std::string::npos) << errorOf(wide);
+    // JointTrack: principal distance 1198 mm over a pitch of 0.373 um instead of mm.
+    EXPECT_NE(errorOf("JT_INTCALIB\n1198\n0\n0\n0.000373\n", glm::ivec2(1024, 1024)).find("focal length"),
+              std::string::npos);
+    EXPECT_EQ(errorOf(kCam01), "");  // the real camera: 3.5 times its side
+}
+
+// Windows editors put a UTF-8 byte-order mark first: it is not part of the first line.
+TEST(Calibration, ByteOrderMarkIsIgnored) {
+    const std::string dir = fm::test::scratchDir("calibration_bom").string();
+    std::ofstream(dir + "/bom.txt", std::ios::binary) << "\xEF\xBB\xBF" << kCam01;
+    std::ofstream(dir + "/jt.txt", std::ios::binary) << "\xEF\xBB\xBFJT_INTCALIB\n1198\n0\n0\n0.373\n";
+    expectSameProjections(fm::readCameraFile(dir + "/bom.txt").camera,
+                          fm::parseMayaCam2(kCam01, "x").camera, 0.0);
+    EXPECT_EQ(fm::readCameraFile(dir + "/jt.txt", glm::ivec2(1024, 1024)).format, "JT_INTCALIB");
+}
+
 TEST(MayaCam2, BrokenFilesAreRefusedWithLineAndField) {
     std::string s = kCam01;
     // Truncated inside the translation.

@@ -35,7 +35,7 @@ inline std::string mutateText(const std::string& original, std::mt19937& rng) {
 }
 
 template <class Read>
-void fuzzText(const char* name, const std::string& original, Read read, int cases = 300,
+void fuzzText(const char* name, const std::string& original, Read read, int cases = 500,
               unsigned seed = 20261201u) {
     std::mt19937 rng(seed);
     ASSERT_NO_THROW(read(original)) << name;

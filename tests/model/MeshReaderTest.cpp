@@ -87,6 +87,22 @@ TEST(MeshReader, AsciiStlLikeStlwrite) {
     EXPECT_EQ(m.positions[4], glm::vec3(1.f, 1.f, 0.f));
 }
 
+// SolidWorks and some CAD exporters write the keywords upper-case, "SOLID" included; editors on
+// Windows may put a UTF-8 byte-order mark first. Both are ASCII STL, not a corrupt binary.
+TEST(MeshReader, AsciiStlInUpperCaseAndWithByteOrderMark) {
+    const fs::path dir = fm::test::scratchDir("mesh_reader_upper_stl");
+    const std::string body =
+        "SOLID PART1\nFACET NORMAL 0 0 1\nOUTER LOOP\nVERTEX 0 0 0\nVERTEX 1 0 0\nVERTEX 0 1 0\n"
+        "ENDLOOP\nENDFACET\nENDSOLID PART1\n";
+    writeText(dir / "upper.stl", body);
+    writeText(dir / "bom.stl", "\xEF\xBB\xBF" + body);
+    for (const char* name : {"upper.stl", "bom.stl"}) {
+        const fm::Mesh m = fm::readMeshFile(dir / name);
+        ASSERT_EQ(m.triangles.size(), 1u) << name;
+        EXPECT_EQ(m.positions[1], glm::vec3(1.f, 0.f, 0.f)) << name;
+    }
+}
+
 TEST(MeshReader, BinaryStlIsDetectedBySizeEvenWithSolidHeader) {
     Bytes b(80, ' ');
     std::memcpy(b.data(), "solid binary but says solid", 27);

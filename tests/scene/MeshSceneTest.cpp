@@ -114,4 +114,26 @@ TEST(MeshScene, OpenOrUnphysicalMeshesAreNotObjects) {
     EXPECT_THROW(fm::MeshXrayModel(fm::prepareMeshDrr(box, false), 1.0), fm::Error);
 }
 
+// Two objects from files of the same name (a/implant.stl, b/implant.stl) are two objects: a
+// parameterization must never move "the first one called implant" by guess.
+TEST(MeshScene, ObjectsAreToldApartByPositionNotByName) {
+    const auto box = meshObject(fm::test::boxMesh({-20, -5, -3}, {20, 5, 3}), 0.25);
+    fm::Scene scene;
+    scene.objects.push_back({fm::uniqueObjectName(scene, "implant"), box, {}, true});
+    scene.objects.push_back({fm::uniqueObjectName(scene, "implant"), box, {}, true});
+    scene.objects.push_back({fm::uniqueObjectName(scene, "implant"), box, {}, true});
+    EXPECT_EQ(scene.objects[1].name, "implant_2");
+    EXPECT_EQ(scene.objects[2].name, "implant_3");
+    EXPECT_EQ(scene.find("implant_2"), std::optional<std::size_t>(1));
+    scene.objects[2].name = "implant";  // two objects of one name: ambiguous, refused
+    try {
+        scene.object("implant");
+        ADD_FAILURE() << "an ambiguous name was resolved";
+    } catch (const fm::Error& e) {
+        EXPECT_NE(std::string(e.what()).find("objects 1 and 3 are both called 'implant'"),
+                  std::string::npos)
+            << e.what();
+    }
+}
+
 }  // namespace

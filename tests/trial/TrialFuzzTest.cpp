@@ -13,7 +13,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr int kCasesPerFile = 400;
+constexpr int kCasesPerFile = 500;
 constexpr unsigned kSeed = 20261201u;  // fixed: failures reproduce
 
 std::string mutate(const std::string& original, std::mt19937& rng) {

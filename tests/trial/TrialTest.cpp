@@ -202,6 +202,13 @@ TEST(TrialJson, RoundTripWithKeyframesAndStrictReading) {
         {"{\"cameras\": [{\"calibration\": \"c\", \"frames\": \"f\"}], \"bones\": [{\"name\": \"a\", \"volume\": \"v\", "
          "\"voxel_size\": [1,1,1]}, {\"name\": \"a\", \"volume\": \"w\", \"voxel_size\": [1,1,1]}]}",
          "repeats the bone name"},
+        {"{\"cameras\": [{\"name\": \"c\", \"calibration\": \"a\", \"frames\": \"f\"}, {\"name\": \"c\", "
+         "\"calibration\": \"b\", \"frames\": \"g\"}], \"bones\": [{\"name\": \"a\", \"volume\": \"v\", "
+         "\"voxel_size\": [1,1,1]}]}",
+         "cameras 1 and 2 are both named \"c\""},
+        {"{\"cameras\": [{\"calibration\": \"a\", \"frames\": \"f\"}, {\"calibration\": \"./a\", "
+         "\"frames\": \"f/\"}], \"bones\": [{\"name\": \"a\", \"volume\": \"v\", \"voxel_size\": [1,1,1]}]}",
+         "cameras cam1 and cam2 are the same camera"},
     };
     for (const Case& c : cases) {
         const fs::path p = writeText(dir, "bad.json", c.text);
@@ -211,6 +218,31 @@ TEST(TrialJson, RoundTripWithKeyframesAndStrictReading) {
     }
     EXPECT_NE(errorOf([&] { fm::readTrial(dir / "t.txt"); }).find(".cfg or a fluoromatch .json"),
               std::string::npos);
+}
+
+// A .cfg listing the same calibration and frame folder twice is one camera counted twice.
+TEST(AutoscoperConfig, TheSameCameraTwiceIsRefused) {
+    const fs::path dir = fm::test::scratchDir("cfg_same_camera");
+    const fs::path p = writeText(dir, "twice.cfg",
+                                 "Version 1.1\nmayaCam_csv a.txt\nmayaCam_csv a.txt\nCameraRootDir f\n"
+                                 "CameraRootDir f\nVolumeFile v.tif\nVoxelSize 1 1 1\n");
+    const std::string e = errorOf([&] { fm::readTrial(p); });
+    EXPECT_NE(e.find("twice.cfg"), std::string::npos) << e;
+    EXPECT_NE(e.find("the same camera"), std::string::npos) << e;
+}
+
+// A folder or a device where a file belongs is named as such, not as missing.
+TEST(TrialJson, AFolderOrDeviceGivenAsAFileIsNamedAsSuch) {
+    const fs::path dir = fm::test::scratchDir("trial_not_a_file");
+    fs::create_directories(dir / "calib");
+    fm::Trial t;
+    t.source = dir / "t.json";
+    t.cameras.push_back({"cam1", dir / "calib", dir});
+    EXPECT_NE(errorOf([&] { fm::checkTrialFiles(t); }).find("is a folder, not a file"), std::string::npos);
+    t.cameras[0].calibration = "/dev/zero";
+    EXPECT_NE(errorOf([&] { fm::checkTrialFiles(t); }).find("not a regular file"), std::string::npos);
+    t.cameras[0].calibration = dir / "none.txt";
+    EXPECT_NE(errorOf([&] { fm::checkTrialFiles(t); }).find("does not exist"), std::string::npos);
 }
 
 TEST(ImageSequence, SortsByNameAndRefusesEmptyFolders) {

@@ -1,0 +1,69 @@
+#include "cli/TrackCsv.h"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+#include <system_error>
+
+#include "core/Error.h"
+#include "io/ByteSource.h"
+#include "io/TextFile.h"
+
+namespace fm::cli {
+
+std::string trackCsvHeader(std::size_t cameras) {
+    std::string h = "frame,bone,status,cameras_used";
+    for (std::size_t c = 0; c < cameras; ++c) h += ",cost_cam" + std::to_string(c + 1);
+    return h + ",evaluations,time_ms,note\n";
+}
+
+std::string trackCsvRow(const FrameRecord& r, const std::string& bone) {
+    char buf[64];
+    std::string row = std::to_string(r.frame) + "," + bone + "," + toString(r.status) + "," +
+                      std::to_string(r.camerasUsed);
+    for (double c : r.viewCost) {
+        std::snprintf(buf, sizeof buf, ",%.6f", c);
+        row += std::isnan(c) ? std::string(",") : std::string(buf);
+    }
+    std::snprintf(buf, sizeof buf, ",%d,%.1f,", r.evaluations, 1000.0 * r.seconds);
+    std::string note = r.note;
+    for (char& ch : note)
+        if (ch == ',' || ch == '\n') ch = ';';
+    return row + buf + note + "\n";
+}
+
+std::map<int, std::string> keptTrackCsvRows(const std::filesystem::path& csv, std::size_t cameras,
+                                            const std::string& bone, const std::set<int>& kept) {
+    std::map<int, std::string> rows;
+    std::error_code ec;
+    if (!std::filesystem::exists(csv, ec)) return rows;
+    // A frame's row is short; 1 GiB of them is millions of frames, more than any trial.
+    const std::string text = io::readTextFile(csv, std::size_t{1} << 30, "track CSV");
+    std::istringstream in(text);
+    std::string line;
+    std::string header = trackCsvHeader(cameras);
+    header.pop_back();
+    const std::string where = "--resume: " + io::quoted(csv);
+    if (!std::getline(in, line)) return rows;  // empty: the earlier run wrote nothing yet
+    if (line != header)
+        throw Error(where + ": its header \"" + line + "\" is not this run's \"" + header +
+                    "\" (a CSV of another trial or camera set?)");
+    const std::size_t fields = 7 + cameras;
+    for (int number = 2; std::getline(in, line); ++number) {
+        std::size_t commas = 0;
+        for (char ch : line) commas += ch == ',' ? 1 : 0;
+        const std::size_t first = line.find(','), second = line.find(',', first + 1);
+        int frame = -1;
+        if (commas + 1 == fields && first != std::string::npos && first > 0 && first <= 9 &&
+            line.find_first_not_of("0123456789") == first)
+            frame = std::stoi(line.substr(0, first));
+        if (frame < 0)
+            throw Error(where + ": line " + std::to_string(number) + " is not a row of " +
+                        std::to_string(fields) + " fields starting with a frame number");
+        if (line.substr(first + 1, second - first - 1) == bone && kept.count(frame) != 0)
+            rows[frame] = line + "\n";
+    }
+    return rows;
+}
+
+}  // namespace fm::cli
