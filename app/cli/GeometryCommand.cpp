@@ -113,7 +113,7 @@ void runGeometry(const GeometryArgs& a) {
         const fm::CameraReadResult r = fm::readCameraFile(a.camera, size);
         for (const auto& w : r.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
         if (size) fm::checkImageSize(r.camera, a.camera, size->x, size->y, "--image-size");
-        g = fm::toProjectionGeometry(r.camera);
+        g = fm::toProjectionGeometry(r.camera, a.camera);
         source = r.format + " calibration " + a.camera;
     } else {
         g = geometryOfScene(a);

@@ -89,7 +89,7 @@ void runXrayRegister(const std::string& reference, const XrayRegisterArgs& a,
     for (const std::string& m : a.masks) labels.push_back(readLabelMask(m, size));
 
     Scene scene;
-    scene.cameras.push_back(toProjectionGeometry(cam.camera));
+    scene.cameras.push_back(toProjectionGeometry(cam.camera, a.camera));
     std::vector<RigidTransform> startPoses;
     for (std::size_t k = 0; k < n; ++k) {
         const MeshModel model = loadMeshModel(a.models[k]);

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "cli/CameraList.h"
 #include "core/Error.h"
 #include "pose/AutoscoperTra.h"
 #include "track/TrialScene.h"
@@ -42,10 +43,7 @@ void runTrialRegister(const TrialRegisterArgs& a) {
     }
     if (!start) throw Error("no start pose for " + a.bone + " at frame " + std::to_string(a.frame) +
                             ": give --start-tra or a keyframe in the trial");
-    std::vector<std::size_t> cameras;
-    if (!a.cameras.empty())
-        for (std::size_t c = 0; c < scene.cameras.size(); ++c)
-            if (a.cameras.find(std::to_string(c + 1)) != std::string::npos) cameras.push_back(c);
+    const std::vector<std::size_t> cameras = parseCameraList(a.cameras, scene.cameras.size());
     TrackSettings settings;
     settings.registration.seed = a.seed;
     settings.registration.threads = a.threads;

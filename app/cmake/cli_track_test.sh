@@ -117,6 +117,7 @@ before_work "seed" "$FM" "${K[@]}" --out "$T/r.tra" --seed -1
 before_work "seed" "$FM" "${K[@]}" --out "$T/r.tra" --seed 18446744073709551616
 before_work "names camera 1 twice" "$FM" "${K[@]}" --out "$T/r.tra" --cameras 1,1
 before_work "distinct camera numbers" "$FM" "${K[@]}" --out "$T/r.tra" --cameras 1,
+expect_error "names camera 1 twice" "$FM" register --trial "$TRIAL" --bone radius --frame 0 --cameras 1,1
 before_work "given twice" "$FM" track --trial "$TRIAL" --bone radius --bone radius --out "$T/r.tra"
 if [ "$(id -u)" -ne 0 ]; then  # root may write anywhere
     mkdir -p "$T/ro"; chmod 555 "$T/ro"

@@ -93,7 +93,8 @@ TrialScene loadTrialScene(const Trial& trial, const std::vector<std::string>& bo
         checkImageSize(cam.camera, io::quoted(tc.calibration), size.x, size.y,
                        seq.multiPage ? io::quoted(seq.source) : io::quoted(seq.frames[0]));
         const glm::ivec2 render = trialRenderSize(cam.camera.imageSize, trial.renderResolution);
-        t.scene.cameras.push_back(toProjectionGeometry(resizedCamera(cam.camera, render)));
+        t.scene.cameras.push_back(toProjectionGeometry(resizedCamera(cam.camera, render),
+                                                       io::quoted(tc.calibration) + " at the trial's render size"));
         t.cameras.push_back(cam.camera);
         t.sequences.push_back(std::move(seq));
     }
