@@ -7,12 +7,12 @@
 #include <ostream>
 #include <sstream>
 
-#include <stb/stb_image.h>
-
 #include "cli/NumberChecks.h"
 #include "core/Error.h"
 #include "io/AtomicFile.h"
 #include "io/ReadVolume.h"
+#include "radiograph/Radiograph.h"
+#include "radiograph/RadiographPreparation.h"
 
 namespace fm::cli {
 
@@ -134,16 +134,12 @@ Image readReferenceImage(const std::string& path) {
     std::string ext = dot == std::string::npos ? "" : path.substr(dot);
     for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     if (ext == ".png") {
-        int w = 0, h = 0, channels = 0;
-        // 16-bit loading keeps 16-bit PNGs exact and widens 8-bit ones; no gamma is applied.
-        stbi_us* data = stbi_load_16(path.c_str(), &w, &h, &channels, 1);
-        if (!data)
-            throw Error(path + ": cannot read PNG (" + std::string(stbi_failure_reason()) + ")");
-        Image img(w, h);
-        for (std::size_t i = 0; i < img.pixels.size(); ++i)
-            img.pixels[i] = float(data[i]) / 65535.0f;
-        stbi_image_free(data);
-        return img;
+        // The radiograph reader (every check in one place), scaled to 0..1 by the file's full
+        // scale: 8-bit and 16-bit PNGs alike, no gamma applied.
+        RadiographFile file = readRadiograph(path);
+        const float scale = static_cast<float>(radiographFullScale(file.bitsPerSample));
+        for (float& p : file.image.pixels) p /= scale;
+        return std::move(file.image);
     }
     const Volume v = readVolume(path);
     if (v.dims.z != 1)

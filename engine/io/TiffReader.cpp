@@ -17,7 +17,12 @@ namespace {
 // What libtiff reports while one file is open (per-handle handlers, libtiff >= 4.5).
 struct Messages {
     std::string firstError;
-    std::vector<std::string> warnings;
+    // A warning about pixel data is an error for us: libtiff warns and goes on where data are
+    // corrupt (an LZW strip without its end code, PackBits runs past a row's end), and what it
+    // returns then is not the image (float pages of +-3.4e38). Kept apart, and refused.
+    std::string dataWarning;
+    std::vector<std::string> warnings;  // the benign rest (unknown tags, unsorted directories)
+    bool decoding = false;              // set while strips or tiles are decoded
 };
 
 std::string format(const char* module, const char* fmt, va_list ap) {
@@ -32,9 +37,27 @@ int onError(TIFF*, void* user, const char* module, const char* fmt, va_list ap) 
     return 1;  // handled: nothing goes to stderr
 }
 
+// A directory warning about a tag that decides what the pixels are (libtiff then ignores the
+// tag or guesses its value: a wrong count for "Predictor" drops the predictor) is about data.
+bool aboutPixelLayout(const std::string& text) {
+    static const char* const kTags[] = {"ImageWidth", "ImageLength", "BitsPerSample", "SamplesPerPixel",
+                                        "SampleFormat", "Compression", "Photometric", "PlanarConfig",
+                                        "Predictor", "StripOffsets", "StripByteCounts", "RowsPerStrip",
+                                        "TileWidth", "TileLength", "TileOffsets", "TileByteCounts",
+                                        "FillOrder", "ExtraSamples"};
+    for (const char* tag : kTags)
+        if (text.find(tag) != std::string::npos) return true;
+    return false;
+}
+
 int onWarning(TIFF*, void* user, const char* module, const char* fmt, va_list ap) {
     auto* m = static_cast<Messages*>(user);
-    if (m->warnings.size() < 20) m->warnings.push_back(format(module, fmt, ap));
+    std::string text = format(module, fmt, ap);
+    if (m->decoding || aboutPixelLayout(text)) {
+        if (m->dataWarning.empty()) m->dataWarning = std::move(text);
+    } else if (m->warnings.size() < 20 && std::find(m->warnings.begin(), m->warnings.end(), text) == m->warnings.end()) {
+        m->warnings.push_back(std::move(text));  // once: directories are read again per page
+    }
     return 1;
 }
 
@@ -69,6 +92,9 @@ struct TiffFile {
         std::string m = what + ": " + why;
         if (!messages.firstError.empty()) m += " (libtiff: " + messages.firstError + ")";
         throw Error(m);
+    }
+    void failOnDataWarning(const std::string& what) const {
+        if (!messages.dataWarning.empty()) fail(what + " (libtiff: " + messages.dataWarning + ")");
     }
 };
 
@@ -107,6 +133,8 @@ PageLayout layoutOf(TiffFile& f, int page) {
     if (!ok)
         f.fail(where + ": " + std::to_string(p.bits) + "-bit samples of format " +
                std::to_string(p.sampleFormat) + "; 8/16-bit integers or 32-bit floats are read");
+    // After the checks above (their messages say more), a directory warning about the layout.
+    f.failOnDataWarning(where + ": corrupt directory");
     return p;
 }
 
@@ -143,6 +171,7 @@ void readPixels(TiffFile& f, const PageLayout& p, int page, std::vector<float>& 
     const std::string where = "page " + std::to_string(page + 1);
     const std::size_t W = p.width, H = p.height, bytes = p.bits / 8;
     out.assign(W * H, 0.0f);
+    f.messages.decoding = true;
     if (!p.tiled) {
         const tmsize_t lineSize = TIFFScanlineSize(f.tif);
         if (lineSize < static_cast<tmsize_t>(W * bytes)) f.fail(where + ": inconsistent scanline size");
@@ -171,7 +200,9 @@ void readPixels(TiffFile& f, const PageLayout& p, int page, std::vector<float>& 
                             sampleAt(tile.data() + std::size_t{y - ty} * tw * bytes, x - tx, p);
             }
     }
+    f.messages.decoding = false;
     if (!f.messages.firstError.empty()) f.fail(where + ": corrupt image data");
+    f.failOnDataWarning(where + ": corrupt image data");
     if (p.photometric == PHOTOMETRIC_MINISWHITE) {
         const float maxValue = p.bits == 8 ? 255.0f : p.bits == 16 ? 65535.0f : 1.0f;
         for (float& v : out) v = maxValue - v;
@@ -217,6 +248,7 @@ std::vector<PageLayout> scan(TiffFile& f, std::uintmax_t fileSize) {
         pages.push_back(p);
     } while (TIFFReadDirectory(f.tif));
     if (!f.messages.firstError.empty()) f.fail("corrupt directory after page " + std::to_string(pages.size()));
+    f.failOnDataWarning("corrupt directory after page " + std::to_string(pages.size()));
     return pages;
 }
 

@@ -6,7 +6,10 @@
 // always means brighter.
 //
 // libtiff's errors and warnings never reach stderr: errors become fm::Error naming the file
-// (and page), warnings are returned. Sizes are checked before anything is allocated.
+// (and page), and so do warnings about pixel data (any warning while strips or tiles are
+// decoded, and directory warnings about the tags that lay pixels out: libtiff goes on after
+// them with data that are not the image). Benign warnings (unknown tags) are returned. Sizes
+// are checked before anything is allocated.
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -31,7 +34,7 @@ struct TiffPage {
 struct TiffContent {
     std::vector<TiffPage> pages;
     std::string compression;            // of the first page: "none", "LZW", "PackBits", ...
-    std::vector<std::string> warnings;  // libtiff's warnings (unknown tags and the like)
+    std::vector<std::string> warnings;  // libtiff's benign warnings (unknown tags and the like)
 };
 
 // Reads every page. fm::Error for unreadable, truncated or corrupt files, unsupported sample

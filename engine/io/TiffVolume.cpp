@@ -22,6 +22,8 @@ Volume readTiffVolume(const std::filesystem::path& path, const glm::dvec3& spaci
     v.meta.source = path.string();
     v.meta.description = "TIFF stack (" + tiff.compression + ", " + std::to_string(first.bitsPerSample) +
                          "-bit), voxel size given by the user";
+    // libtiff's benign warnings (its warnings about data are errors, in readTiff) stay visible.
+    for (const std::string& w : tiff.warnings) v.meta.description += "; libtiff warning: " + w;
     v.validate(path.string());
     return v;
 }

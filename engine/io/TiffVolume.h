@@ -13,7 +13,8 @@
 namespace fm::io {
 
 // fm::Error naming the file for a non-positive or non-finite spacing and everything readTiff
-// refuses. meta.units stays Unknown (the stored integers are not HU).
+// refuses (libtiff's warnings about pixel data included). Its benign warnings are appended to
+// meta.description. meta.units stays Unknown (the stored integers are not HU).
 Volume readTiffVolume(const std::filesystem::path& path, const glm::dvec3& spacing);
 
 }  // namespace fm::io

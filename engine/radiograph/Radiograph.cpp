@@ -1,11 +1,12 @@
 #include "radiograph/Radiograph.h"
 
-#include <algorithm>
 #include <cctype>
 
-#include <stb/stb_image.h>
-
 #include "core/Error.h"
+#include "io/BmpReader.h"
+#include "io/ByteSource.h"
+#include "io/JpegReader.h"
+#include "io/PngReader.h"
 #include "io/TiffReader.h"
 
 namespace fm {
@@ -18,39 +19,15 @@ std::string lowerExtension(const std::filesystem::path& path) {
     return ext;
 }
 
-RadiographFile readWithStb(const std::filesystem::path& path) {
-    const std::string name = path.string();
-    int w = 0, h = 0, channels = 0;
-    if (!stbi_info(name.c_str(), &w, &h, &channels))
-        throw Error(name + ": not a readable image (" + std::string(stbi_failure_reason()) + ")");
-    if (w < 1 || h < 1 || w > io::kMaxTiffSide || h > io::kMaxTiffSide)
-        throw Error(name + ": image size " + std::to_string(w) + " x " + std::to_string(h) +
-                    " is outside 1.." + std::to_string(io::kMaxTiffSide));
+RadiographFile fromGrey(io::GreyImage grey, const char* format) {
     RadiographFile r;
-    const bool sixteen = stbi_is_16_bit(name.c_str()) != 0;
-    r.bitsPerSample = sixteen ? 16 : 8;
-    r.image = Image(w, h);
-    if (sixteen) {
-        stbi_us* data = stbi_load_16(name.c_str(), &w, &h, &channels, 1);
-        if (!data) throw Error(name + ": cannot decode the image (" + std::string(stbi_failure_reason()) + ")");
-        std::copy(data, data + r.image.pixels.size(), r.image.pixels.begin());
-        stbi_image_free(data);
-    } else {
-        stbi_uc* data = stbi_load(name.c_str(), &w, &h, &channels, 1);
-        if (!data) throw Error(name + ": cannot decode the image (" + std::string(stbi_failure_reason()) + ")");
-        std::copy(data, data + r.image.pixels.size(), r.image.pixels.begin());
-        stbi_image_free(data);
-    }
-    const std::string ext = lowerExtension(path);
-    r.format = ext == ".png" ? "PNG" : (ext == ".jpg" || ext == ".jpeg") ? "JPEG" : "image (stb)";
+    r.image = std::move(grey.image);
+    r.bitsPerSample = grey.bitsPerSample;
+    r.format = format;
     return r;
 }
 
-}  // namespace
-
-RadiographFile readRadiograph(const std::filesystem::path& path, int page) {
-    const std::string ext = lowerExtension(path);
-    if (ext != ".tif" && ext != ".tiff") return readWithStb(path);
+RadiographFile readTiffRadiograph(const std::filesystem::path& path, int page) {
     io::TiffContent tiff = io::readTiff(path);
     const int pages = static_cast<int>(tiff.pages.size());
     if (page < 0 && pages > 1)
@@ -58,8 +35,8 @@ RadiographFile readRadiograph(const std::filesystem::path& path, int page) {
                     " pages; a radiograph is one page (name the page)");
     const int index = page < 0 ? 0 : page;
     if (index >= pages)
-        throw Error(path.string() + ": page " + std::to_string(index + 1) + " requested, the file holds " +
-                    std::to_string(pages));
+        throw Error(path.string() + ": page " + std::to_string(index + 1) +
+                    " requested, the file holds " + std::to_string(pages));
     io::TiffPage& p = tiff.pages[static_cast<std::size_t>(index)];
     RadiographFile r;
     r.image.width = p.width;
@@ -69,6 +46,18 @@ RadiographFile readRadiograph(const std::filesystem::path& path, int page) {
     r.format = "TIFF (" + tiff.compression + ")";
     r.warnings = std::move(tiff.warnings);
     return r;
+}
+
+}  // namespace
+
+RadiographFile readRadiograph(const std::filesystem::path& path, int page) {
+    const std::string ext = lowerExtension(path);
+    if (ext == ".tif" || ext == ".tiff") return readTiffRadiograph(path, page);
+    if (ext == ".png") return fromGrey(io::readPng(path), "PNG");
+    if (ext == ".jpg" || ext == ".jpeg") return fromGrey(io::readJpeg(path), "JPEG");
+    if (ext == ".bmp") return fromGrey(io::readBmp(path), "BMP");
+    throw Error(io::quoted(path) + ": unknown radiograph format '" + ext +
+                "' (read: .tif/.tiff, .png, .jpg/.jpeg, .bmp)");
 }
 
 }  // namespace fm

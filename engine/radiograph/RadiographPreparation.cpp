@@ -16,6 +16,29 @@ Mask complement(const Mask& m) {
     return out;
 }
 
+// NaN and infinite pixels (a float TIFF's holes) carry no image. They and their 8 neighbours
+// (whose Sobel gradients read them) leave the mask, and their values become the mean of the
+// finite pixels, so no later sum (a gradient, a pyramid level's average, the log) meets them.
+// Returns how many there were.
+std::size_t dropNonFinite(Image& image, Mask& valid) {
+    Mask bad(image.width, image.height, false);
+    std::size_t count = 0;
+    double sum = 0.0;
+    for (std::size_t i = 0; i < image.pixels.size(); ++i) {
+        if (std::isfinite(image.pixels[i])) sum += image.pixels[i];
+        else bad.inside[i] = 1, ++count;
+    }
+    if (count == 0) return 0;
+    const std::size_t finite = image.pixels.size() - count;
+    const float fill = finite ? static_cast<float>(sum / double(finite)) : 0.0f;
+    for (std::size_t i = 0; i < image.pixels.size(); ++i)
+        if (bad.inside[i]) image.pixels[i] = fill;
+    const Mask grown = dilate(bad, 1);
+    for (std::size_t i = 0; i < valid.inside.size(); ++i)
+        if (grown.inside[i]) valid.inside[i] = 0;
+    return count;
+}
+
 }  // namespace
 
 double radiographFullScale(int bitsPerSample) {
@@ -54,6 +77,7 @@ PreparedRadiograph prepareRadiograph(const Image& radiograph, const RadiographPr
                     out.valid.inside[static_cast<std::size_t>(y) * w + x] = 0;
     }
     out.image = radiograph;
+    dropNonFinite(out.image, out.valid);
     if (o.logTransform)
         for (float& v : out.image.pixels)
             v = static_cast<float>(-std::log(std::clamp(static_cast<double>(v), 1.0, i0) / i0));

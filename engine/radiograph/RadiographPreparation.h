@@ -3,13 +3,15 @@
 // (docs/real-xray.md, "Preparing a radiograph"). In order:
 //   1. valid pixels: all, minus pixels whose stored value is <= excludeBelow (the zero border
 //      that undistortion leaves, a collimator's shadow), that region grown by erodePixels
-//      (edges of such borders are ramps, not image), minus everything outside the roi;
+//      (edges of such borders are ramps, not image), minus everything outside the roi, minus
+//      NaN and infinite pixels with their 8 neighbours (those pixels' values are replaced by
+//      the mean of the finite ones, so nothing computed from the image meets them);
 //   2. log: v = -ln(clamp(I, 1, I0) / I0), the line integral of raw detector intensities I
 //      with I0 the unattenuated intensity (default: the full scale, 255 or 65535), so dense
 //      matter is bright and values add like DRR line integrals;
 //   3. invert: v = fullScale - v (in raw fluoroscopy dense matter is dark; a DRR is bright
 //      there). Not with log (which already makes dense matter bright).
-// Invalid pixels keep their values in the image; the mask says which pixels count.
+// Other invalid pixels keep their values in the image; the mask says which pixels count.
 #include <optional>
 
 #include "core/Image.h"

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 #include "core/Error.h"
 #include "radiograph/RadiographPreparation.h"
@@ -102,6 +103,46 @@ TEST(Preparation, FullScaleOfEachSampleFormat) {
     p.invert = true;
     p.fullScale = radiographFullScale(32);
     EXPECT_FLOAT_EQ(prepareRadiograph(image, p).image.at(0, 0), 0.75f);
+}
+
+}  // namespace
+}  // namespace fm
+
+namespace fm {
+namespace {
+
+// NaN and infinite pixels of a float TIFF counted as valid: twenty inside an implant's outline
+// made every gradient sum around them NaN. They and their 8 neighbours leave the mask, and no
+// value computed from the image (log, invert, the mask's range) meets them.
+TEST(Preparation, NonFinitePixelsAreInvalid) {
+    Image image(20, 12, 0.5f);
+    for (int x = 0; x < 20; ++x)
+        for (int y = 0; y < 12; ++y) image.at(x, y) = 10.0f + float(x + y);
+    const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+    image.at(5, 5) = nan;
+    image.at(12, 6) = inf;
+    image.at(0, 0) = -inf;
+    for (const bool log : {false, true}) {
+        RadiographPreparation o;
+        o.fullScale = 255.0;
+        o.logTransform = log;
+        o.invert = !log;
+        const PreparedRadiograph p = prepareRadiograph(image, o);
+        // 9 + 9 around the inner two, 4 in the corner.
+        EXPECT_EQ(p.valid.count(), 20u * 12u - 9u - 9u - 4u);
+        EXPECT_FALSE(p.valid.at(5, 5));
+        EXPECT_FALSE(p.valid.at(6, 4));
+        EXPECT_FALSE(p.valid.at(13, 7));
+        EXPECT_FALSE(p.valid.at(1, 1));
+        EXPECT_TRUE(p.valid.at(7, 5));
+        for (float v : p.image.pixels) ASSERT_TRUE(std::isfinite(v)) << (log ? "log" : "invert");
+        // The finite pixels are prepared as before.
+        const double expected = log ? -std::log(28.0 / 255.0) : 255.0 - 28.0;
+        EXPECT_NEAR(p.image.at(9, 9), expected, 1e-5);
+    }
+    // Finite images are untouched (no pixel leaves the mask, no value changes).
+    Image finite(4, 4, 0.25f);
+    EXPECT_EQ(prepareRadiograph(finite, {}).valid.count(), 16u);
 }
 
 }  // namespace

@@ -178,4 +178,118 @@ TEST(TiffVolume, StacksNeedAVoxelSizeAndKeepPagesAsSlices) {
     EXPECT_EQ(fm::detectVolumeFormat(dir / "stack.tif"), "tiff");
 }
 
+// The directory entry of `tag` in a little-endian classic TIFF's first directory: its offset.
+std::size_t ifdEntry(const std::vector<std::uint8_t>& b, std::uint16_t tag) {
+    auto u16 = [&](std::size_t at) { return static_cast<std::uint16_t>(b[at] | b[at + 1] << 8); };
+    const std::size_t ifd = b[4] | b[5] << 8 | b[6] << 16 | std::size_t{b[7]} << 24;
+    for (std::size_t i = 0, n = u16(ifd); i < n; ++i)
+        if (u16(ifd + 2 + 12 * i) == tag) return ifd + 2 + 12 * i;
+    throw std::runtime_error("no tag " + std::to_string(tag));
+}
+
+std::vector<std::uint8_t> bytesOf(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), {}};
+}
+
+// The first strip's offset, through libtiff.
+std::size_t firstStrip(const fs::path& p) {
+    TIFF* t = TIFFOpen(p.string().c_str(), "r");
+    const std::uint64_t offset = TIFFGetStrileOffset(t, 0);
+    TIFFClose(t);
+    return static_cast<std::size_t>(offset);
+}
+
+// libtiff warns and goes on where strip data are corrupt ("Discarding N bytes to avoid buffer
+// overrun" in a PackBits run): that was a success with the values libtiff made up, ±3.4e38 in
+// a float page. Now the file is refused, naming it and saying why.
+TEST(TiffReader, WarningsAboutPixelDataAreErrors) {
+    const fs::path dir = fm::test::scratchDir("tiff_data_warnings");
+    TiffSpec s;
+    s.compression = 32773, s.width = 7, s.height = 5, s.rowsPerStrip = 2;
+    fm::test::writeTestTiff(dir / "packbits.tif", s);
+    auto b = bytesOf(dir / "packbits.tif");
+    b[firstStrip(dir / "packbits.tif")] = 0x7F;  // a literal run of 128 bytes in a 7-byte row
+    writeBytes(dir / "run.tif", b);
+    std::string e = errorOf(dir / "run.tif");
+    EXPECT_NE(e.find("run.tif"), std::string::npos) << e;
+    EXPECT_NE(e.find("corrupt image data"), std::string::npos) << e;
+    EXPECT_NE(e.find("PackBitsDecode"), std::string::npos) << e;
+    // A float radiograph, the same damage.
+    {
+        TIFF* t = TIFFOpen((dir / "float.tif").string().c_str(), "wl");
+        TIFFSetField(t, TIFFTAG_IMAGEWIDTH, 2);
+        TIFFSetField(t, TIFFTAG_IMAGELENGTH, 8);
+        TIFFSetField(t, TIFFTAG_BITSPERSAMPLE, 32);
+        TIFFSetField(t, TIFFTAG_SAMPLEFORMAT, SAMPLEFORMAT_IEEEFP);
+        TIFFSetField(t, TIFFTAG_SAMPLESPERPIXEL, 1);
+        TIFFSetField(t, TIFFTAG_PHOTOMETRIC, PHOTOMETRIC_MINISBLACK);
+        TIFFSetField(t, TIFFTAG_COMPRESSION, COMPRESSION_PACKBITS);
+        TIFFSetField(t, TIFFTAG_ROWSPERSTRIP, 8);
+        std::vector<float> row(2);
+        for (std::uint32_t y = 0; y < 8; ++y) {
+            for (int x = 0; x < 2; ++x) row[x] = 0.25f * x + float(y);
+            TIFFWriteScanline(t, row.data(), y, 0);
+        }
+        TIFFClose(t);
+    }
+    ASSERT_EQ(fm::readRadiograph(dir / "float.tif").image.at(1, 2), 2.25f);
+    b = bytesOf(dir / "float.tif");
+    b[firstStrip(dir / "float.tif")] = 0x7F;
+    writeBytes(dir / "float_run.tif", b);
+    try {
+        fm::readRadiograph(dir / "float_run.tif");
+        ADD_FAILURE() << "a float TIFF with a corrupt strip was read";
+    } catch (const fm::Error& error) {
+        EXPECT_NE(std::string(error.what()).find("float_run.tif: page 1: corrupt image data"), std::string::npos) << error.what();
+    }
+    // A directory warning about a tag that lays pixels out: a wrong count for "Predictor"
+    // made libtiff drop the predictor and return differences as values.
+    TiffSpec p;
+    p.bits = 16, p.compression = 5, p.predictor = 2, p.width = 37, p.height = 21;
+    fm::test::writeTestTiff(dir / "predictor.tif", p);
+    b = bytesOf(dir / "predictor.tif");
+    b[ifdEntry(b, 317) + 4] = 2;  // count 2
+    writeBytes(dir / "predictor_count.tif", b);
+    e = errorOf(dir / "predictor_count.tif");
+    EXPECT_NE(e.find("corrupt directory"), std::string::npos) << e;
+    EXPECT_NE(e.find("Predictor"), std::string::npos) << e;
+}
+
+// Warnings that change no pixel (an unknown tag, a directory out of order) stay warnings.
+TEST(TiffReader, BenignWarningsAreKept) {
+    const fs::path dir = fm::test::scratchDir("tiff_benign_warnings");
+    TiffSpec s;
+    s.compression = 5;
+    fm::test::writeTestTiff(dir / "t.tif", s);
+    auto b = bytesOf(dir / "t.tif");
+    const std::size_t planar = ifdEntry(b, 284);  // PlanarConfiguration: contiguous is the default
+    b[planar] = 0xE8, b[planar + 1] = 0xFD;       // tag 65000: unknown, and out of order
+    writeBytes(dir / "unknown.tif", b);
+    const fm::io::TiffContent c = fm::io::readTiff(dir / "unknown.tif");
+    ASSERT_FALSE(c.warnings.empty());
+    EXPECT_NE(c.warnings[0].find("65000"), std::string::npos) << c.warnings[0];
+    EXPECT_EQ(c.pages[0].values[3 * 7 + 5], float(fm::test::tiffPattern(5, 3, 0, 8)));
+    // The volume reader keeps them in the description.
+    const fm::Volume v = fm::loadVolume((dir / "unknown.tif").string() + "?spacing=1,1,1");
+    EXPECT_NE(v.meta.description.find("libtiff warning"), std::string::npos) << v.meta.description;
+}
+
+// TIFF bone volumes dropped libtiff's warnings: a corrupt strip in a stack is refused too.
+TEST(TiffVolume, CorruptStripsAreRefused) {
+    const fs::path dir = fm::test::scratchDir("tiff_volume_corrupt");
+    TiffSpec s;
+    s.bits = 16, s.pages = 3, s.compression = 32773, s.rowsPerStrip = 5;
+    fm::test::writeTestTiff(dir / "stack.tif", s);
+    auto b = bytesOf(dir / "stack.tif");
+    b[firstStrip(dir / "stack.tif")] = 0x7F;
+    writeBytes(dir / "bad.tif", b);
+    try {
+        fm::loadVolume((dir / "bad.tif").string() + "?spacing=0.5,0.5,1");
+        ADD_FAILURE() << "a stack with a corrupt strip was read";
+    } catch (const fm::Error& e) {
+        EXPECT_NE(std::string(e.what()).find("corrupt image data"), std::string::npos) << e.what();
+    }
+}
+
 }  // namespace
