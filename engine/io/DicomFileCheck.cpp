@@ -5,6 +5,7 @@
 #include <gdcmTag.h>
 #include <gdcmVR.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
@@ -13,16 +14,13 @@
 #include <sstream>
 #include <vector>
 
+#include "io/DicomEncoding.h"
+
 namespace fm {
 namespace {
 
 constexpr std::uint32_t kUndefinedLength = 0xffffffffu;
 constexpr int kMaxNesting = 16;  // real files nest sequences a few levels deep
-
-struct Encoding {
-    bool explicitVr = true;
-    bool bigEndian = false;
-};
 
 bool isLongFormVr(const char vr[2]) {
     static const char* const kLong[] = {"OB", "OD", "OF", "OL", "OV", "OW", "SQ",
@@ -32,14 +30,19 @@ bool isLongFormVr(const char vr[2]) {
     return false;
 }
 
-bool isKnownVr(const char vr[2]) {
-    static const char* const kAll[] = {"AE", "AS", "AT", "CS", "DA", "DS", "DT", "FL", "FD",
-                                       "IS", "LO", "LT", "OB", "OD", "OF", "OL", "OV", "OW",
-                                       "PN", "SH", "SL", "SQ", "SS", "ST", "SV", "TM", "UC",
-                                       "UI", "UL", "UN", "UR", "US", "UT", "UV"};
-    for (const char* v : kAll)
-        if (vr[0] == v[0] && vr[1] == v[1]) return true;
-    return false;
+bool isVr(const char vr[2], const char* name) {
+    return vr[0] == name[0] && vr[1] == name[1];
+}
+
+std::string tagText(std::uint16_t group, std::uint16_t element) {
+    char tag[16];
+    std::snprintf(tag, sizeof tag, "(%04X,%04X)", group, element);
+    return tag;
+}
+
+bool dictionarySaysSequence(std::uint16_t group, std::uint16_t element) {
+    return gdcm::Global::GetInstance().GetDicts().GetDictEntry(gdcm::Tag(group, element)).GetVR() ==
+           gdcm::VR::SQ;
 }
 
 // GDCM reads the image-related modules through gdcm::Attribute, which asserts that the stored
@@ -58,10 +61,9 @@ std::string vrProblem(std::uint16_t group, std::uint16_t element, const char vr[
     const gdcm::VR stored(gdcm::VR::GetVRType(text));
     const gdcm::VR expected =
         gdcm::Global::GetInstance().GetDicts().GetDictEntry(gdcm::Tag(group, element)).GetVR();
-    char tag[16];
-    std::snprintf(tag, sizeof tag, "(%04X,%04X)", group, element);
+    const std::string tag = tagText(group, element);
     if (expected != gdcm::VR::INVALID && !expected.Compatible(stored))
-        return std::string("element ") + tag + " has VR " + text + ", the dictionary says " +
+        return "element " + tag + " has VR " + text + ", the dictionary says " +
                gdcm::VR::GetVRString(expected);
     // Binary numbers must come whole.
     unsigned size = 0;
@@ -71,8 +73,27 @@ std::string vrProblem(std::uint16_t group, std::uint16_t element, const char vr[
         size = 4;
     if (stored == gdcm::VR::FD) size = 8;
     if (size && length % size != 0)
-        return std::string("element ") + tag + " has a length of " + std::to_string(length) +
+        return "element " + tag + " has a length of " + std::to_string(length) +
                ", not a multiple of its " + std::to_string(size) + "-byte values";
+    return {};
+}
+
+// GDCM's parser special-cases a few lengths for files of particular vendors and then reads
+// other bytes than the walk would (gdcmExplicitDataElement.txx, gdcmImplicitDataElement.txx,
+// GDCM_SUPPORT_BROKEN_IMPLEMENTATION, on in Debian's build). Empty when GDCM reads the element
+// as written.
+std::string workaroundProblem(std::uint16_t group, std::uint16_t element, bool explicitVr,
+                              const char vr[2], std::uint32_t length) {
+    const std::string tag = tagText(group, element);
+    if (explicitVr && group == 0x00ff && element == 0x4aa5)
+        return "element " + tag + ", which GDCM reads as pixel data up to the end of the file";
+    if (explicitVr && group == 0x0009 && isVr(vr, "UL") && length == 6)
+        return "element " + tag + " (UL, length 6), which GDCM reads as 4 bytes";
+    if (!explicitVr && length == 13 &&
+        !(group == 0x0008 && (element == 0x0070 || element == 0x0080)))
+        return "element " + tag + " has a length of 13, which GDCM reads as 10";
+    if (!explicitVr && group == 0x031e && element == 0x0324 && length == 0x31f031cu)
+        return "element " + tag + " has the length GDCM replaces for a Papyrus file";
     return {};
 }
 
@@ -81,7 +102,8 @@ class Walker {
     Walker(const unsigned char* data, std::size_t size) : data_(data), size_(size) {}
 
     std::string problem;
-    std::string transferSyntax;
+    std::string transferSyntax;  // as GDCM reads it (gdcmTransferSyntaxUid)
+    bool hasTransferSyntax = false;
     // Filled by the top-level walk (see DicomFileCheck).
     bool hasPixelData = false, encapsulated = false;
     std::size_t pixelDataLength = 0, firstFragmentOffset = 0, firstFragmentLength = 0;
@@ -105,12 +127,40 @@ class Walker {
         return false;
     }
 
+    // A length that does not fit: the message names the element, what it claims and what is
+    // left, so a corrupt length is told from a cut file.
+    bool failLength(std::size_t at, const std::string& what, std::uint32_t length,
+                    std::size_t left) {
+        return fail(at, what + " claims " + std::to_string(length) + " bytes, but only " +
+                            std::to_string(left) +
+                            " are left in its container (corrupt length or "
+                            "truncated file)");
+    }
+
+    // GDCM takes a printable unknown VR for UN, whose length is the 4 bytes after the 2
+    // reserved ones: the message says what GDCM would have allocated.
+    bool failVr(std::size_t pos, std::size_t end, std::uint16_t group, std::uint16_t element,
+                const char vr[2], DicomEncoding enc) {
+        std::string why =
+            "element " + tagText(group, element) + " has an invalid value representation";
+        const auto printable = [](char c) { return c >= ' ' && c <= '~'; };
+        if (printable(vr[0]) && printable(vr[1])) {
+            why += " '" + std::string(vr, 2) + "'";
+            if (pos + 12 <= end)
+                why += " (GDCM would read it as UN and allocate the " +
+                       std::to_string(u32(pos + 8, enc.bigEndian)) + " bytes it then claims)";
+        }
+        return fail(pos, why);
+    }
+
     // File meta group (always explicit VR little endian); records the transfer syntax.
     bool metaGroup(std::size_t& pos) {
         while (pos + 8 <= size_ && u16(pos, false) == 0x0002) {
             const std::uint16_t element = u16(pos + 2, false);
             const char vr[2] = {char(data_[pos + 4]), char(data_[pos + 5])};
             if (!isKnownVr(vr)) return fail(pos, "invalid VR in the file meta group");
+            // GDCM asserts on a sequence in the meta group.
+            if (isVr(vr, "SQ")) return fail(pos, "a sequence in the file meta group");
             std::size_t header = 8;
             std::uint32_t length = u16(pos + 6, false);
             if (isLongFormVr(vr)) {
@@ -118,14 +168,15 @@ class Walker {
                 header = 12;
                 length = u32(pos + 8, false);
             }
-            if (length == kUndefinedLength || pos + header + length > size_)
-                return fail(pos, "file meta element longer than the file");
+            if (length == kUndefinedLength || length > size_ - pos - header)
+                return failLength(pos, "file meta element " + tagText(0x0002, element), length,
+                                  size_ - std::min(size_, pos + header));
             if (const std::string why = vrProblem(0x0002, element, vr, length); !why.empty())
                 return fail(pos, why);
             if (element == 0x0010) {
-                std::string ts(reinterpret_cast<const char*>(data_ + pos + header), length);
-                while (!ts.empty() && (ts.back() == '\0' || ts.back() == ' ')) ts.pop_back();
-                transferSyntax = ts;
+                transferSyntax = gdcmTransferSyntaxUid(
+                    reinterpret_cast<const char*>(data_ + pos + header), length);
+                hasTransferSyntax = true;
             }
             pos += header + length;
         }
@@ -133,7 +184,8 @@ class Walker {
     }
 
     // Elements from pos up to end; with `toDelimiter` until an item delimiter instead.
-    bool dataSet(std::size_t& pos, std::size_t end, Encoding enc, bool toDelimiter, int depth) {
+    bool dataSet(std::size_t& pos, std::size_t end, DicomEncoding enc, bool toDelimiter,
+                 int depth) {
         if (depth > kMaxNesting) return fail(pos, "sequences nested too deeply");
         while (pos < end) {
             if (pos + 8 > end) return fail(pos, "element header cut off");
@@ -152,7 +204,7 @@ class Walker {
             if (enc.explicitVr) {
                 vr[0] = char(data_[pos + 4]);
                 vr[1] = char(data_[pos + 5]);
-                if (!isKnownVr(vr)) return fail(pos, "invalid value representation");
+                if (!isKnownVr(vr)) return failVr(pos, end, group, element, vr, enc);
                 if (isLongFormVr(vr)) {
                     if (pos + 12 > end) return fail(pos, "element header cut off");
                     header = 12;
@@ -166,37 +218,47 @@ class Walker {
             } else {
                 length = u32(pos + 4, enc.bigEndian);
             }
+            if (const std::string why =
+                    workaroundProblem(group, element, enc.explicitVr, vr, length);
+                !why.empty())
+                return fail(pos, why);
             const std::size_t start = pos;
+            const std::string tag = tagText(group, element);
             pos += header;
             const bool isPixelData = group == 0x7fe0 && element == 0x0010;
-            const bool isSq = enc.explicitVr && vr[0] == 'S' && vr[1] == 'Q';
-            const bool isUn = enc.explicitVr && vr[0] == 'U' && vr[1] == 'N';
+            const bool isSq = enc.explicitVr && isVr(vr, "SQ");
+            const bool isUn = enc.explicitVr && isVr(vr, "UN");
+            // GDCM asserts on both.
+            if (isPixelData && isSq) return fail(start, "pixel data " + tag + " with VR SQ");
             if (length == kUndefinedLength) {
-                if (isPixelData && depth == 0) {
-                    if (!fragments(pos, end, enc)) return false;
-                    hasPixelData = encapsulated = true;
-                    pixelDataEnd = pos;
+                // GDCM reads undefined-length pixel data as fragments at any depth (an icon's
+                // too), whatever the transfer syntax.
+                if (isPixelData) {
+                    if (enc.explicitVr && !isVr(vr, "OB") && !isVr(vr, "OW") && !isUn)
+                        return fail(start, "compressed pixel data " + tag + " with VR " +
+                                               std::string(vr, 2));
+                    if (!fragments(pos, end, enc, depth == 0)) return false;
+                    if (depth == 0) {
+                        hasPixelData = encapsulated = true;
+                        pixelDataEnd = pos;
+                    }
                     continue;
                 }
                 if (enc.explicitVr && !isSq && !isUn)
-                    return fail(start, "undefined length on a non-sequence element");
-                // CP-246: an undefined-length UN holds an implicit VR little endian sequence.
-                const Encoding inner = isUn ? Encoding{false, false} : enc;
+                    return fail(start, "undefined length on a non-sequence element " + tag);
+                // CP-246: an undefined-length UN holds an implicit VR sequence (GDCM keeps the
+                // data set's byte order).
+                const DicomEncoding inner = isUn ? DicomEncoding{false, enc.bigEndian} : enc;
                 if (!sequence(pos, end, inner, true, depth + 1)) return false;
                 continue;
             }
-            if (length > end - pos) {
-                char tag[16];
-                std::snprintf(tag, sizeof tag, "(%04X,%04X)", group, element);
-                return fail(start, std::string("element ") + tag +
-                                       " runs past the end of its container (truncated)");
-            }
-            const bool looksLikeItems = !enc.explicitVr && length >= 8 &&
-                                        u16(pos, enc.bigEndian) == 0xfffe &&
-                                        u16(pos + 2, enc.bigEndian) == 0xe000;
-            if (isSq || looksLikeItems) {
+            if (length > end - pos) return failLength(start, "element " + tag, length, end - pos);
+            if (isSq) {
                 std::size_t inner = pos;
                 if (!sequence(inner, pos + length, enc, false, depth + 1)) return false;
+            } else if (!isPixelData &&
+                       !valueAsSequence(pos, length, enc, vr, group, element, depth)) {
+                return false;
             }
             pos += length;
             if (isPixelData && depth == 0) {
@@ -209,8 +271,40 @@ class Walker {
         return true;
     }
 
+    // A defined-length value that GDCM may parse as a sequence later: every element of an
+    // implicit VR data set, and an explicit UN, OB or OW one whose tag is a sequence in the
+    // dictionary (gdcm::DataElement::GetValueAsSQ, which GDCM's image reader calls on the icon,
+    // the functional groups, ...). GetValueAsSQ parses it as implicit VR little endian, and on
+    // failure retries as explicit VR in both byte orders: lengths nobody checked, allocated
+    // before they are read. So whatever starts like items must be a well-formed implicit VR
+    // little endian sequence, and byte-swapped items are refused.
+    bool valueAsSequence(std::size_t pos, std::uint32_t length, DicomEncoding enc, const char vr[2],
+                         std::uint16_t group, std::uint16_t element, int depth) {
+        if (length < 4) return true;  // GDCM's item read fails on the tag, before any length
+        const bool sequenceTag = dictionarySaysSequence(group, element);
+        const bool bulkVr = isVr(vr, "UN") || isVr(vr, "OB") || isVr(vr, "OW");
+        if (enc.explicitVr && !(sequenceTag && bulkVr)) return true;
+        // Raw bytes, little endian: GetValueAsSQ reads with GDCM's no-swap swapper.
+        const std::uint16_t firstGroup = u16(pos, false), firstElement = u16(pos + 2, false);
+        const std::string tag = tagText(group, element);
+        if (sequenceTag && firstGroup == 0xfeff &&
+            (firstElement == 0x00e0 || firstElement == 0xdde0))
+            return fail(pos, "element " + tag + " holds byte-swapped sequence items");
+        const bool item = firstGroup == 0xfffe && firstElement == 0xe000;
+        const bool delimiter = firstGroup == 0xfffe && firstElement == 0xe0dd;
+        // Implicit VR values of other tags are checked when they start like items (GDCM leaves
+        // them alone; a value that merely looks like items is rare).
+        if (!item && !(delimiter && sequenceTag)) return true;
+        std::size_t inner = pos;
+        if (sequence(inner, pos + length, DicomEncoding{false, false}, false, depth + 1))
+            return true;
+        problem = "element " + tag + " holds what GDCM parses as a sequence: " + problem;
+        return false;
+    }
+
     // Items of a sequence: up to `end` (defined length) or up to the sequence delimiter.
-    bool sequence(std::size_t& pos, std::size_t end, Encoding enc, bool undefined, int depth) {
+    bool sequence(std::size_t& pos, std::size_t end, DicomEncoding enc, bool undefined, int depth) {
+        const std::size_t start = pos;
         while (pos < end || undefined) {
             if (pos + 8 > end) return fail(pos, "sequence item cut off");
             const std::uint16_t group = u16(pos, enc.bigEndian);
@@ -221,21 +315,29 @@ class Walker {
                 return true;
             }
             if (group != 0xfffe || element != 0xe000) return fail(pos, "expected a sequence item");
+            const std::size_t item = pos;
             pos += 8;
             if (length == kUndefinedLength) {
                 if (!dataSet(pos, end, enc, true, depth)) return false;
             } else {
-                if (length > end - pos) return fail(pos, "sequence item runs past the end");
+                if (length > end - pos) return failLength(item, "sequence item", length, end - pos);
                 std::size_t inner = pos;
                 if (!dataSet(inner, pos + length, enc, false, depth)) return false;
                 pos += length;
             }
+            // GDCM's workarounds for two Philips files end a defined-length sequence early at
+            // these lengths (gdcmSequenceOfItems.h): it would read the rest as elements.
+            const std::size_t total = end - start, read = pos - start;
+            if (!undefined && ((total == 778 && read == 774) || (total == 444 && read == 213)))
+                return fail(item, "a sequence of " + std::to_string(total) +
+                                      " bytes that GDCM ends after " + std::to_string(read));
         }
         return true;
     }
 
     // Encapsulated pixel data: an offset table item, then fragments, then the delimiter.
-    bool fragments(std::size_t& pos, std::size_t end, Encoding enc) {
+    // `record` for the top-level pixel data (an icon's is only checked).
+    bool fragments(std::size_t& pos, std::size_t end, DicomEncoding enc, bool record) {
         int items = 0;
         for (;;) {
             if (pos + 8 > end) return fail(pos, "compressed pixel data cut off");
@@ -244,13 +346,18 @@ class Walker {
             const std::uint32_t length = u32(pos + 4, enc.bigEndian);
             pos += 8;
             if (group == 0xfffe && element == 0xe0dd) {
+                // GDCM allocates and reads the delimiter's length as if it were a fragment.
+                if (length != 0)
+                    return fail(pos - 8, "pixel data sequence delimiter claims " +
+                                             std::to_string(length) + " bytes (0 expected)");
                 if (items < 2) return fail(pos, "compressed pixel data without fragments");
                 return true;
             }
             if (group != 0xfffe || element != 0xe000 || length == kUndefinedLength)
                 return fail(pos - 8, "expected a pixel data fragment");
-            if (length > end - pos) return fail(pos - 8, "pixel data fragment runs past the end");
-            if (items == 1) {  // item 0 is the basic offset table
+            if (length > end - pos)
+                return failLength(pos - 8, "pixel data fragment", length, end - pos);
+            if (items == 1 && record) {  // item 0 is the basic offset table
                 firstFragmentOffset = pos;
                 firstFragmentLength = length;
             }
@@ -271,34 +378,36 @@ DicomFileCheck checkDicomBytes(const unsigned char* data, std::size_t size) {
     Walker walker(data, size);
     check.hasMagic = size >= 132 && std::memcmp(data + 128, "DICM", 4) == 0;
     std::size_t pos = check.hasMagic ? 132 : 0;
-    if (!walker.metaGroup(pos)) {
-        check.problem = walker.problem;
-        return check;
-    }
-    check.transferSyntax = walker.transferSyntax;
-    Encoding enc;
-    const std::string& ts = check.transferSyntax;
-    if (ts.empty()) {
-        // No meta group: GDCM guesses; accept only what looks like a plain data set.
-        if (pos + 6 > size) {
-            check.problem = "too short for a DICOM data set";
+    // The data set is walked in the encoding GDCM will parse it in (DicomEncoding.h): from
+    // the file meta group's transfer syntax when the file starts with group 0002 (GDCM reads
+    // such a group with or without its group length), else by GDCM's guess.
+    DicomEncodingChoice choice;
+    std::string guessed;  // how the encoding was guessed, for the message
+    if (size >= pos + 8 && walker.u16(pos, false) == 0x0002) {
+        if (!walker.metaGroup(pos)) {
+            check.problem = walker.problem;
             return check;
         }
-        const char vr[2] = {char(data[pos + 4]), char(data[pos + 5])};
-        enc.explicitVr = isKnownVr(vr);
-    } else if (ts == "1.2.840.10008.1.2") {
-        enc.explicitVr = false;
-    } else if (ts == "1.2.840.10008.1.2.2") {
-        enc.bigEndian = true;
-    } else if (ts == "1.2.840.10008.1.2.1.99") {
-        check.problem = "deflated transfer syntax is not supported";
+        check.transferSyntax = walker.transferSyntax;
+        if (!walker.hasTransferSyntax) {
+            check.problem = "the file meta group has no transfer syntax (0002,0010)";
+            return check;
+        }
+        choice = encodingOfTransferSyntax(walker.transferSyntax);
+    } else {
+        choice = guessedEncoding(data + pos, size - std::min(size, pos));
+        guessed = "no file meta group: read as GDCM guesses from its first element, " +
+                  describe(choice.encoding) + ": ";
+    }
+    if (!choice.problem.empty()) {
+        check.problem = choice.problem;
         return check;
     }
     if (pos >= size) {
         check.problem = "no data set after the file meta group";
         return check;
     }
-    bool ok = walker.dataSet(pos, size, enc, false, 0);
+    bool ok = walker.dataSet(pos, size, choice.encoding, false, 0);
     if (!ok && walker.hasPixelData) {
         // Bytes after the pixel data that are not elements (zero padding, scanner leftovers):
         // legal in practice. The content ends with the pixel data; the rest is ignored.
@@ -309,7 +418,7 @@ DicomFileCheck checkDicomBytes(const unsigned char* data, std::size_t size) {
         check.contentBytes = size;
     }
     if (!ok) {
-        check.problem = walker.problem;
+        check.problem = guessed + walker.problem;
         return check;
     }
     check.hasPixelData = walker.hasPixelData;

@@ -4,6 +4,12 @@
 // garbage VR) make its parser abort the whole process. This walk over the byte structure
 // (preamble, meta group, every element length, sequences, items, encapsulated fragments)
 // refuses such files first, so only well-formed files reach GDCM.
+// GDCM allocates every value at the length its header claims before reading it, so the check
+// is also what keeps a corrupt length from allocating gigabytes. It holds only if the walk
+// sees the elements GDCM will parse: the data set is walked in the encoding GDCM chooses
+// (DicomEncoding.h), GDCM's vendor workarounds that read other lengths than written are
+// refused, and so is anything GDCM may later re-parse as a sequence unless it is a well-formed
+// one. GDCM then parses the checked bytes from memory, not the file again.
 #include <cstddef>
 #include <filesystem>
 #include <string>
@@ -12,10 +18,10 @@
 namespace fm {
 
 struct DicomFileCheck {
-    bool hasMagic = false;    // "DICM" at byte 128
-    bool wellFormed = false;  // every element fits in its container, in the declared encoding
-    std::string transferSyntax;
-    std::string problem;  // why it is not well formed (with a byte offset)
+    bool hasMagic = false;       // "DICM" at byte 128
+    bool wellFormed = false;     // every element fits in its container, in GDCM's encoding
+    std::string transferSyntax;  // (0002,0010) as GDCM reads it; empty without a meta group
+    std::string problem;         // why it is not well formed (with a byte offset)
 
     // Where the top-level pixel data (7FE0,0010) is, as the walk found it (lengths checked
     // against the file): native data has `pixelDataLength` bytes; encapsulated data has its

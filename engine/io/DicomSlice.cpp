@@ -11,9 +11,9 @@
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
-#include <fstream>
 #include <limits>
 #include <mutex>
+#include <set>
 #include <sstream>
 
 #include "core/Error.h"
@@ -38,11 +38,12 @@ std::string fileLabel(const std::filesystem::path& file) {
     throw Error(fileLabel(file) + ": " + why);
 }
 
-bool hasDicomMagic(const std::filesystem::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    char buffer[132] = {};
-    if (!in.read(buffer, sizeof buffer)) return false;
-    return std::memcmp(buffer + 128, "DICM", 4) == 0;
+// What GDCM parses: the checked bytes, without the trailing padding DicomFileCheck ignores
+// (from memory, so that what GDCM reads is what was checked).
+std::istringstream checkedBytes(const std::vector<unsigned char>& content,
+                                const DicomFileCheck& check) {
+    const auto end = content.begin() + static_cast<std::ptrdiff_t>(check.contentBytes);
+    return std::istringstream(std::string(content.begin(), end));
 }
 
 std::string trim(std::string s) {
@@ -219,16 +220,18 @@ std::optional<DicomSliceHeader> readDicomSliceHeader(const std::filesystem::path
         return std::nullopt;  // not DICOM: README, licence text, ...
     }
     gdcm::Reader reader;
-    reader.SetFileName(file.string().c_str());
+    std::istringstream stream = checkedBytes(content, check);
+    reader.SetStream(stream);
     bool ok = false;
     try {
-        // Stop before the pixel data: the header pass must stay cheap on large folders.
-        ok = reader.ReadUpToTag(kPixelDataTag);
+        // Stop at the pixel data without loading it: the header pass must stay cheap on large
+        // folders.
+        ok = reader.ReadUpToTag(kPixelDataTag, std::set<gdcm::Tag>{kPixelDataTag});
     } catch (const std::exception&) {
         ok = false;
     }
     if (!ok) {
-        if (hasDicomMagic(file)) fail(file, "corrupt DICOM file: its header cannot be parsed");
+        if (check.hasMagic) fail(file, "corrupt DICOM file: its header cannot be parsed");
         return std::nullopt;  // not DICOM: README, licence text, ...
     }
     const gdcm::DataSet& ds = reader.GetFile().GetDataSet();
@@ -419,20 +422,21 @@ std::vector<float> readDicomSlicePixels(const DicomSliceHeader& h, float padding
         gdcm::TransferSyntax::GetTSType(h.transferSyntax.c_str()) == gdcm::TransferSyntax::TS_END)
         fail(h.file, "unknown transfer syntax " + h.transferSyntax);
 
-    gdcm::ImageReader reader;
-    // Trailing padding after the pixel data (DicomFileCheck): GDCM reads only the well-formed
-    // content, from memory.
-    std::istringstream prefix;
-    if (h.trailingBytes > 0) {
-        std::ifstream in(h.file, std::ios::binary);
-        std::string bytes(h.contentBytes, '\0');
-        if (!in.read(bytes.data(), static_cast<std::streamsize>(bytes.size())))
-            fail(h.file, "cannot read the file");
-        prefix.str(std::move(bytes));
-        reader.SetStream(prefix);
-    } else {
-        reader.SetFileName(h.file.string().c_str());
+    // The file is checked again, and GDCM parses exactly those bytes: the file may have
+    // changed since its header was read.
+    std::istringstream stream;
+    {
+        std::vector<unsigned char> content;
+        const DicomFileCheck check = checkDicomFile(h.file, &content);
+        if (!check.wellFormed) fail(h.file, "corrupt DICOM file: " + check.problem);
+        if (check.contentBytes != h.contentBytes || check.encapsulated != h.encapsulated ||
+            check.pixelDataLength != h.pixelDataLength)
+            fail(h.file, "changed since its header was read");
+        checkClaimedImageSize(h, check, content);
+        stream = checkedBytes(content, check);
     }
+    gdcm::ImageReader reader;
+    reader.SetStream(stream);
     bool ok = false;
     try {
         ok = reader.Read();

@@ -83,8 +83,9 @@ DicomSliceGeometry dicomSliceGeometry(const DicomSliceHeader& header);
 // included) and applies the modality rescale. Returns rows * columns floats, column index
 // fastest. Stored values equal to the PixelPaddingValue become `paddingValue`.
 // Throws fm::Error naming the file on missing, short or undecodable pixel data.
-// `header` must come from readDicomSliceHeader, which checked the file's byte structure
-// (DicomFileCheck.h) before GDCM parsed it.
+// `header` must come from readDicomSliceHeader. The file's byte structure is checked again
+// (DicomFileCheck.h) and GDCM parses those checked bytes from memory; a file that changed since
+// its header was read is refused.
 std::vector<float> readDicomSlicePixels(const DicomSliceHeader& header, float paddingValue);
 
 // Silences GDCM's own warning/error printing (we report failures as fm::Error instead).

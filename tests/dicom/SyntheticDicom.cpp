@@ -55,7 +55,8 @@ bool writeSyntheticSlice(const SyntheticSlice& s, const std::filesystem::path& f
                                            static_cast<unsigned short>(s.bitsStored - 1),
                                            s.isSigned ? 1 : 0));
     image.SetPhotometricInterpretation(gdcm::PhotometricInterpretation::MONOCHROME2);
-    image.SetTransferSyntax(gdcm::TransferSyntax::ExplicitVRLittleEndian);
+    image.SetTransferSyntax(s.implicitVr ? gdcm::TransferSyntax::ImplicitVRLittleEndian
+                                         : gdcm::TransferSyntax::ExplicitVRLittleEndian);
     const double origin[3] = {s.position.x, s.position.y, s.position.z};
     image.SetOrigin(origin);
     const double cosines[6] = {s.rowDirection.x,    s.rowDirection.y,    s.rowDirection.z,

@@ -31,6 +31,7 @@ struct SyntheticSlice {
     std::string seriesDescription = "synthetic";
     int instanceNumber = 1;
     std::optional<std::int16_t> pixelPadding;
+    bool implicitVr = false;  // Implicit VR Little Endian instead of explicit
 };
 
 // Stored value used by the tests: distinct for every (column, row, slice).
@@ -38,8 +39,8 @@ std::int16_t syntheticStoredValue(int column, int row, int slice);
 // A slice filled with syntheticStoredValue(., ., sliceIndex).
 SyntheticSlice makeSyntheticSlice(int sliceIndex, double z);
 
-// Writes `slice` to `file` (Explicit VR Little Endian, CT Image Storage). Fails the test
-// (ADD_FAILURE) and returns false if GDCM cannot write it.
+// Writes `slice` to `file` (Explicit VR Little Endian unless `implicitVr`, CT Image Storage).
+// Fails the test (ADD_FAILURE) and returns false if GDCM cannot write it.
 bool writeSyntheticSlice(const SyntheticSlice& slice, const std::filesystem::path& file);
 
 // Rewrites one element of an existing file: sets it to `value` (string VRs), or removes it
