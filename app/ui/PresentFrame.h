@@ -32,7 +32,8 @@ class FramePresenter {
         int mismatchedFrames = 0;          // with checkEveryFrame: differed from a whole redraw
     };
     const Stats& stats() const { return stats_; }
-    // Tests: also draw every frame whole elsewhere and compare it with the kept frame.
+    // Tests: also draw every frame whole (into the kept frame's target, which is then restored)
+    // and count the frames whose partial redraw differs from it.
     void checkEveryFrame(bool on) { check_ = on; }
     // The next frame is drawn whole (e.g. after GL state outside ImGui's draw lists changed).
     void invalidate() { last_ = {}; }
@@ -44,10 +45,11 @@ class FramePresenter {
         void release();
     };
     void draw(ImDrawData& data, glm::ivec2 size, const std::vector<PixelRect>& rects);
-    void checkAgainstWholeFrame(ImDrawData& data, glm::ivec2 size);
+    // The pixels of `data` drawn whole, the kept frame left as it was.
+    std::vector<std::uint8_t> drawWholeForComparison(ImDrawData& data, glm::ivec2 size);
 
-    Target kept_, wholeFrame_;
-    glm::ivec2 size_{0};
+    Target kept_, saved_;  // saved_: the kept frame while the check draws over it
+    glm::ivec2 size_{0}, savedSize_{0};
     FrameDrawing last_;
     Stats stats_;
     bool check_ = false;
