@@ -8,21 +8,32 @@
 #include "core/Error.h"
 
 namespace fm::io {
+namespace {
+
+// "a camera calibration", "an Autoscoper tracking file".
+std::string withArticle(const std::string& what) {
+    const bool vowel = !what.empty() && std::string_view("AEIOUaeiou").find(what[0]) !=
+                                            std::string_view::npos;
+    return (vowel ? "an " : "a ") + what;
+}
+
+}  // namespace
 
 std::string readTextFile(const std::filesystem::path& path, std::size_t maxBytes,
                          const std::string& what) {
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec))
-        throw Error(path.string() + ": is a folder, not a " + what);
+        throw Error(path.string() + ": is a folder, not " + withArticle(what));
     if (!std::filesystem::exists(path, ec))
         throw Error(path.string() + ": the " + what + " does not exist");
     if (!std::filesystem::is_regular_file(path, ec))
-        throw Error(path.string() + ": is not a regular file (a device or pipe?), not a " + what);
+        throw Error(path.string() + ": is not a regular file (a device or pipe?), not " +
+                    withArticle(what));
     const auto size = std::filesystem::file_size(path, ec);
     if (ec) throw Error(path.string() + ": cannot open the " + what + " (" + ec.message() + ")");
     if (size > maxBytes)
-        throw Error(path.string() + ": " + std::to_string(size) + " bytes is too large for a " +
-                    what + " (limit " + std::to_string(maxBytes) + ")");
+        throw Error(path.string() + ": " + std::to_string(size) + " bytes is too large for " +
+                    withArticle(what) + " (limit " + std::to_string(maxBytes) + ")");
     std::ifstream in(path, std::ios::binary);
     if (!in) throw Error(path.string() + ": cannot open the " + what);
     std::string text(static_cast<std::size_t>(size), '\0');

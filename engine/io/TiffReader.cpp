@@ -9,6 +9,7 @@
 #include <tiffio.h>
 
 #include "core/Error.h"
+#include "io/ByteSource.h"
 
 namespace fm::io {
 
@@ -76,9 +77,7 @@ struct TiffFile {
         TIFFOpenOptionsSetErrorHandlerExtR(options.get(), onError, &messages);
         TIFFOpenOptionsSetWarningHandlerExtR(options.get(), onWarning, &messages);
         TIFFOpenOptionsSetMaxSingleMemAlloc(options.get(), kMaxSingleAllocation);
-        std::error_code ec;
-        if (!std::filesystem::is_regular_file(path, ec))
-            throw Error(what + ": cannot open the TIFF file (no such file)");
+        io::fileSize(path);  // missing, a folder or a device: named as such
         tif = TIFFOpenExt(what.c_str(), "r", options.get());
         if (!tif) fail("not a readable TIFF file");
     }

@@ -78,4 +78,26 @@ TEST(RadiographFormats, ExtensionsChooseTheReader) {
         << errorOf(dir / "x.gif");
 }
 
+
+// A folder or a device given as a radiograph is named as such in every format, not "no such
+// file" (the TIFF reader said that) and never read (a device would be read for ever).
+TEST(RadiographFormats, AFolderOrADeviceIsNamedAsSuch) {
+    const fs::path dir = fm::test::scratchDir("radiograph_not_files");
+    for (const char* extension : {".tif", ".png", ".jpg", ".bmp"}) {
+        const fs::path folder = dir / (std::string("folder") + extension);
+        fs::create_directories(folder);
+        std::string e = errorOf(folder);
+        EXPECT_NE(e.find("is a folder, not a file"), std::string::npos) << extension << ": " << e;
+        EXPECT_NE(e.find(folder.filename().string()), std::string::npos) << e;
+        const fs::path device = dir / (std::string("device") + extension);
+        fs::remove(device);
+        fs::create_symlink("/dev/zero", device);
+        e = errorOf(device);
+        EXPECT_NE(e.find("not a regular file"), std::string::npos) << extension << ": " << e;
+        EXPECT_EQ(e.find("no such file"), std::string::npos) << e;
+        e = errorOf(dir / (std::string("missing") + extension));
+        EXPECT_NE(e.find("not found"), std::string::npos) << extension << ": " << e;
+    }
+}
+
 }  // namespace
