@@ -19,6 +19,7 @@
 #include "bones/BoneVolume.h"
 #include "cli/BoneOptions.h"
 #include "cli/CommandRegistry.h"
+#include "cli/ModeOptions.h"
 #include "cli/RegisterXray.h"
 #include "cli/SearchCli.h"
 #include "cli/SliceCli.h"
@@ -92,9 +93,6 @@ void runRegisterBone(const RegisterArgs& a) {
         throw fm::Error("register takes --bone NAME (not --without)");
     if (a.bones.labels.empty())
         throw fm::Error("register --bone needs --labels (a label map, phantom:knee or components)");
-    if (!a.reference.empty() || !a.referencePose.empty() || !a.start.empty() || !a.truth.empty())
-        throw fm::Error("register --bone makes its own reference: use --bone-motion (and --pose "
-                        "for the camera), not --reference/--reference-pose/--start/--truth");
     if (!(a.marginMm >= 0.0) || a.marginMm > 500.0)
         throw fm::Error("--footprint-margin must be 0..500 mm");
     const fm::RegistrationSettings settings = fm::cli::registrationSettings(a.search);
@@ -156,20 +154,51 @@ void printPoseRow(const char* label, const std::array<double, 6>& v) {
                 v[5]);
 }
 
+// register's modes and the options each takes (cli/ModeOptions.h); the given options choose
+// one, and the rest are refused before any work.
+const std::vector<fm::cli::CommandMode>& registerModes() {
+    const auto withSearch = [](std::vector<std::string> own) {
+        for (std::string& name : fm::cli::searchOptionNames()) own.push_back(std::move(name));
+        return own;
+    };
+    static const std::vector<fm::cli::CommandMode> modes{
+        // The tracker's search: its own settings, seeded.
+        {"register --trial", "one bone in one frame of a trial, in its cameras",
+         {"trial", "bone", "frame", "cameras", "start", "out", "seed", "threads"}},
+        {"register --model", "models in a real radiograph",
+         withSearch({"reference", "camera", "model", "start", "frame", "out", "mask", "mu", "page",
+                     "invert", "log", "i0", "exclude-below", "erode", "roi"})},
+        {"register --slice", "a 2D image against slices of a volume",
+         withSearch({"slice", "volume", "reference-pose", "reference", "start", "truth", "size",
+                     "spacing", "thickness", "interpolation"})},
+        {"register --bone", "one bone of a labelled CT against a reference it renders",
+         withSearch({"volume", "labels", "label-table", "bone", "without", "bone-motion", "pose",
+                     "biplane", "no-rest", "footprint-margin", "values"})},
+        {"register", "a CT against one image, the 2011 pose",
+         withSearch({"volume", "reference-pose", "reference", "geometry", "start", "truth",
+                     "values"})}};
+    return modes;
+}
+
+const fm::cli::CommandMode& registerMode(const RegisterArgs& a,
+                                         const fm::cli::TrialRegisterArgs& trial) {
+    const auto& modes = registerModes();
+    if (!trial.trial.empty()) return modes[0];
+    if (!a.xray.models.empty() || !a.xray.camera.empty()) return modes[1];
+    if (a.slice) return modes[2];
+    if (!a.bones.bone.empty() || !a.bones.labels.empty() || !a.bones.without.empty())
+        return modes[3];
+    return modes[4];
+}
+
 void runRegister(const RegisterArgs& a, bool similarityGiven, int frame) {
     if (!a.xray.models.empty() || !a.xray.camera.empty()) {
-        if (a.slice || !a.referencePose.empty() || !a.geometry.empty() || !a.truth.empty() ||
-            !a.bones.bone.empty() || !a.bones.labels.empty())
-            throw fm::Error("--camera/--model register models in a real radiograph: they do not go "
-                            "with --slice, --reference-pose, --geometry, --truth or --bone");
         if (a.xray.models.empty()) throw fm::Error("--camera needs --model MODEL");
         fm::cli::XrayRegisterArgs xray = a.xray;
         xray.frame = frame;
         fm::cli::runXrayRegister(a.reference, xray, a.start, a.search, similarityGiven);
         return;
     }
-    if (!a.xray.outs.empty() || !a.xray.masks.empty())
-        throw fm::Error("--out and --mask need --camera and --model (real X-ray registration)");
     if (a.slice) {
         if (!a.geometry.empty())
             throw fm::Error("--slice: --geometry is the X-ray projection geometry; a slice "
@@ -186,8 +215,6 @@ void runRegister(const RegisterArgs& a, bool similarityGiven, int frame) {
         s.search = a.search;
         return fm::cli::runSliceRegister(s);
     }
-    if (!a.grid.spacing.empty() || !a.grid.size.empty() || a.grid.thickness != 0.0)
-        throw fm::Error("--size, --spacing and --thickness need --slice");
     if (!a.bones.bone.empty() || !a.bones.labels.empty() || !a.bones.without.empty())
         return runRegisterBone(a);
     const bool synthetic = !a.referencePose.empty();
@@ -295,7 +322,8 @@ FM_REGISTER_COMMAND("register", 40, [](CLI::App& app) {
     cmd->add_option("--start", a->start,
                     "Start pose x,y,z,az,el,rot (default 0,0,0,0,0,0); with --model: a .jts or "
                     ".tra file (row --frame) or x,y,z,zrot,xrot,yrot, one per --model (or one "
-                    ".tra for all)");
+                    ".tra for all); with --trial: a .tra (its pose at --frame; default the "
+                    "trial's keyframe)");
     cmd->add_option("--truth", a->truth, "True pose of --reference, if known (errors reported)");
     fm::cli::addSearchOptions(cmd, a->search);
     fm::cli::addBoneOptions(cmd, a->bones);
@@ -320,8 +348,15 @@ FM_REGISTER_COMMAND("register", 40, [](CLI::App& app) {
     auto trial = std::make_shared<fm::cli::TrialRegisterArgs>();
     fm::cli::addTrialRegisterOptions(cmd, *trial);
     cmd->callback([a, trial, cmd] {
+        fm::cli::refuseOptionsOutside(*cmd, registerMode(*a, *trial), registerModes());
         if (!trial->trial.empty()) {
-            trial->bone = a->bones.bone;  // --bone names the trial's bone here
+            // --bone, --start and --out are the command's own; here they are the trial's bone,
+            // a .tra holding its start pose at --frame and the .tra to write.
+            trial->bone = a->bones.bone;
+            if (a->start.size() > 1 || a->xray.outs.size() > 1)
+                throw fm::Error("register --trial: give one --start .tra and one --out .tra");
+            trial->start = a->start.empty() ? std::string() : a->start[0];
+            trial->out = a->xray.outs.empty() ? std::string() : a->xray.outs[0];
             trial->seed = a->search.seed;
             trial->threads = a->search.threads;
             fm::cli::runTrialRegister(*trial);

@@ -47,7 +47,8 @@ void addXrayRegisterOptions(CLI::App* cmd, XrayRegisterArgs& a) {
                     "geometry JSON): real X-ray mode, with --model");
     cmd->add_option("--model", a.models, "Implant or bone model (.stl, .ply, .obj); repeatable");
     cmd->add_option("--out", a.outs,
-                    "Write the found pose: .jts (one per model) or .tra (one for all)");
+                    "Write the found pose: .jts (one per model) or .tra (one for all); with "
+                    "--trial: the .tra of the result at --frame");
     cmd->add_option("--mask", a.masks,
                     "Label mask per model (binary image): the silhouette IoU is reported");
     cmd->add_option("--mu", a.mu, "Model attenuation 1/mm (default 1.2, cobalt-chromium)");

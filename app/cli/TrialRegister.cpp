@@ -2,25 +2,32 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 
 #include "cli/CameraList.h"
 #include "core/Error.h"
+#include "io/OutputPath.h"
 #include "pose/AutoscoperTra.h"
 #include "track/TrialScene.h"
 
 namespace fm::cli {
 
-// --bone is the command's own (BoneOptions); with --trial it names the trial's bone.
+// --bone, --start and --out are the command's own (one spelling in every mode); with --trial
+// they name the trial's bone, its start .tra and the result .tra.
 void addTrialRegisterOptions(CLI::App* cmd, TrialRegisterArgs& a) {
     cmd->add_option("--trial", a.trial, "Register a bone in a trial's frame: .cfg or .json");
     cmd->add_option("--frame", a.frame, "With --trial: the frame (0-based); with --model: the row of .jts/.tra --start and --out files (default 0)");
     cmd->add_option("--cameras", a.cameras, "With --trial: cameras to use, e.g. 1 (default: all)");
-    cmd->add_option("--start-tra", a.start, "With --trial: .tra holding the start pose at --frame");
-    cmd->add_option("--out-tra", a.out, "With --trial: write the result at --frame to this .tra");
 }
 
 void runTrialRegister(const TrialRegisterArgs& a) {
     if (a.bone.empty() || a.frame < 0) throw Error("--trial needs --bone NAME and --frame K");
+    // Outputs before any work: a .tra in a folder that can be written.
+    if (!a.out.empty()) {
+        if (std::filesystem::path(a.out).extension() != ".tra")
+            throw Error("--out " + a.out + ": register --trial writes a .tra (Autoscoper's format)");
+        io::checkOutputPath(a.out, "--out");
+    }
     const Trial trial = readTrial(a.trial);
     const TrialScene scene = loadTrialScene(trial, {a.bone}, a.threads);
     for (const std::string& w : scene.trial.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
@@ -42,7 +49,7 @@ void runTrialRegister(const TrialRegisterArgs& a) {
                                                                  : p.worldFromVolume;
     }
     if (!start) throw Error("no start pose for " + a.bone + " at frame " + std::to_string(a.frame) +
-                            ": give --start-tra or a keyframe in the trial");
+                            ": give --start S.tra or a keyframe in the trial");
     const std::vector<std::size_t> cameras = parseCameraList(a.cameras, scene.cameras.size());
     TrackSettings settings;
     settings.registration.seed = a.seed;
@@ -55,6 +62,8 @@ void runTrialRegister(const TrialRegisterArgs& a) {
     const RigidTransform tra = traPoseFromObject(scene, a.bone, *r.worldFromBone);
     const auto m = tra.toRowMajor4x4();
     std::printf("bone        %s, frame %d, %s\n", a.bone.c_str(), a.frame, r.note.c_str());
+    std::printf("start       %s\n", a.start.empty() ? "the trial's keyframe at this frame"
+                                                    : (a.start + " at this frame").c_str());
     std::printf("pose (.tra, Autoscoper volume frame, row-major):\n");
     for (int row = 0; row < 4; ++row)
         std::printf("  %12.6f %12.6f %12.6f %12.6f\n", m[4 * row], m[4 * row + 1], m[4 * row + 2], m[4 * row + 3]);

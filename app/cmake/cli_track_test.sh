@@ -118,6 +118,33 @@ before_work "seed" "$FM" "${K[@]}" --out "$T/r.tra" --seed 18446744073709551616
 before_work "names camera 1 twice" "$FM" "${K[@]}" --out "$T/r.tra" --cameras 1,1
 before_work "distinct camera numbers" "$FM" "${K[@]}" --out "$T/r.tra" --cameras 1,
 expect_error "names camera 1 twice" "$FM" register --trial "$TRIAL" --bone radius --frame 0 --cameras 1,1
+# register --trial spells the start and the result as every command does: --start, --out.
+R=(register --trial "$TRIAL" --bone radius --frame 0 --threads 2)
+"$FM" "${R[@]}" --out "$T/reg0.tra" > "$T/out" 2>&1 || { cat "$T/out"; fail "register --trial --out failed"; }
+grep -q "^start       the trial's keyframe" "$T/out" || { cat "$T/out"; fail "the keyframe start is not said"; }
+awk -F, 'NR==1 && $1=="NaN" {exit 1} NR>1 && $1!="NaN" {exit 1}' "$T/reg0.tra" || fail "reg0.tra: frame 0 only"
+"$FM" "${R[@]}" --start "$T/reg0.tra" --out "$T/reg1.tra" > "$T/out" 2>&1 || { cat "$T/out"; fail "register --trial --start failed"; }
+grep -q "^start       $T/reg0.tra at this frame" "$T/out" || { cat "$T/out"; fail "--start was not used"; }
+[ -s "$T/reg1.tra" ] || fail "--out with --start wrote nothing"
+# The old spellings and options of other modes are refused (exit 2) before any work.
+usage_error() {  # usage_error TEXT command...: exit 2 naming TEXT, nothing registered
+    local text=$1; shift
+    set +e; "$@" >"$T/out" 2>&1; local rc=$?; set -e
+    [ $rc -eq 2 ] || { cat "$T/out"; fail "'$*' exited $rc, not 2"; }
+    grep -q -- "$text" "$T/out" || { cat "$T/out"; fail "'$*' did not say '$text'"; }
+    if grep -q "^bone " "$T/out"; then fail "'$*' registered before refusing"; fi
+}
+usage_error "unknown option --start-tra" "$FM" "${R[@]}" --start-tra "$T/reg0.tra"
+usage_error "unknown option --out-tra" "$FM" "${R[@]}" --out-tra "$T/x.tra"
+usage_error "volume does not apply to register --trial" "$FM" "${R[@]}" --volume phantom:knee
+usage_error "method, --invert do not apply to register --trial" "$FM" "${R[@]}" --method pso --invert
+usage_error "out does not apply to register (a CT" "$FM" register --reference-pose 1,2,3,4,5,6 --out "$T/x.jts"
+usage_error "frame does not apply to register (a CT" "$FM" register --reference-pose 1,2,3,4,5,6 --frame 2
+usage_error "size does not apply to register (a CT" "$FM" register --reference-pose 1,2,3,4,5,6 --size 64x64
+usage_error "geometry does not apply to register --slice" "$FM" register --slice --reference-pose 1,2,3,4,5,6 --geometry g.json
+usage_error "values does not apply to register --model" "$FM" register --reference x.tif --camera c.txt --model m.stl --start 0,0,0,0,0,0 --values raw
+usage_error "start does not apply to register --bone" "$FM" register --labels phantom:knee --bone femur --start 1,2,3,4,5,6
+before_work "writes a .tra" "$FM" "${R[@]}" --out "$T/x.jts"
 before_work "given twice" "$FM" track --trial "$TRIAL" --bone radius --bone radius --out "$T/r.tra"
 if [ "$(id -u)" -ne 0 ]; then  # root may write anywhere
     mkdir -p "$T/ro"; chmod 555 "$T/ro"
