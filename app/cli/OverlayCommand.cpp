@@ -13,6 +13,7 @@
 #include "io/PngWriter.h"
 #include "pose/AutoscoperTra.h"
 #include "track/PoseOverlay.h"
+#include "track/TrialTra.h"
 #include "track/TrialScene.h"
 #include "xray/ObjectRegistration.h"
 
@@ -35,7 +36,7 @@ fs::path outFor(const fs::path& out, std::size_t camera) {
 
 void runOverlay(const OverlayArgs& a) {
     if (a.tras.size() != a.bones.size() && a.tras.size() != 1)
-        throw fm::Error("give one --tra per --bone, or one .tra whose objects are the bones in order (" +
+        throw fm::Error("give one --tra per --bone, or one .tra of all the trial's bones (" +
                         std::to_string(a.bones.size()) + " bones, " + std::to_string(a.tras.size()) + " .tra)");
     if (fs::path(a.out).extension() != ".png") throw fm::Error("--out must end in .png: " + a.out);
     fm::io::checkOutputPath(a.out, "--out");
@@ -46,13 +47,14 @@ void runOverlay(const OverlayArgs& a) {
         throw fm::Error("--frame " + std::to_string(a.frame) + ": the trial has frames 0.." +
                         std::to_string(scene.frameCount - 1));
     // Each bone at its pose of --frame (Autoscoper's volume frame in the .tra).
+    // A .tra holds one bone or all the trial's bones in its order (track/TrialTra.h).
     std::vector<fm::TraFile> files;
-    for (const std::string& t : a.tras) files.push_back(fm::readTra(t));
+    for (const std::string& t : a.tras) files.push_back(fm::readTrialTra(t, scene));
     for (std::size_t b = 0; b < a.bones.size(); ++b) {
         const bool own = a.tras.size() == a.bones.size();
         const fm::TraFile& tra = files[own ? b : 0];
-        const std::size_t object = own ? 0 : b;
         const std::string& path = a.tras[own ? b : 0];
+        const std::size_t object = fm::traObjectOfBone(tra, scene, a.bones[b], path);
         if (static_cast<std::size_t>(a.frame) >= tra.frames.size() || object >= static_cast<std::size_t>(tra.objects) ||
             !tra.frames[static_cast<std::size_t>(a.frame)][object])
             throw fm::Error(path + ": no pose of " + a.bones[b] + " at frame " + std::to_string(a.frame));

@@ -100,7 +100,8 @@ void runXrayRegister(const std::string& reference, const XrayRegisterArgs& a,
             uniqueObjectName(scene, std::filesystem::path(a.models[k]).stem().string());
         auto xray = std::make_shared<MeshXrayModel>(prepareMeshDrr(model), mu, name);
         const std::string& spec = perModel(starts, k, n, "--start");
-        startPoses.push_back(readPoseSpec(spec, a.frame, starts.size() == n ? 0 : k));
+        const bool one = starts.size() != n;  // one .tra for all models
+        startPoses.push_back(readPoseSpec(spec, a.frame, one ? k : 0, one ? static_cast<int>(n) : 0));
         scene.objects.push_back({name, xray, startPoses.back(), true});
     }
     // A start that covers no valid pixel leaves the search blind: refused with the numbers.

@@ -31,6 +31,7 @@
 #include "track/SegmentTracking.h"
 #include "track/TrackSegments.h"
 #include "track/TrialScene.h"
+#include "track/TrialTra.h"
 
 namespace {
 
@@ -77,19 +78,15 @@ struct TrackJob {
 };
 
 std::map<int, fm::RigidTransform> keyframesOf(const fm::TrialScene& scene, const std::string& bone,
-                                              std::size_t boneIndex,
                                               const std::optional<fm::TraFile>& startTra,
                                               const std::string& startPath) {
-    // The trial's own keyframes, then the --start file's poses (Autoscoper frame).
+    // The trial's own keyframes, then the --start file's poses (Autoscoper frame): the file
+    // holds this bone alone, or every bone of the trial in its order (track/TrialTra.h).
     std::map<int, fm::RigidTransform> keyframes = fm::trialKeyframes(scene, bone);
     if (startTra) {
-        const int object = startTra->objects > 1 ? static_cast<int>(boneIndex) : 0;
-        if (object >= startTra->objects)
-            throw fm::Error(startPath + ": holds " + std::to_string(startTra->objects) +
-                            " objects; bone " + bone + " would be object " +
-                            std::to_string(object + 1));
+        const std::size_t object = fm::traObjectOfBone(*startTra, scene, bone, startPath);
         for (std::size_t f = 0; f < startTra->frames.size(); ++f)
-            if (const auto& p = startTra->frames[f][static_cast<std::size_t>(object)])
+            if (const auto& p = startTra->frames[f][object])
                 keyframes[static_cast<int>(f)] = fm::objectPoseFromTra(scene, bone, *p);
     }
     return keyframes;
@@ -172,7 +169,7 @@ void runTrack(const TrackArgs& a) {
     settings.registration.threads = threads;
 
     std::optional<fm::TraFile> startTra;
-    if (!a.start.empty()) startTra = fm::readTra(a.start);
+    if (!a.start.empty()) startTra = fm::readTrialTra(a.start, scene);
     const bool several = a.bones.size() > 1;
 
     // Every rank works out the same bones, segments and jobs.
@@ -191,7 +188,7 @@ void runTrack(const TrackArgs& a) {
             b.keptRows = fm::cli::keptTrackCsvRows(a.csv, scene.cameras.size(), b.name, kept);
         }
         b.segments =
-            fm::splitAtKeyframes(frames, keyframesOf(scene, b.name, bi, startTra, a.start));
+            fm::splitAtKeyframes(frames, keyframesOf(scene, b.name, startTra, a.start));
         for (std::size_t s = 0; s < b.segments.size(); ++s) {
             jobs.push_back({bi, s});
             longest = std::max(longest, b.segments[s].frames.size());

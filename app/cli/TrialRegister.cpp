@@ -9,6 +9,7 @@
 #include "io/OutputPath.h"
 #include "pose/AutoscoperTra.h"
 #include "track/TrialScene.h"
+#include "track/TrialTra.h"
 
 namespace fm::cli {
 
@@ -37,9 +38,10 @@ void runTrialRegister(const TrialRegisterArgs& a) {
     // The start: the .tra's pose at the frame, else the trial's keyframe there.
     std::optional<RigidTransform> start;
     if (!a.start.empty()) {
-        const TraFile tra = readTra(a.start);
-        if (a.frame < static_cast<int>(tra.frames.size()) && tra.frames[a.frame][0])
-            start = objectPoseFromTra(scene, a.bone, *tra.frames[a.frame][0]);
+        const TraFile tra = readTrialTra(a.start, scene);
+        const std::size_t object = traObjectOfBone(tra, scene, a.bone, a.start);
+        if (a.frame < static_cast<int>(tra.frames.size()) && tra.frames[a.frame][object])
+            start = objectPoseFromTra(scene, a.bone, *tra.frames[a.frame][object]);
         else
             throw Error(a.start + ": no pose at frame " + std::to_string(a.frame));
     } else if (const auto k = scene.trial.keyframes.find(a.bone); k != scene.trial.keyframes.end()) {

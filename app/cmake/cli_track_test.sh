@@ -145,6 +145,43 @@ usage_error "geometry does not apply to register --slice" "$FM" register --slice
 usage_error "values does not apply to register --model" "$FM" register --reference x.tif --camera c.txt --model m.stl --start 0,0,0,0,0,0 --values raw
 usage_error "start does not apply to register --bone" "$FM" register --labels phantom:knee --bone femur --start 1,2,3,4,5,6
 before_work "writes a .tra" "$FM" "${R[@]}" --out "$T/x.jts"
+
+# A .tra of every bone of the trial (the workspace's Save: 3 objects, 48 numbers a row) is read
+# by overlay, track and register --trial as the bone's own file is: each bone its own object.
+for b in radius ulna; do
+    "$FM" register --trial "$TRIAL" --bone $b --frame 0 --threads 2 --out "$T/own_$b.tra" >/dev/null 2>&1 \
+        || fail "register --trial --bone $b failed"
+done
+python3 - "$T" <<'PY'
+import sys
+t = sys.argv[1]
+# mc3 has no keyframe: the radius's pose 5 mm along x (a pose of its own).
+with open(f"{t}/own_mc3.tra", "w") as f:
+    for line in open(f"{t}/own_radius.tra").read().splitlines():
+        v = line.split(",")
+        if v[0] != "NaN":
+            v[3] = "%.16f" % (float(v[3]) + 5.0)
+        f.write(",".join(v) + "\n")
+rows = [open(f"{t}/own_{b}.tra").read().splitlines() for b in ("radius", "ulna", "mc3")]
+with open(f"{t}/all.tra", "w") as f:
+    for frame in zip(*rows):
+        f.write(",".join(frame) + "\n")
+PY
+[ "$(head -1 "$T/all.tra" | tr ',' '\n' | wc -l)" -eq 48 ] || fail "all.tra: 48 numbers a row"
+"$FM" overlay --trial "$TRIAL" --bone mc3 --tra "$T/all.tra" --frame 0 --out "$T/all.png" >/dev/null || fail "overlay of all.tra failed"
+"$FM" overlay --trial "$TRIAL" --bone mc3 --tra "$T/own_mc3.tra" --frame 0 --out "$T/own.png" >/dev/null || fail "overlay of own_mc3.tra failed"
+cmp "$T/all_cam1.png" "$T/own_cam1.png" && cmp "$T/all_cam2.png" "$T/own_cam2.png" \
+    || fail "overlay drew the mc3 of all.tra elsewhere than its own file's"
+"$FM" track --trial "$TRIAL" --bone ulna --frames 0:0 --start "$T/all.tra" --threads 2 --out "$T/ta.tra" >/dev/null 2>&1 || fail "track --start all.tra failed"
+"$FM" track --trial "$TRIAL" --bone ulna --frames 0:0 --start "$T/own_ulna.tra" --threads 2 --out "$T/to.tra" >/dev/null 2>&1 || fail "track --start own_ulna.tra failed"
+cmp "$T/ta.tra" "$T/to.tra" || fail "track started the ulna elsewhere from all.tra than from its own file"
+"$FM" "${R[@]/radius/ulna}" --start "$T/all.tra" > "$T/ra" 2>&1 || { cat "$T/ra"; fail "register --start all.tra failed"; }
+"$FM" "${R[@]/radius/ulna}" --start "$T/own_ulna.tra" > "$T/ro" 2>&1 || { cat "$T/ro"; fail "register --start own_ulna.tra failed"; }
+cmp <(sed -n '/^pose/,/^cost/p' "$T/ra") <(sed -n '/^pose/,/^cost/p' "$T/ro") || fail "register --trial took another bone's start from all.tra"
+cut -d, -f1-32 "$T/all.tra" > "$T/two.tra"
+expect_error "holds 2 objects; a .tra of trial .* holds one bone, or all its 3 bones in its order (radius, ulna, mc3)" \
+    "$FM" overlay --trial "$TRIAL" --bone ulna --tra "$T/two.tra" --frame 0 --out "$T/two.png"
+before_work "holds 2 objects" "$FM" track --trial "$TRIAL" --bone ulna --start "$T/two.tra" --out "$T/t2.tra"
 before_work "given twice" "$FM" track --trial "$TRIAL" --bone radius --bone radius --out "$T/r.tra"
 if [ "$(id -u)" -ne 0 ]; then  # root may write anywhere
     mkdir -p "$T/ro"; chmod 555 "$T/ro"

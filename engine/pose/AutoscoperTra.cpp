@@ -34,7 +34,7 @@ void xyzyprFromTransform(const RigidTransform& t, double v[6]) {
     v[3] = a[0], v[4] = a[1], v[5] = a[2];
 }
 
-TraFile parseTra(const std::string& text, const std::string& what, TraForm form) {
+TraFile parseTra(const std::string& text, const std::string& what, TraForm form, int objects) {
     std::vector<std::pair<std::size_t, std::vector<std::string>>> rows;
     std::size_t pos = 0, number = 0, lastNonBlank = 0;
     std::string line;
@@ -48,10 +48,22 @@ TraFile parseTra(const std::string& text, const std::string& what, TraForm form)
     const std::size_t count = rows[0].second.size();
     TraFile tra;
     if (form == TraForm::Auto) {
-        const bool m = count % 16 == 0, x = count % 6 == 0;
+        bool m = count % 16 == 0, x = count % 6 == 0;
+        if (m && x && objects > 0) {  // the expected object count decides, if it fits one
+            const bool asMatrices = count == 16 * static_cast<std::size_t>(objects);
+            const bool asRows = count == 6 * static_cast<std::size_t>(objects);
+            if (asMatrices != asRows) m = asMatrices, x = asRows;
+        }
         if (m && x)
-            throw Error(what + ": line 1 holds " + std::to_string(count) +
-                        " numbers: both 16 per object (matrices) and 6 (xyzypr) fit; say which");
+            throw Error(what + ": line 1 holds " + std::to_string(count) + " numbers: " +
+                        std::to_string(count / 16) + " matrices (16 numbers each) or " +
+                        std::to_string(count / 6) +
+                        " x, y, z, yaw, pitch, roll rows (6 each) both fit" +
+                        (objects > 0 ? ", and neither is the " + std::to_string(objects) +
+                                           " objects expected"
+                                     : std::string()) +
+                        "; write the file with one object, or read it where the object count is "
+                        "known (a trial's bones, one --start .tra for all --model)");
         if (!m && !x)
             throw Error(what + ": line 1 holds " + std::to_string(count) +
                         " numbers: not 16 (a 4x4 matrix) or 6 (x, y, z, yaw, pitch, roll) per object");
@@ -102,9 +114,9 @@ TraFile parseTra(const std::string& text, const std::string& what, TraForm form)
     return tra;
 }
 
-TraFile readTra(const std::filesystem::path& path, TraForm form) {
+TraFile readTra(const std::filesystem::path& path, TraForm form, int objects) {
     return parseTra(io::readTextFile(path, kMaxPoseFileBytes, "Autoscoper tracking file"),
-                    path.string(), form);
+                    path.string(), form, objects);
 }
 
 std::string traText(const TraFile& tra) {

@@ -35,9 +35,12 @@ RigidTransform transformFromXyzypr(const double xyzypr[6]);
 void xyzyprFromTransform(const RigidTransform& t, double xyzypr[6]);
 
 // fm::Error "<what>: line N, object K, value V: ..." for wrong counts, non-numbers, partial
-// NaN, a matrix that is not rigid.
-TraFile parseTra(const std::string& text, const std::string& what, TraForm form = TraForm::Auto);
-TraFile readTra(const std::filesystem::path& path, TraForm form = TraForm::Auto);
+// NaN, a matrix that is not rigid. `objects` (0: unknown) is how many objects the file is
+// expected to hold: with TraForm::Auto it decides a count that both forms divide (48 numbers:
+// 3 matrices, or 8 xyzypr rows); the file may still hold one object.
+TraFile parseTra(const std::string& text, const std::string& what, TraForm form = TraForm::Auto,
+                 int objects = 0);
+TraFile readTra(const std::filesystem::path& path, TraForm form = TraForm::Auto, int objects = 0);
 
 // What Autoscoper reads back (its own backup format): per object 16 comma-separated numbers in
 // row order (or 6 for Xyzypr), fixed-point with 16 decimals, "NaN" x 16 for untracked frames.

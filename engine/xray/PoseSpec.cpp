@@ -31,7 +31,7 @@ void checkFrame(int frame, const std::string& what) {
 
 }  // namespace
 
-RigidTransform readPoseSpec(const std::string& spec, int frame, std::size_t object) {
+RigidTransform readPoseSpec(const std::string& spec, int frame, std::size_t object, int objects) {
     const std::string ext = extensionOf(spec);
     if (ext == ".jts") {
         checkFrame(frame, spec);
@@ -46,7 +46,7 @@ RigidTransform readPoseSpec(const std::string& spec, int frame, std::size_t obje
     }
     if (ext == ".tra") {
         checkFrame(frame, spec);
-        const TraFile tra = readTra(spec);
+        const TraFile tra = readTra(spec, TraForm::Auto, objects);
         if (static_cast<std::size_t>(frame) >= tra.frames.size())
             throw Error(spec + ": frame " + std::to_string(frame) + " does not exist (the file has " +
                         std::to_string(tra.frames.size()) + " rows)");

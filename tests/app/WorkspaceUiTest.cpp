@@ -8,8 +8,10 @@
 
 #include "WorkspaceFixture.h"
 #include "common/TestData.h"
+#include "core/Error.h"
 #include "pose/AutoscoperTra.h"
 #include "scene/ObjectPoseParameterization.h"
+#include "track/TrialTra.h"
 #include "ui/UiScript.h"
 #include "workspace/WorkspaceApp.h"
 #include "xray/ObjectRegistration.h"
@@ -126,6 +128,47 @@ TEST_F(WorkspaceUi, SolveRegistersFromThePoseShownAndSaveWritesTheTra) {
     EXPECT_TRUE(app->state().saveFailed);
     EXPECT_NE(app->state().saveMessage.find("missing"), std::string::npos);
     EXPECT_EQ(app->pose(0)->translation, s.result->translation);
+}
+
+// The Save of a trial of three bones (48 numbers a row, which 3 matrices and 8 xyzypr rows both
+// fit) is read back as every command that takes a trial's .tra reads it: the trial's bone count
+// decides the form, and each bone is its own object (the tibia is not drawn at the femur's pose).
+TEST(WorkspaceSave, ATrialsSaveOfSeveralBonesReadsBackBoneByBone) {
+    FM_REQUIRE_SHARED_DATA("autoscoper-bvr");
+    if (!sharedDataBesideRepo()) {
+        if (underCI()) FAIL() << "under CI the shared data must be ../shared/data beside the repository";
+        GTEST_SKIP() << "FM_DATA_DIR is not ../shared/data beside the repository";
+    }
+    app::WorkspaceSource source;
+    source.trial = repoDir() / "data/trials/wrist.json";
+    const auto model = app::WorkspaceModel::open(source, 2);
+    ASSERT_EQ(model->objectCount(), 3);
+    auto poses = model->initialPoses();
+    // Every bone a pose of its own at frame 0, told apart by its translation.
+    for (int k = 0; k < 3; ++k) {
+        RigidTransform p;
+        p.translation = glm::dvec3(10.0 * (k + 1), -5.0 * k, 100.0 + k);
+        poses[0][static_cast<std::size_t>(k)] = p;
+    }
+    const fs::path out = scratchDir("workspace-save-wrist") / "wrist.tra";
+    ASSERT_EQ(model->save(out, poses), std::vector<fs::path>{out});
+    std::string plain;
+    try {
+        readTra(out);
+    } catch (const Error& e) {
+        plain = e.what();
+    }
+    EXPECT_NE(plain.find("both fit"), std::string::npos) << "48 numbers alone are ambiguous";
+    const TraFile tra = readTrialTra(out, model->trial());
+    ASSERT_EQ(tra.objects, 3);
+    for (int k = 0; k < 3; ++k) {
+        const std::string& bone = model->objectName(k);
+        const std::size_t object = traObjectOfBone(tra, model->trial(), bone, out);
+        ASSERT_TRUE(tra.frames[0][object].has_value()) << bone;
+        const RigidTransform back = objectPoseFromTra(model->trial(), bone, *tra.frames[0][object]);
+        EXPECT_NEAR(glm::length(back.translation - poses[0][static_cast<std::size_t>(k)]->translation),
+                    0.0, 1e-9) << bone;
+    }
 }
 
 }  // namespace

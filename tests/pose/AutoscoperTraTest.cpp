@@ -106,10 +106,38 @@ TEST(AutoscoperTra, BrokenRowsAreRefusedWithFileLineAndField) {
     EXPECT_NE(errorOf("1,0,0,0,0,1,0,0,0,0,1,0,5,6,7,1\n"), "");
     EXPECT_NE(errorOf("1,2,3,4,5\n").find("not 16"), std::string::npos);
     const std::string row48 = id + "," + id + "," + id;
-    EXPECT_NE(errorOf(row48 + "\n").find("say which"), std::string::npos);
+    const std::string ambiguous = errorOf(row48 + "\n");
+    EXPECT_NE(ambiguous.find("3 matrices (16 numbers each) or 8 x, y, z, yaw, pitch, roll rows"),
+              std::string::npos) << ambiguous;
     EXPECT_EQ(errorOf(row48 + "\n", fm::TraForm::Matrix), "");
     EXPECT_NE(errorOf("").find("empty"), std::string::npos);
     EXPECT_NE(errorOf(id + "\n\n" + id + "\n").find("line 2"), std::string::npos);
+}
+
+// The expected object count (a trial's bones, the models of one --start .tra) decides a line
+// that both forms divide, and only then.
+TEST(AutoscoperTra, TheExpectedObjectCountDecidesBetweenMatricesAndRows) {
+    const std::string id = "1,0,0,5,0,1,0,6,0,0,1,7,0,0,0,1";
+    const std::string row48 = id + "," + id + "," + id + "\n";
+    const fm::TraFile three = fm::parseTra(row48, "wrist.tra", fm::TraForm::Auto, 3);
+    EXPECT_EQ(three.form, fm::TraForm::Matrix);
+    ASSERT_EQ(three.objects, 3);
+    EXPECT_EQ(three.frames[0][2]->translation, glm::dvec3(5, 6, 7));
+    const std::string rows8 = "1,2,3,10,20,30,1,2,3,10,20,30,1,2,3,10,20,30,1,2,3,10,20,30,"
+                              "1,2,3,10,20,30,1,2,3,10,20,30,1,2,3,10,20,30,1,2,3,10,20,30\n";
+    const fm::TraFile eight = fm::parseTra(rows8, "eight.tra", fm::TraForm::Auto, 8);
+    EXPECT_EQ(eight.form, fm::TraForm::Xyzypr);
+    EXPECT_EQ(eight.objects, 8);
+    // A count that fits neither expectation stays a refusal that says so.
+    std::string e;
+    try {
+        fm::parseTra(row48, "two.tra", fm::TraForm::Auto, 2);
+    } catch (const fm::Error& error) {
+        e = error.what();
+    }
+    EXPECT_NE(e.find("neither is the 2 objects expected"), std::string::npos) << e;
+    // One object is never ambiguous, whatever is expected.
+    EXPECT_EQ(fm::parseTra(id + "\n", "one.tra", fm::TraForm::Auto, 3).objects, 1);
 }
 
 }  // namespace

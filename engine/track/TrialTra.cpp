@@ -1,0 +1,26 @@
+#include "track/TrialTra.h"
+
+#include "core/Error.h"
+#include "io/ByteSource.h"
+
+namespace fm {
+
+TraFile readTrialTra(const std::filesystem::path& path, const TrialScene& trial) {
+    return readTra(path, TraForm::Auto, static_cast<int>(trial.trial.bones.size()));
+}
+
+std::size_t traObjectOfBone(const TraFile& tra, const TrialScene& trial, const std::string& bone,
+                            const std::filesystem::path& path) {
+    if (tra.objects == 1) return 0;
+    const auto& bones = trial.trial.bones;
+    std::string names;
+    for (std::size_t b = 0; b < bones.size(); ++b) {
+        if (tra.objects == static_cast<int>(bones.size()) && bones[b].name == bone) return b;
+        names += (names.empty() ? "" : ", ") + bones[b].name;
+    }
+    throw Error(io::quoted(path) + ": holds " + std::to_string(tra.objects) +
+                " objects; a .tra of trial " + trial.trial.name + " holds one bone, or all its " +
+                std::to_string(bones.size()) + " bones in its order (" + names + ")");
+}
+
+}  // namespace fm
