@@ -19,6 +19,7 @@
 #include "cli/CommandRegistry.h"
 #include "cli/SearchCli.h"
 #include "cli/SliceCli.h"
+#include "cli/ValueChecks.h"
 #include "cli/VolumeOption.h"
 #include "core/Error.h"
 #include "distributed/JobRunner.h"
@@ -266,7 +267,8 @@ FM_REGISTER_COMMAND("evaluate", 41, [](CLI::App& app) {
         ->capture_default_str();
     cmd->add_option("--starts", a->starts, "Start poses per mTRE bin")->capture_default_str();
     cmd->add_option("--truth", a->truth, "True pose: the reference DRR is rendered there")
-        ->capture_default_str();
+        ->capture_default_str()
+        ->check(fm::cli::kPoseText);
     cmd->add_option("--csv", a->csv, "Write one row per registration to this CSV file");
     fm::cli::addSearchOptions(cmd, a->search, false);
     fm::cli::addBoneOptions(cmd, a->bones);

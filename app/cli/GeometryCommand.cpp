@@ -110,7 +110,14 @@ void runGeometry(const GeometryArgs& a) {
     if (!a.camera.empty()) {
         std::optional<glm::ivec2> size;
         if (!a.imageSize.empty()) size = parseImageSize(a.imageSize);
-        const fm::CameraReadResult r = fm::readCameraFile(a.camera, size);
+        const fm::CameraReadResult r = [&] {
+            try {
+                return fm::readCameraFile(a.camera, size);
+            } catch (const fm::CalibrationNeedsImageSize&) {
+                throw fm::Error(a.camera + ": a JointTrack calibration holds no image size: give "
+                                           "the radiographs' size with --image-size WxH");
+            }
+        }();
         for (const auto& w : r.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
         if (size) fm::checkImageSize(r.camera, a.camera, size->x, size->y, "--image-size");
         g = fm::toProjectionGeometry(r.camera, a.camera);

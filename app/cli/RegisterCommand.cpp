@@ -24,6 +24,7 @@
 #include "cli/SearchCli.h"
 #include "cli/SliceCli.h"
 #include "cli/TrialRegister.h"
+#include "cli/ValueChecks.h"
 #include "cli/VolumeOption.h"
 #include "core/Error.h"
 #include "match/PoseError.h"
@@ -313,7 +314,8 @@ FM_REGISTER_COMMAND("register", 40, [](CLI::App& app) {
     fm::cli::addVolumeOption(cmd, a->volume);
     auto* refPose = cmd->add_option("--reference-pose", a->referencePose,
                                     "Render the reference as a DRR at this pose x,y,z,az,el,rot "
-                                    "(the truth: errors are reported)");
+                                    "(the truth: errors are reported)")
+                        ->check(fm::cli::kPoseText);
     auto* ref = cmd->add_option("--reference", a->reference,
                                 "Reference image (.png, .mha/.mhd: values like a DRR line "
                                 "integral, bright = more attenuation)");
@@ -324,14 +326,16 @@ FM_REGISTER_COMMAND("register", 40, [](CLI::App& app) {
                     ".tra file (row --frame) or x,y,z,zrot,xrot,yrot, one per --model (or one "
                     ".tra for all); with --trial: a .tra (its pose at --frame; default the "
                     "trial's keyframe)");
-    cmd->add_option("--truth", a->truth, "True pose of --reference, if known (errors reported)");
+    cmd->add_option("--truth", a->truth, "True pose of --reference, if known (errors reported)")
+        ->check(fm::cli::kPoseText);
     fm::cli::addSearchOptions(cmd, a->search);
     fm::cli::addBoneOptions(cmd, a->bones);
     cmd->add_option("--bone-motion", a->boneMotion,
                     "With --bone: the reference's motion of the bone, tx,ty,tz (mm), rx,ry,rz "
                     "(deg, about world x, y, z through the bone's centre)")
         ->capture_default_str();
-    cmd->add_option("--pose", a->pose, "With --bone: the camera, a 2011 pose (default the AP view)");
+    cmd->add_option("--pose", a->pose, "With --bone: the camera, a 2011 pose (default the AP view)")
+        ->check(fm::cli::kPoseText);
     cmd->add_flag("--biplane", a->biplane, "With --bone: a second camera at azimuth +90 deg");
     cmd->add_flag("--no-rest", a->noRest, "With --bone: leave the rest of the CT out of the images");
     cmd->add_option("--footprint-margin", a->marginMm,
@@ -348,7 +352,12 @@ FM_REGISTER_COMMAND("register", 40, [](CLI::App& app) {
     auto trial = std::make_shared<fm::cli::TrialRegisterArgs>();
     fm::cli::addTrialRegisterOptions(cmd, *trial);
     cmd->callback([a, trial, cmd] {
-        fm::cli::refuseOptionsOutside(*cmd, registerMode(*a, *trial), registerModes());
+        const fm::cli::CommandMode& mode = registerMode(*a, *trial);
+        fm::cli::refuseOptionsOutside(*cmd, mode, registerModes());
+        if (mode.name == "register" || mode.name == "register --slice")
+            for (std::string start : a->start)  // a 2011 pose here: checked before any work
+                if (const std::string e = fm::cli::kPoseText(start); !e.empty())
+                    throw CLI::ValidationError("--start: " + e);
         if (!trial->trial.empty()) {
             // --bone, --start and --out are the command's own; here they are the trial's bone,
             // a .tra holding its start pose at --frame and the .tra to write.

@@ -1,5 +1,7 @@
 #include "cli/SceneOptions.h"
 
+#include "cli/ValueChecks.h"
+
 #include <charconv>
 #include <cmath>
 #include <sstream>
@@ -36,7 +38,8 @@ void addSceneOptions(CLI::App* cmd, SceneOptions& o) {
                                  "Six parameters x,y,z,az,el,rot: CT offset from the isocenter "
                                  "(mm, LPS), source azimuth -180..180 and elevation -90..90, film "
                                  "rotation -90..90 (deg). Default 0,0,0,0,0,0 (AP view). See "
-                                 "docs/geometry.md");
+                                 "docs/geometry.md")
+                     ->check(kPoseText);
     auto* geometry = cmd->add_option("--geometry", o.geometry,
                                      "Projection geometry JSON file (source, detector) in the "
                                      "volume's world mm, instead of --pose");

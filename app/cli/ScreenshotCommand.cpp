@@ -5,6 +5,7 @@
 
 #include "cli/CommandRegistry.h"
 #include "cli/NumberChecks.h"
+#include "cli/ValueChecks.h"
 #include "cli/WorkspaceOptions.h"
 #include "core/Error.h"
 #include "geometry/Pose.h"
@@ -143,9 +144,11 @@ FM_REGISTER_COMMAND("screenshot", 2, [](CLI::App& cli) {
                     "Bones tab");
     cmd->add_option("--label-table", a->labelTable, "names of the labels to show as bones")
         ->needs(cmd->get_option("--labels"));
-    cmd->add_option("--pose", a->pose, "your pose x,y,z,az,el,rot (mm, deg); default centred");
+    cmd->add_option("--pose", a->pose, "your pose x,y,z,az,el,rot (mm, deg); default centred")
+        ->check(fm::cli::kPoseText);
     cmd->add_option("--reference-pose", a->referencePose,
-                    "the hidden reference pose x,y,z,az,el,rot; default: picked by --seed");
+                    "the hidden reference pose x,y,z,az,el,rot; default: picked by --seed")
+        ->check(fm::cli::kPoseText);
     cmd->add_option("--view", a->view, "3D view camera az,el,zoom (deg, deg, factor)");
     cmd->add_option("--seed", a->seed, "seed of the reference choice")
         ->capture_default_str()

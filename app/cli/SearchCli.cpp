@@ -1,5 +1,7 @@
 #include "cli/SearchCli.h"
 
+#include "cli/ValueChecks.h"
+
 #include "cli/ValuesChoice.h"
 
 #include <cmath>
@@ -8,6 +10,7 @@
 #include <sstream>
 
 #include "cli/NumberChecks.h"
+#include "cli/ValueChecks.h"
 #include "core/Error.h"
 #include "io/AtomicFile.h"
 #include "io/ReadVolume.h"
@@ -40,11 +43,15 @@ std::vector<double> parseNumbers(const std::string& text, const std::string& opt
 void addSearchOptions(CLI::App* cmd, SearchArgs& a, bool withMethod) {
     if (withMethod)
         cmd->add_option("--method", a.method, "Global search: mc, pso, bees or cmaes")
-            ->capture_default_str();
+            ->capture_default_str()
+            ->check(oneOf(globalMethodNames(), "search method",
+                          {{"nm", "nm is the local polish, not a global search (mc, pso, bees or "
+                                  "cmaes; the polish is --polish nm)"}}));
     cmd->add_option("--similarity", a.similarity,
                     "Similarity: ncc, gncc (gradient NCC), gd (gradient difference) or mi (mutual "
                     "information; the default with --slice)")
-        ->capture_default_str();
+        ->capture_default_str()
+        ->check(oneOf(similarityNames(), "similarity measure"));
     cmd->add_option("--seed", a.seed, "Random seed (same seed, same result)")
         ->capture_default_str()
         ->check(kSeedNumber);
@@ -62,7 +69,8 @@ void addSearchOptions(CLI::App* cmd, SearchArgs& a, bool withMethod) {
                     "10,10,20,10,10,10)");
     cmd->add_option("--threads", a.threads, "Threads (0 = all cores)")->capture_default_str();
     cmd->add_option("--polish", a.polish, "Local refinement per level: nm (Nelder-Mead) or cmaes")
-        ->capture_default_str();
+        ->capture_default_str()
+        ->check(oneOf(polishMethodNames(), "polish method"));
     addValuesOption(cmd, a.values);
 }
 

@@ -7,6 +7,7 @@
 
 #include "cli/CommandRegistry.h"
 #include "cli/SliceCli.h"
+#include "cli/ValueChecks.h"
 #include "cli/VolumeOption.h"
 #include "core/Error.h"
 #include "io/ImageFileWriter.h"
@@ -22,7 +23,7 @@ struct SliceArgs {
     std::string volume = fm::kDefaultVolumeSpec;
     std::string pose = "0,0,0,0,0,0";
     fm::cli::SliceGridArgs grid;
-    std::string interpolation = "linear";
+    std::string interpolation = "cubic";  // as register --slice and evaluate --slice sample
     std::string out, raw, mask;
     int threads = 0;
 };
@@ -98,9 +99,11 @@ FM_REGISTER_COMMAND("slice", 25, [](CLI::App& app) {
                     "x,y,z,az,el,rot: volume offset (mm), the plane normal's azimuth and "
                     "elevation, in-plane rotation (deg), as in the X-ray scene. 0,0,0,0,0,0 is a "
                     "coronal slice through the centre, seen from the front")
-        ->capture_default_str();
+        ->capture_default_str()
+        ->check(fm::cli::kPoseText);
     fm::cli::addSliceGridOptions(cmd, a->grid);
-    cmd->add_option("--interpolation", a->interpolation, "linear (trilinear) or cubic (B-spline)")
+    cmd->add_option("--interpolation", a->interpolation,
+                    "cubic (B-spline, as register --slice compares) or linear (trilinear)")
         ->capture_default_str();
     cmd->add_option("--out", a->out, "PNG to write (windowed; no-data pixels black)");
     cmd->add_option("--raw", a->raw, "Exact float values: .tif (float32), .mha, .nii or .nii.gz (row 0 first)");

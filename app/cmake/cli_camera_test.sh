@@ -50,4 +50,10 @@ grep -q "valid " <<<"$msg" || fail "radiograph did not print the valid pixel cou
 [ "$(png_size "$OUT/m.png")" = "1024x1024" ] || fail "mask PNG is not 1024x1024"
 "$FM" radiograph "$FRAME" --roi 900,900,200,200 > /dev/null 2>&1 && fail "roi outside the image accepted"
 "$FM" radiograph "$FRAME" --camera "$CAM" > /dev/null 2>&1 && fail "1760x1760 calibration accepted for a 1024x1024 frame"
+# JointTrack without a size names the option that gives it; a model given as the calibration is
+# named as one (it was "too large for a camera calibration").
+msg=$("$FM" geometry --camera "$JT" 2>&1) && fail "JointTrack without --image-size accepted"
+grep -q -- "--image-size WxH" <<<"$msg" || fail "JointTrack without a size does not name --image-size: $msg"
+msg=$("$FM" geometry --camera "$DATA/jtml-kneel-tka-fluoro/KR_right_7_fem.stl" 2>&1) && fail "an STL accepted as a calibration"
+grep -q "is a model (.stl), not a camera calibration" <<<"$msg" || fail "an STL as calibration: $msg"
 echo "camera CLI checks passed"

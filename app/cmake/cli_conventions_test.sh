@@ -84,4 +84,32 @@ printf '0 0 0 0 0\n' > "$OUT/bad.txt"
 msg=$("$FM" drr --poses "$OUT/bad.txt" --out "$OUT/b.png" 2>&1); rc=$?
 [ $rc -eq 1 ] || fail "a malformed views file exited $rc"
 grep -q "bad.txt:1" <<<"$msg" || fail "the error does not name the line: $msg"
+# 7. Exit codes (README "Exit codes"), a table: a bad option value or an option the mode does
+# not take is a usage error (2), said before any volume is loaded; a bad file is 1.
+while IFS='|' read -r code text args; do
+    [ -n "$code" ] || continue
+    read -r -a argv <<<"$args"
+    msg=$("$FM" "${argv[@]}" 2>&1); rc=$?
+    [ "$rc" -eq "$code" ] || fail "'$args' exited $rc, not $code: $msg"
+    grep -q -- "$text" <<<"$msg" || fail "'$args' did not say '$text': $msg"
+    if [ "$code" -eq 2 ] && grep -q "^volume \|^values " <<<"$msg"; then fail "'$args' loaded the volume before refusing"; fi
+done <<TABLE
+2|expected 6 comma-separated numbers|drr --pose 0,0,0,0,0 --out $OUT/x.png
+2|did you mean 'cmaes'?|register --reference-pose 1,2,3,4,5,6 --method cmaess
+2|nm is the local polish|register --reference-pose 1,2,3,4,5,6 --method nm
+2|unknown polish method 'pso' (nm or cmaes)|register --reference-pose 1,2,3,4,5,6 --polish pso
+2|did you mean 'gncc'?|register --reference-pose 1,2,3,4,5,6 --similarity gnc
+2|--start: pose|register --reference-pose 1,2,3,4,5,6 --start 1,2
+2|--truth: pose|register --reference $OUT/v.png --geometry g.json --truth 1
+2|--thickness is for register --slice|register --reference-pose 1,2,3,4,5,6 --thickness 2
+2|--pose: pose|slice --pose 1,2 --out $OUT/s.png
+2|--truth: pose|evaluate --truth 1,2,3
+2|--pose: pose|screenshot --pose 1,2 --out $OUT/u.png
+2|--budget|register --reference-pose 1,2,3,4,5,6 --budget 0
+2|--seed|register --reference-pose 1,2,3,4,5,6 --seed -1
+2|--values|drr --values foo --out $OUT/x.png
+1|none.nii|drr --volume $OUT/none.nii --out $OUT/a.png
+1|does not exist|drr --out $OUT/missing/v.png
+0||drr --pose 0,0,0,0,0,0 --size 16x16 --out $OUT/ok.png
+TABLE
 echo PASS

@@ -71,6 +71,13 @@ msg=$("$FM" slice --volume phantom:sphere --raw "$OUT/s.png" 2>&1)
 msg=$("$FM" slice --volume phantom:sphere --raw "$OUT/nofolder/s.mha" 2>&1)
 [ $? -ne 0 ] && grep -q -- "--raw .*does not exist" <<<"$msg" || fail "slice --raw in a missing folder not refused: $msg"
 [ ! -e "$OUT/t.png" ] && [ ! -e "$OUT/s.png" ] || fail "a PNG was written for refused options"
+# One default interpolation: slice samples as register --slice compares (cubic B-spline).
+"$FM" slice --volume phantom:sphere --pose 3,-2,5,30,20,10 --size 32x32 --raw "$OUT/d.mha" >/dev/null || fail "slice (default) failed"
+"$FM" slice --volume phantom:sphere --pose 3,-2,5,30,20,10 --size 32x32 --interpolation cubic --raw "$OUT/c.mha" >/dev/null || fail "slice cubic failed"
+"$FM" slice --volume phantom:sphere --pose 3,-2,5,30,20,10 --size 32x32 --interpolation linear --raw "$OUT/l.mha" >/dev/null || fail "slice linear failed"
+cmp -s "$OUT/d.mha" "$OUT/c.mha" || fail "slice's default is not register --slice's (cubic)"
+cmp -s "$OUT/d.mha" "$OUT/l.mha" && fail "cubic and linear slices are identical: the check cannot tell them apart"
+grep -q "interpolation TEXT=cubic" <<<"$("$FM" register --help)" || fail "register --slice's default is no longer cubic"
 # --raw .tif: float32 TIFF of exact values.
 "$FM" slice --volume phantom:sphere --size 16x16 --raw "$OUT/s.tif" >/dev/null || fail "slice --raw .tif failed"
 [ "$(head -c 4 "$OUT/s.tif" | od -An -tx1 | tr -d ' \n')" = "49492a00" ] || fail "slice --raw .tif is not a TIFF"

@@ -61,4 +61,12 @@ expect_error "open mesh" open.stl app --reference "$D/AT_K1_V1_0160.tif" --camer
 expect_error "no camera" "--camera" app --reference "$D/AT_K1_V1_0160.tif" --model "$D/KR_right_7_fem.stl"
 expect_error "flags with a trial" "--reference" app --trial "$TRIAL" --invert
 expect_error "frame out of range" "--frame 5" app --trial "$TRIAL" --frame 5
+# A file the user gave is named by its option, not as part of a one-camera "trial 'X.tif'".
+for args in "--camera $OUT/missing.txt --model $D/KR_right_7_fem.stl|--camera: file not found: '$OUT/missing.txt'" \
+            "--camera $D/calibration.txt --model $OUT|--model: '$OUT' is a folder" \
+            "--camera $D/calibration.txt --model $D/KR_right_7_fem.stl --mask $OUT/none.png|--mask: file not found"; do
+    expect_error "a missing file" "${args#*|}" screenshot --reference "$D/AT_K1_V1_0160.tif" ${args%%|*} --out "$OUT/x.png"
+    if msg=$("$FM" screenshot --reference "$D/AT_K1_V1_0160.tif" ${args%%|*} --out "$OUT/x.png" 2>&1); then :; fi
+    grep -q "trial '\|cam1" <<<"$msg" && fail "the message speaks of a trial the user did not give: $msg"
+done
 echo "cli_workspace_test: all checks passed"

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/Error.h"
+#include "io/ByteSource.h"
 #include "io/HeaderText.h"
 #include "pose/AutoscoperTra.h"
 #include "radiograph/Radiograph.h"
@@ -45,6 +46,22 @@ Trial trialOfOneRadiograph(const WorkspaceSource& s) {
 
 bool isTra(const fs::path& p) { return io::toLower(p.extension().string()) == ".tra"; }
 
+// The files of one radiograph, named by the options that gave them (the one-camera trial made
+// of them would name them "trial 'X.tif'" and "cam1", which the user never wrote).
+void checkGivenFiles(const WorkspaceSource& s) {
+    const auto check = [](const std::string& option, const fs::path& path) {
+        try {
+            io::fileSize(path);
+        } catch (const Error& e) {
+            throw Error(option + ": " + e.what());
+        }
+    };
+    check("--reference", s.reference);
+    check("--camera", s.camera);
+    for (const fs::path& m : s.models) check("--model", m);
+    for (const fs::path& m : s.masks) check("--mask", m);
+}
+
 }  // namespace
 
 std::shared_ptr<WorkspaceModel> WorkspaceModel::open(const WorkspaceSource& source, int threads) {
@@ -63,6 +80,7 @@ std::shared_ptr<WorkspaceModel> WorkspaceModel::open(const WorkspaceSource& sour
             !(source.starts.size() == 1 && isTra(source.starts[0])))
             throw Error("--start: give one per --model (" + std::to_string(source.models.size()) +
                         ") or a single .tra for all");
+        checkGivenFiles(source);
         m->trial_ = loadTrialScene(trialOfOneRadiograph(source), {}, threads);
         m->preparation_ = source.preparation.value_or(RadiographPreparation{});
         m->startFrame_ = source.startFrame;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <utility>
+#include <vector>
 
 #include "camera/JointTrackCalibration.h"
 #include "core/Error.h"
@@ -48,8 +49,8 @@ CameraReadResult parseAnyCamera(const std::string& text, const std::string& what
     if (!words.empty() && io::startsWith(words[0], "JT") && io::endsWith(words[0], "INTCALIB")) {
         const JointTrackCalibration c = parseJointTrackCalibration(text, what);
         if (!imageSize)
-            throw Error(what + ": a JointTrack calibration holds no image size: give the "
-                               "radiograph (or its size) with it");
+            throw CalibrationNeedsImageSize(what + ": a JointTrack calibration holds no image "
+                                                   "size: give the radiograph (or its size) with it");
         CameraReadResult r;
         r.format = "JT_INTCALIB";
         r.camera = jointTrackCamera(c, *imageSize, what);
@@ -74,6 +75,17 @@ CameraReadResult parseCameraText(const std::string& text, const std::string& wha
 }
 
 CameraReadResult readCameraFile(const std::filesystem::path& path, std::optional<glm::ivec2> imageSize) {
+    // The files given next to a calibration, given instead of it (too large, or garbage text).
+    const std::string ext = io::toLower(path.extension().string());
+    for (const auto& [kind, extensions] :
+         {std::pair{"a model", std::vector<std::string>{".stl", ".ply", ".obj"}},
+          std::pair{"an image", std::vector<std::string>{".tif", ".tiff", ".png", ".jpg", ".jpeg", ".bmp"}},
+          std::pair{"a volume", std::vector<std::string>{".nii", ".gz", ".mha", ".mhd", ".nrrd", ".nhdr", ".dcm"}}})
+        for (const std::string& e : extensions)
+            if (ext == e)
+                throw Error(path.string() + ": is " + kind + " (" + ext +
+                            "), not a camera calibration (MayaCam 2.0 .txt, MayaCam 1.0 .csv, "
+                            "JointTrack JT_INTCALIB, geometry .json)");
     const std::string text = io::readTextFile(path, kMaxCameraFileBytes, "camera calibration");
     return parseCameraText(text, path.string(), imageSize);
 }

@@ -9,15 +9,24 @@
 #include <string>
 
 #include "camera/MayaCam.h"
+#include "core/Error.h"
 
 namespace fm {
+
+// A JointTrack calibration read without the image size it needs: the caller names how to give
+// it (geometry --camera: --image-size WxH).
+struct CalibrationNeedsImageSize : Error {
+    using Error::Error;
+};
 
 // Calibration files are small: anything larger is the wrong file.
 inline constexpr std::size_t kMaxCameraFileBytes = 1 << 20;
 
 CameraReadResult parseCameraText(const std::string& text, const std::string& what,
                                  std::optional<glm::ivec2> imageSize);
-// `imageSize` is required for formats that do not hold one (JointTrack); fm::Error otherwise.
+// `imageSize` is required for formats that do not hold one (JointTrack);
+// CalibrationNeedsImageSize otherwise. A model or an image given as the calibration (by its
+// extension: .stl, .tif, ...) is named as such.
 CameraReadResult readCameraFile(const std::filesystem::path& path,
                                 std::optional<glm::ivec2> imageSize = std::nullopt);
 
