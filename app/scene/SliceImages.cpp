@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "core/Random.h"
 #include "scene/Matching.h"
@@ -24,16 +25,26 @@ double round1(double v) {
     return std::round(v * 10.0) / 10.0;
 }
 
-// Share of the slice's pixels that cut the foreground (values above the mean).
-double foregroundShare(const LoadedScene& scene, const Pose& pose) {
+double meanValue(const Volume& volume) {
+    double sum = 0.0;
+    for (float v : volume.values) sum += v;
+    return sum / double(std::max<std::size_t>(1, volume.values.size()));
+}
+
+// Share of the slice's pixels that cut the foreground (values above the volume's mean).
+double foregroundShare(const LoadedScene& scene, const Pose& pose, double mean) {
     const SampledSlice s = renderAppSlice(scene, pose, 4, 1);
-    double mean = 0.0;
-    for (float v : scene.volume->values) mean += v;
-    mean /= double(std::max<std::size_t>(1, scene.volume->values.size()));
     std::size_t inside = 0;
     for (std::size_t i = 0; i < s.image.pixels.size(); ++i)
         inside += s.mask.inside[i] && s.image.pixels[i] > mean;
     return double(inside) / double(std::max<std::size_t>(1, s.image.pixels.size()));
+}
+
+Pose standardPose(const StandardPlane& plane) {
+    Pose p;
+    p.azimuthDeg = plane.azimuthDeg;
+    p.elevationDeg = plane.elevationDeg;
+    return p;
 }
 
 }  // namespace
@@ -60,9 +71,18 @@ ReferenceChoice chooseSliceReference(const LoadedScene& scene, std::uint64_t see
     // A slice shows the anatomy of its own plane only: half the X-ray spreads keep it familiar.
     const double offset = std::min(0.5 * spec.offsetSpreadMm, scene.translationRangeMm);
     const double angle = 0.5 * spec.angleSpreadDeg;
+    // How much foreground each standard plane through the centre cuts: a drawn plane must cut
+    // a good part of what its own plane does (an absolute share failed on ch2, whose head fills
+    // a fifth of the slice grid: every draw fell back to the plain plane).
+    const double mean = meanValue(*scene.volume);
+    double standardShare[3];
+    for (int k = 0; k < 3; ++k) standardShare[k] = foregroundShare(scene, standardPose(kPlanes[k]), mean);
     Rng rng(seed);
-    for (int attempt = 0; attempt < 200; ++attempt) {
-        const StandardPlane& plane = kPlanes[static_cast<int>(rng.uniform(0, 3)) % 3];
+    std::optional<ReferenceChoice> best;  // the most foreground among the draws kept otherwise
+    double bestShare = -1.0;
+    for (int attempt = 0; attempt < kSliceReferenceDraws; ++attempt) {
+        const int k = static_cast<int>(rng.uniform(0, 3)) % 3;
+        const StandardPlane& plane = kPlanes[k];
         Pose p;
         p.offset = {round1(rng.uniform(-offset, offset)), round1(rng.uniform(-offset, offset)),
                     round1(rng.uniform(-offset, offset))};
@@ -71,13 +91,26 @@ ReferenceChoice chooseSliceReference(const LoadedScene& scene, std::uint64_t see
         p.rotationDeg = round1(rng.uniform(-angle, angle));
         if (judgeMatch(p, current, 0.0).match) continue;
         if (avoid && avoid->toArray() == p.toArray()) continue;
-        if (foregroundShare(scene, p) < 0.3) continue;
-        return {p, std::string("random ") + plane.name + " slice (" + difficultyName(difficulty) +
-                       ")"};
+        if (p.toArray() == standardPose(plane).toArray()) continue;
+        if (!scene.foregroundPoints.empty() &&
+            sliceMtre(scene, p, current) < kMinSliceReferenceMtreMm)
+            continue;
+        const double share = foregroundShare(scene, p, mean) / std::max(1e-9, standardShare[k]);
+        ReferenceChoice choice{p, std::string("random ") + plane.name + " slice (" +
+                                      difficultyName(difficulty) + ")"};
+        if (share >= kMinForegroundOfStandardPlane) return choice;
+        if (share > bestShare) {
+            bestShare = share;
+            best = std::move(choice);
+        }
     }
-    Pose plain;  // a volume too small or too empty for a random slice
+    if (best && bestShare > 0.0) {
+        best->source += ", the fullest of " + std::to_string(kSliceReferenceDraws) + " draws";
+        return *best;
+    }
+    Pose plain;  // no draw cut the volume: a volume too small or too empty for a random slice
     plain.azimuthDeg = judgeMatch(plain, current, 0.0).match ? 90.0 : 0.0;
-    return {plain, "plain coronal or sagittal slice"};
+    return {plain, "plain coronal or sagittal slice: no random plane cut the volume"};
 }
 
 double sliceMtre(const LoadedScene& scene, const Pose& reference, const Pose& candidate) {

@@ -25,9 +25,15 @@ SampledSlice renderAppSlice(const LoadedScene& scene, const Pose& pose, int down
 bool sliceCutsVolume(const LoadedScene& scene, const Pose& pose);
 
 // A hidden reference pose for the slice game: around one of the three standard planes
-// (coronal, sagittal, axial from the feet), offsets and angles spread by the difficulty, kept
-// only if at least 30% of its pixels cut the volume's foreground; never `avoid`, never a
-// match of `current`. Deterministic for a seed.
+// (coronal, sagittal, axial from the feet), offsets and angles spread by the difficulty; never
+// the standard plane itself, never `avoid`, never a match of `current`, at least
+// kMinSliceReferenceMtreMm from `current` (slice mTRE over the foreground points), and cutting
+// at least kMinForegroundOfStandardPlane of the foreground its standard plane through the
+// centre cuts (else the fullest of kSliceReferenceDraws draws, said in the caption).
+// Deterministic for a seed.
+inline constexpr double kMinSliceReferenceMtreMm = 5.0;
+inline constexpr double kMinForegroundOfStandardPlane = 0.5;
+inline constexpr int kSliceReferenceDraws = 200;
 ReferenceChoice chooseSliceReference(const LoadedScene& scene, std::uint64_t seed,
                                      const Pose& current, Difficulty difficulty,
                                      const Pose* avoid = nullptr);

@@ -1,6 +1,7 @@
 // The MRI slice mode of the app (docs/mri.md), driven through the real UI: the mode switch,
 // the panes showing slices, Match and its hints, Solve, the plane missing the volume, and an
 // MRI file opening in the slice mode by itself.
+#include <algorithm>
 #include <chrono>
 #include <thread>
 
@@ -189,6 +190,40 @@ TEST_F(MriFileUi, AnMriFileOpensInTheSliceMode) {
     EXPECT_EQ(app->referenceDrr().pixels, slice(app->state().referencePose).image.pixels);
     EXPECT_GT(app->scene()->foregroundPoints.size(), 1000u);
     EXPECT_GT(app->state().bone.triangles, 10000u);  // the brain's surface
+}
+
+// Real MRIs get real references: on ch2 (a head filling a fifth of the slice grid) every draw
+// fell back to the plain coronal or sagittal plane through the centre. Each reference is a
+// random plane, never a standard one, at least kMinSliceReferenceMtreMm from the start, and
+// cuts at least half the foreground its standard plane does.
+TEST(SliceReferences, RealMrisGetRandomPlanesAwayFromTheStart) {
+    for (const char* file : {"mricron-ch2/ch2bet.nii.gz", "totalseg-example-mr/example_mr_sm.nii.gz"}) {
+        FM_REQUIRE_SHARED_DATA(file);
+        const auto scene = app::buildScene((sharedDataDir() / file).string(), [](const std::string&, float) {});
+        ASSERT_FALSE(scene->foregroundPoints.empty()) << file;
+        const Pose start;  // where the game starts: the coronal plane through the centre
+        std::vector<std::array<double, 6>> seen;
+        for (std::uint64_t seed = 1; seed <= 11; ++seed)
+            for (Difficulty d : {Difficulty::Easy, Difficulty::Hard}) {
+                const app::ReferenceChoice c = app::chooseSliceReference(*scene, seed, start, d);
+                const std::string where = std::string(file) + " seed " + std::to_string(seed) +
+                                          " " + difficultyName(d) + ": " + formatPose(c.pose) +
+                                          " (" + c.source + ")";
+                EXPECT_EQ(c.source.rfind("random ", 0), 0u) << where;
+                EXPECT_EQ(c.source.find("fullest"), std::string::npos) << where;
+                for (const auto& [az, el] : {std::pair{0.0, 0.0}, std::pair{90.0, 0.0}, std::pair{0.0, -90.0}}) {
+                    Pose plane;
+                    plane.azimuthDeg = az;
+                    plane.elevationDeg = el;
+                    EXPECT_NE(c.pose.toArray(), plane.toArray()) << where;
+                }
+                EXPECT_GE(app::sliceMtre(*scene, c.pose, start), app::kMinSliceReferenceMtreMm) << where;
+                EXPECT_FALSE(judgeMatch(c.pose, start, 0.0).match) << where;
+                seen.push_back(c.pose.toArray());
+            }
+        std::sort(seen.begin(), seen.end());
+        EXPECT_EQ(std::unique(seen.begin(), seen.end()), seen.end()) << file << ": every draw differs";
+    }
 }
 
 }  // namespace
