@@ -100,6 +100,9 @@ MatchOutcome outcomeOf(const MatchVerdict& verdict) {
 void wordOutcome(MatchOutcome& m, HintWording wording, bool showNumbers) {
     m.numbersShown = showNumbers;
     m.verdict = verdictMessage(m.judged, wording, showNumbers);
+    if (m.assisted)
+        m.verdict = "Assisted (Apply solution set the pose): " + m.verdict +
+                    " This is the computer's match, not counted as yours.";
     for (int p = 0; p < kParameterCount; ++p)
         m.hintCells[p] = hintText(m.judged.hints[p], p, wording, showNumbers);
 }

@@ -92,6 +92,7 @@ struct MatchOutcome {
     double poseErrorMm = 0.0;                      // mean target registration error over the bone
     double ncc = 0.0;                              // image similarity (information only)
     int attempt = 0;                               // which attempt this was
+    bool assisted = false;  // made from the computer's answer (Apply solution): not the user's own
     // The texts shown, worded by the hint mode; numbers only after a match or Reveal
     // (App::refreshMatchTexts).
     std::string verdict;                                  // one line
@@ -281,6 +282,9 @@ struct AppState {
     bool referenceRevealed = false;
     int attempts = 0;
     std::optional<double> bestUserPoseErrorMm;  // the user's best mTRE over this reference
+    // The sliders took the computer's answer (Apply solution) for this reference: a match from
+    // there is assisted, never counted as the user's own.
+    bool assisted = false;
     std::optional<MatchOutcome> match;
     bool matchIsStale = false;    // the pose moved since the last Match
     std::string referenceSource;  // "random around AP (medium)", "given on the command line"

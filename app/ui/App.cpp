@@ -140,6 +140,7 @@ void App::installLoadResult(SceneLoader::Result result) {
         state_.attempts = 0;
         state_.match.reset();
         state_.bestUserPoseErrorMm.reset();
+        state_.assisted = false;
     } else {
         newReference();
     }
@@ -225,6 +226,7 @@ void App::newReference() {
     state_.referenceRevealed = false;
     state_.attempts = 0;
     state_.bestUserPoseErrorMm.reset();
+    state_.assisted = false;
     state_.match.reset();
     state_.matchIsStale = false;
     // A solution belongs to its reference.
@@ -371,6 +373,7 @@ void App::processRequests() {
             v[k] = std::clamp(v[k], specs[k].min, specs[k].max);
         state_.userPose = Pose::fromArray(v);
         state_.solve.applied = true;
+        state_.assisted = true;  // until the next reference
         state_.matchIsStale = true;
     }
     if (requests.match && scene_ && state_.mode == ImagingMode::Slice) {
@@ -407,7 +410,9 @@ void App::processRequests() {
 
 void App::recordAttempt(MatchOutcome outcome) {
     outcome.attempt = state_.attempts;
-    if (!state_.bestUserPoseErrorMm || outcome.poseErrorMm < *state_.bestUserPoseErrorMm)
+    outcome.assisted = state_.assisted;
+    if (!outcome.assisted &&
+        (!state_.bestUserPoseErrorMm || outcome.poseErrorMm < *state_.bestUserPoseErrorMm))
         state_.bestUserPoseErrorMm = outcome.poseErrorMm;
     state_.match = std::move(outcome);
     state_.matchIsStale = false;

@@ -90,7 +90,8 @@ void Ui::matchTab(AppState& state) {
         return;
     }
     const MatchOutcome& m = *state.match;
-    coloredWrapped(m.matched ? kGood : kWarn, m.verdict);
+    coloredWrapped(m.assisted ? kDim : m.matched ? kGood : kWarn, m.verdict);
+    record("text:match-verdict");
     const char* band = closenessName(m.judged.closeness);
     if (m.numbersShown)
         ImGui::Text("attempt %d: mTRE %.2f mm (%s)%s", m.attempt, m.poseErrorMm, band,

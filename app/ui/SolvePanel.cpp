@@ -69,8 +69,10 @@ void Ui::solveSection(AppState& state) {
         ImGui::SameLine();
         if (bone)  // the bone's search numbers are no 2011 pose
             ImGui::TextUnformatted(state.bones.list[solve.bone].name.c_str());
-        else
+        else if (state.referenceRevealed)
             poseLine(solve.candidate);
+        else  // the candidates converge on the answer: numbers only after Reveal
+            ImGui::TextColored(kDim, "hidden until Reveal");
         if (state.showTimings) ImGui::TextColored(kDim, "%.1f s", solve.elapsedMs / 1000.0);
         return;
     }
@@ -90,8 +92,13 @@ void Ui::solveSection(AppState& state) {
     ImGui::SameLine();
     if (bone) {
         const auto& m = solve.boneMotion;
-        ImGui::TextWrapped("%s %.1f, %.1f, %.1f mm | %.1f, %.1f, %.1f deg",
-                    state.bones.list[solve.bone].name.c_str(), m[0], m[1], m[2], m[3], m[4], m[5]);
+        if (state.bones.flex.revealed)
+            ImGui::TextWrapped("%s %.1f, %.1f, %.1f mm | %.1f, %.1f, %.1f deg",
+                               state.bones.list[solve.bone].name.c_str(), m[0], m[1], m[2], m[3],
+                               m[4], m[5]);
+        else
+            ImGui::TextWrapped("%s: its motion is hidden until Reveal",
+                               state.bones.list[solve.bone].name.c_str());
         record("text:solve-bone-motion");
         // Judged as a Check (the knee's tibia on the joint angles); the numbers once the game's
         // reference is revealed.
@@ -103,8 +110,12 @@ void Ui::solveSection(AppState& state) {
                         solve.error6[5]);
         else
             dimWrapped("Reveal (Bones tab) shows its error against the hidden motion.");
-    } else {
+    } else if (state.referenceRevealed) {
         poseLine(solve.bestPose);
+        record("text:solve-pose");
+    } else {  // the computer's pose is the answer: shown with the reference's, after Reveal
+        ImGui::TextColored(kDim, "pose hidden until Reveal (it is the answer)");
+        record("text:solve-pose-hidden");
     }
     if (!bone && state.referenceRevealed) {
         ImGui::TextWrapped("mTRE %.2f mm, error %+.1f %+.1f %+.1f mm | %+.1f %+.1f %+.1f deg",
@@ -113,19 +124,22 @@ void Ui::solveSection(AppState& state) {
         if (state.bestUserPoseErrorMm)
             ImGui::Text("you: %d attempt%s, best mTRE %.2f mm", state.attempts,
                         state.attempts == 1 ? "" : "s", *state.bestUserPoseErrorMm);
-    } else if (!bone) {
-        dimWrapped("Reveal shows its error against the hidden pose.");
     }
     if (!bone && (!state.referenceRevealed || !state.bestUserPoseErrorMm)) {
         if (state.attempts > 0)
             ImGui::Text("you: %d attempt%s%s", state.attempts, state.attempts == 1 ? "" : "s",
-                        state.match && state.match->matched ? ", matched" : "");
+                        !state.match || !state.match->matched ? ""
+                        : state.match->assisted               ? ", matched with the computer's help"
+                                                              : ", matched");
         else
             ImGui::Text("you: no attempt yet");
     }
     if (ImGui::Button(solve.applied ? "Applied" : "Apply solution"))
         state.requests.applySolution = true;
     record("button:apply-solution");
+    if (ImGui::IsItemHovered())
+        tooltip("Move your sliders to the computer's answer; a Match from there is marked as "
+                "assisted, not counted as yours");
 }
 
 void Ui::solveTarget(AppState& state) {

@@ -4,6 +4,7 @@
 #include <thread>
 
 #include "AppFixture.h"
+#include "core/Error.h"
 #include "drr/Drr.h"
 #include "match/MatchVerdict.h"
 #include "match/PoseError.h"
@@ -122,8 +123,38 @@ TEST_F(SolveUi, ApplyPutsTheSolutionOnTheSlidersAndItMatches) {
     ASSERT_TRUE(app->state().match.has_value());
     EXPECT_TRUE(app->state().match->matched) << app->state().match->verdict;
     EXPECT_EQ(app->state().attempts, 2);
-    EXPECT_NEAR(*app->state().bestUserPoseErrorMm, mtre(solution), kSameComputationMm)
-        << "the best attempt is now the applied solution";
+    // The computer's match, not the student's: said so, drawn dim, not their best.
+    EXPECT_TRUE(app->state().match->assisted);
+    EXPECT_EQ(app->state().match->verdict.rfind("Assisted (Apply solution set the pose)", 0), 0u)
+        << app->state().match->verdict;
+    EXPECT_NEAR(*app->state().bestUserPoseErrorMm, mtre(startPose()), kSameComputationMm)
+        << "an assisted match is not the user's best";
+    // A new reference: the user's own again.
+    script->clickWidget("button:new-reference");
+    script->idle(1);
+    EXPECT_FALSE(app->state().assisted);
+}
+
+// The computer's pose is the answer: hidden (while it searches and when it is done) until
+// Reveal, then shown with its error.
+TEST_F(SolveUi, TheComputersPoseIsHiddenUntilReveal) {
+    app->state().userPose = startPose();
+    solve();
+    step();
+    EXPECT_THROW(script->widget("text:solve-pose"), Error);
+    for (int frames = 0; app->state().solve.running && frames < kMaxSolveFrames; ++frames) step();
+    ASSERT_TRUE(app->state().solve.finished) << app->state().solve.error;
+    step();
+    EXPECT_NO_THROW(script->widget("text:solve-pose-hidden"));
+    EXPECT_THROW(script->widget("text:solve-pose"), Error) << "the answer shown before Reveal";
+    script->clickWidget("tab:match");
+    script->idle(1);
+    script->clickWidget("checkbox:reveal");
+    script->clickWidget("tab:solve");
+    script->idle(1);
+    ASSERT_TRUE(app->state().referenceRevealed);
+    EXPECT_NO_THROW(script->widget("text:solve-pose"));
+    EXPECT_THROW(script->widget("text:solve-pose-hidden"), Error);
 }
 
 TEST_F(SolveUi, StopEndsTheRunPromptlyAndKeepsTheBestSoFar) {
