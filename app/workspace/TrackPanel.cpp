@@ -77,14 +77,18 @@ void WorkspaceUi::trackPane(WorkspaceState& state, const Pane& pane) {
     ImGui::EndDisabled();
     ImGui::SameLine();
     const TrackRunView& v = t.run;
+    // The last run's status belongs to its object: another object selected shows its own (none).
+    const bool runOfSelected = v.running || (state.selected >= 0 && state.selected < int(state.objects.size()) &&
+                                             state.objects[static_cast<std::size_t>(state.selected)].name == v.object);
     char overlay[160];
-    if (v.total > 0)
+    if (v.total > 0 && runOfSelected)
         std::snprintf(overlay, sizeof overlay, "%s %d/%d", v.object.c_str(), v.done, v.total);
     else
         std::snprintf(overlay, sizeof overlay, "not tracked yet");
-    ImGui::ProgressBar(v.total > 0 ? float(v.done) / float(v.total) : 0.0f, ImVec2(-1.0f, 0.0f), overlay);
+    ImGui::ProgressBar(v.total > 0 && runOfSelected ? float(v.done) / float(v.total) : 0.0f, ImVec2(-1.0f, 0.0f),
+                       overlay);
     record("progress:track");
-    if (v.total > 0) {
+    if (v.total > 0 && runOfSelected) {
         char line[200], seconds[48] = "";
         if (state.showTimings) std::snprintf(seconds, sizeof seconds, "  %.2f s/frame", v.secondsPerFrame);
         const std::string where = v.running && v.currentFrame >= 0 ? ", frame " + std::to_string(v.currentFrame) : "";
@@ -92,6 +96,7 @@ void WorkspaceUi::trackPane(WorkspaceState& state, const Pane& pane) {
                       v.running ? "tracking " : (v.stopped ? "stopped " : "tracked "),
                       v.backwards ? "back" : "forward", where.c_str(), seconds, v.lastCost);
         if (elidedText(v.running ? kSelected : kDim, line) && ImGui::IsItemHovered()) tooltip(line);
+        record("text:track-status");
         if (!v.lastNote.empty() && elidedText(kDim, v.lastNote) && ImGui::IsItemHovered()) tooltip(v.lastNote);
     }
     if (!v.error.empty()) coloredWrapped(kBad, v.error);

@@ -18,9 +18,51 @@
 #include "workspace/ShownPose.h"
 #include "workspace/WorkspacePose.h"
 #include "xray/CameraPoseDifference.h"
+#include "xray/ModelCoverage.h"
 #include "xray/ObjectRegistration.h"
 
 namespace fm::app {
+
+void WorkspaceApp::checkAnswer(WorkspaceSolve& w, const SceneObject& object, int frame,
+                               const RigidTransform& pose) const {
+    // 1. Blind: at the answer the model covers (almost) no valid pixel of any camera: nothing
+    //    was matched. (One camera of a biplane trial may miss a bone; the tracker then uses the
+    //    other.)
+    SceneObject at = object;
+    at.worldFromObject = pose;
+    std::string firstBlind;
+    std::size_t blindCameras = 0;
+    const auto& views = model_->prepared(frame);
+    for (const RegistrationView& v : views) {
+        const std::string blind =
+            v.valid ? blindness(modelCoverage(at, model_->scene().cameras.at(v.camera), *v.valid, model_->threads()))
+                    : std::string();
+        if (blind.empty()) continue;
+        ++blindCameras;
+        if (firstBlind.empty()) firstBlind = blind;
+    }
+    if (!views.empty() && blindCameras == views.size()) {
+        w.check = WorkspaceSolve::Check::Lost;
+        w.checkText = "lost: at the answer the model " + firstBlind;
+        return;
+    }
+    // 2. The mask, where there is one: the silhouette must cover it.
+    using Check = WorkspaceSolve::Check;
+    if (w.iou) {
+        const double iou = *w.iou;
+        w.check = iou >= kConfirmedIoU ? Check::Confirmed : iou >= kLostIoU ? Check::Doubtful : Check::Lost;
+        const char* word = w.check == Check::Confirmed ? "checked" : w.check == Check::Doubtful ? "doubtful" : "lost";
+        char text[160];
+        std::snprintf(text, sizeof text, "%s: silhouette IoU %.3f against the mask (%s %.2f)", word, iou,
+                      w.check == Check::Confirmed ? "at least" : "below",
+                      w.check == Check::Lost ? kLostIoU : kConfirmedIoU);
+        w.checkText = text;
+        return;
+    }
+    // 3. Nothing to check against: not shown as right.
+    w.check = WorkspaceSolve::Check::Unchecked;
+    w.checkText = "unchecked: no mask to compare with; check the outline against the radiograph";
+}
 
 WorkspaceApp::WorkspaceApp(RenderBackend& backend, std::shared_ptr<WorkspaceModel> model, WorkspaceOptions options)
     : backend_(backend), model_(std::move(model)), options_(options) {
@@ -96,13 +138,31 @@ void WorkspaceApp::goToFrame(int frame) {
     state_.error.clear();
 }
 
-void WorkspaceApp::applyControls() {
+bool WorkspaceApp::applyControls() {
     PoseControls& c = state_.controls;
-    if (c.object < 0 || c.values == c.shown) return;
-    if (c.frameIndex != state_.frame || c.object != state_.selected) return;  // rebased below
+    if (c.object < 0 || c.values == c.shown) return false;
+    if (c.frameIndex != state_.frame || c.object != state_.selected) return false;  // rebased below
+    state_.undo.recordEdit(model_->objectName(c.object), state_.frame, c.object, snapshot());
     state_.poses[static_cast<std::size_t>(state_.frame)][static_cast<std::size_t>(c.object)] =
         poseFromControls(c, model_->scene());
     c.shown = c.values;
+    return true;
+}
+
+void WorkspaceApp::undo() {
+    if (state_.solve.running || state_.track.run.running) {
+        state_.undoMessage = "Undo waits: stop the running Solve or Track first";
+        return;
+    }
+    std::optional<PoseHistory::Step> step = state_.undo.takeLast();
+    if (!step) {
+        state_.undoMessage = "Nothing to undo";
+        return;
+    }
+    state_.poses = std::move(step->before.poses);
+    state_.track.keyframes = std::move(step->before.keyframes);
+    state_.controls.object = -1;  // rebased on the restored pose
+    state_.undoMessage = "Undone: " + step->what;
 }
 
 void WorkspaceApp::syncControls() {
@@ -132,6 +192,7 @@ void WorkspaceApp::processRequests() {
         solveVersion_ = 0;
     }
     if (r.save) save();
+    if (r.undo) undo();
 }
 
 void WorkspaceApp::pollSolver() {
@@ -157,7 +218,10 @@ void WorkspaceApp::pollSolver() {
     w.iou.reset();
     w.startIou.reset();
     if (!s.result) return;
-    // The answer goes onto the sliders: it is the object's pose in that frame now.
+    // The answer goes onto the sliders: it is the object's pose in that frame now (Undo returns
+    // to the pose before).
+    state_.undo.record("Solve of " + model_->objectName(s.object) + " in frame " + std::to_string(s.frame),
+                       snapshot());
     state_.poses.at(static_cast<std::size_t>(s.frame)).at(static_cast<std::size_t>(s.object)) = *s.result;
     state_.controls.object = -1;  // rebased on it
     const SceneObject& o = model_->scene().objects.at(static_cast<std::size_t>(s.object));
@@ -173,11 +237,13 @@ void WorkspaceApp::pollSolver() {
         w.iou = silhouetteIoU(silhouetteAt(*s.result), *m);
         w.startIou = silhouetteIoU(silhouetteAt(s.start), *m);
     }
+    checkAnswer(w, o, s.frame, *s.result);
     char line[256];
     std::snprintf(line, sizeof line, "%s %s in frame %d: similarity %.5f (%s)", s.stopped ? "Stopped:" : "Solved:",
                   o.name.c_str(), s.frame, s.similarity, s.note.c_str());
     w.summary = line;
     std::printf("solve       %s\n", line);
+    std::printf("verdict     %s\n", w.checkText.c_str());
     std::printf("            moved in-plane %.3f mm, depth %.3f mm, rotation %.3f deg (camera 1)\n", d.inPlaneMm,
                 d.depthMm, d.rotationDeg);
     if (w.iou) std::printf("            IoU %.4f against the mask (start %.4f)\n", *w.iou, *w.startIou);
@@ -324,7 +390,8 @@ void WorkspaceApp::frame() {
     textures.scene3d = sceneRenderer_->texture();
     ui_.draw(state_, textures);
 
-    applyControls();
+    // A pose edit lasts while its control is held: a drag is one Undo step, a nudge one each.
+    if (!applyControls() && !ImGui::IsAnyItemActive()) state_.undo.editOpen = false;
     processRequests();
     if (state_.tracking) tracking_.process(model_, state_);
     syncControls();

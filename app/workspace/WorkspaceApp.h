@@ -60,10 +60,15 @@ class WorkspaceApp : public ScriptableApp {
 
   private:
     void goToFrame(int frame);
-    void applyControls();
+    // Returns whether the controls changed the pose (an edit, recorded for Undo).
+    bool applyControls();
+    void undo();
+    PoseSnapshot snapshot() const { return {state_.poses, state_.track.keyframes}; }
     void syncControls();
     void processRequests();
     void pollSolver();
+    // The verdict of a Solve's answer (WorkspaceSolve::check) from what can be checked.
+    void checkAnswer(WorkspaceSolve& w, const SceneObject& object, int frame, const RigidTransform& pose) const;
     void save();
     void updateImages();
     void buildSurfaces();

@@ -10,6 +10,7 @@
 
 #include "scene/RigidTransform.h"
 #include "state/AppState.h"
+#include "workspace/PoseHistory.h"
 #include "workspace/TrackState.h"
 
 namespace fm::app {
@@ -70,10 +71,20 @@ struct WorkspaceSolve {
     double inPlaneMm = 0.0, depthMm = 0.0, rotationDeg = 0.0;
     std::optional<double> iou, startIou;  // against the object's mask, when there is one
     std::string summary;                  // one line: how it ended
+    // How far the answer can be trusted, from what can be checked here (the mask, the model's
+    // coverage of valid pixels): only a checked answer is shown as good.
+    enum class Check { Confirmed, Unchecked, Doubtful, Lost } check = Check::Unchecked;
+    std::string checkText;  // "checked: IoU 0.95 against the mask", "unchecked: no mask ..."
 };
+
+// Silhouette IoU against the mask from which an answer counts as confirmed, and below which it is
+// lost rather than doubtful.
+inline constexpr double kConfirmedIoU = 0.9;
+inline constexpr double kLostIoU = 0.5;
 
 struct WorkspaceRequests {
     bool solve = false, stopSolve = false;
+    bool undo = false;
     bool save = false;
     std::optional<int> frame;  // go to this frame
     bool resetView = false;
@@ -105,6 +116,8 @@ struct WorkspaceState {
     View3d view = defaultRigView();
 
     WorkspaceSolve solve;
+    PoseHistory undo;         // Undo: the poses before each change
+    std::string undoMessage;  // what the last Undo undid
     std::string savePath;  // .tra (trial) or .jts (one model) / .tra (several) for one image
     std::string saveMessage;
     bool saveFailed = false;

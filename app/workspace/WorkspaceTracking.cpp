@@ -88,6 +88,10 @@ void WorkspaceTracking::start(const std::shared_ptr<const WorkspaceModel>& model
         if (const auto shown = shownPose(state, state.frame, object)) poses.setPose(state.frame, *shown);
     TrackRequest request = trackRequestFrom(name, poses, state.frame, backwards, model->threads());
     runner_.start(std::shared_ptr<const TrialScene>(model, &model->trial()), std::move(request));
+    // Started: the whole run is one Undo step, back to the poses before it.
+    state.undo.record("Track of " + name + (backwards ? " back" : " forward") + " from frame " +
+                          std::to_string(state.frame),
+                      {state.poses, state.track.keyframes});
     runObject_ = object;
     state.track.playing = false;
 }
@@ -129,11 +133,16 @@ void WorkspaceTracking::process(const std::shared_ptr<const WorkspaceModel>& mod
     }
     if (r.setKeyframe)
         if (const auto p = shownPose(state, state.frame, state.selected)) {
+            state.undo.record("keyframe set in frame " + std::to_string(state.frame),
+                              {state.poses, t.keyframes});
             // A keyframe is a set pose of its frame, carried over or not.
             t.keyframes.at(object)[state.frame] = *p;
             state.poses.at(static_cast<std::size_t>(state.frame)).at(object) = *p;
         }
-    if (r.clearKeyframe) t.keyframes.at(object).erase(state.frame);
+    if (r.clearKeyframe && t.keyframes.at(object).count(state.frame)) {
+        state.undo.record("keyframe cleared in frame " + std::to_string(state.frame), {state.poses, t.keyframes});
+        t.keyframes.at(object).erase(state.frame);
+    }
     if (r.stop) runner_.stop();
     try {
         if (r.forward || r.back) start(model, state, r.back);

@@ -82,6 +82,7 @@ void WorkspaceUi::drawTooltip() {
 }
 
 void WorkspaceUi::draw(WorkspaceState& state, const WorkspaceTextures& textures) {
+    rects_.clear();  // what this frame draws, as the game's Ui: a widget not drawn has no rect
     const ImVec2 display = ImGui::GetIO().DisplaySize;
     const WorkspaceLayout layout =
         computeWorkspaceLayout({display.x, display.y}, static_cast<int>(state.cameraNames.size()), state.tracking);
@@ -319,6 +320,19 @@ void WorkspaceUi::solvePane(WorkspaceState& state, const Pane& pane) {
                     : "Register the selected object in this frame from your pose (register --reference: "
                       "edge distance for meshes, gradient NCC for volumes)");
     ImGui::SameLine();
+    // Undo: the poses before the last Solve, Track run, keyframe or pose edit (Ctrl+Z).
+    const bool canUndo = !state.undo.steps.empty() && !s.running && !state.track.run.running;
+    ImGui::BeginDisabled(!canUndo);
+    if (ImGui::Button("Undo")) state.requests.undo = true;
+    ImGui::EndDisabled();
+    record("button:undo");
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+        tooltip(state.undo.steps.empty() ? std::string("Nothing to undo")
+                                         : "Undo the " + state.undo.steps.back().what + " (Ctrl+Z)");
+    const ImGuiIO& io = ImGui::GetIO();
+    if (canUndo && io.KeyCtrl && !io.WantTextInput && ImGui::IsKeyPressed(ImGuiKey_Z, false))
+        state.requests.undo = true;
+    ImGui::SameLine();
     const float fraction = s.budget > 0 ? std::min(1.0f, float(s.evaluations) / float(s.budget)) : (s.running ? 0.0f : 1.0f);
     char overlay[96];
     std::snprintf(overlay, sizeof overlay, "%d / %d", s.evaluations, s.budget);
@@ -327,7 +341,16 @@ void WorkspaceUi::solvePane(WorkspaceState& state, const Pane& pane) {
     if (s.running) dimWrapped("%s", s.stage.c_str());
     if (!s.error.empty()) coloredWrapped(kBad, s.error);
     if (s.finished && s.result) {
-        coloredWrapped(s.stopped ? kWarn : kGood, s.summary);
+        // Words and colour from the verdict: green only for an answer the mask confirms.
+        using Check = WorkspaceSolve::Check;
+        const ImVec4 colour = s.check == Check::Confirmed && !s.stopped ? kGood
+                              : s.check == Check::Lost                  ? kBad
+                              : s.check == Check::Doubtful || s.stopped ? kWarn
+                                                                        : ImGui::GetStyleColorVec4(ImGuiCol_Text);
+        coloredWrapped(colour, s.summary);
+        record("text:solve-summary");
+        coloredWrapped(colour, s.checkText);
+        record("text:solve-check");
         bulletWrapped("moved in-plane %.2f mm, depth %.2f mm, rotation %.2f deg", s.inPlaneMm, s.depthMm, s.rotationDeg);
         if (s.iou) bulletWrapped("IoU %.4f against the mask (start %.4f)", *s.iou, s.startIou.value_or(0.0));
         if (state.showTimings) bulletWrapped("%.2f s, %d evaluations", s.seconds, s.evaluations);
@@ -343,6 +366,7 @@ void WorkspaceUi::solvePane(WorkspaceState& state, const Pane& pane) {
     ImGui::SameLine();
     if (ImGui::Button("Save")) state.requests.save = true;
     record("button:save");
+    if (!state.undoMessage.empty()) dimWrapped("%s", state.undoMessage.c_str());
     if (!state.saveMessage.empty()) coloredWrapped(state.saveFailed ? kBad : kGood, state.saveMessage);
     if (!state.error.empty()) coloredWrapped(kBad, state.error);
     ImGui::End();

@@ -19,6 +19,7 @@
 #include "GoldenImage.h"
 #include "WorkspaceFixture.h"
 #include "common/TestData.h"
+#include "core/Error.h"
 #include "io/TextFile.h"
 #include "pose/AutoscoperTra.h"
 #include "render/Screenshot.h"
@@ -300,6 +301,79 @@ HandResult putBackByHandAndSolve(TrackUi& t, const std::string& bone, int frame)
                 bone.c_str(), frame, r.offMm, r.offDeg, r.handMm, r.handDeg, r.endMm, r.endDeg, r.similarity,
                 s.summary.c_str());
     return r;
+}
+
+// Exactly the same poses (every frame, every object, set or not).
+bool samePoses(const std::vector<std::vector<std::optional<RigidTransform>>>& a,
+               const std::vector<std::vector<std::optional<RigidTransform>>>& b) {
+    if (a.size() != b.size()) return false;
+    for (std::size_t f = 0; f < a.size(); ++f) {
+        if (a[f].size() != b[f].size()) return false;
+        for (std::size_t k = 0; k < a[f].size(); ++k) {
+            if (a[f][k].has_value() != b[f][k].has_value()) return false;
+            if (a[f][k] && (a[f][k]->rotation != b[f][k]->rotation || a[f][k]->translation != b[f][k]->translation))
+                return false;
+        }
+    }
+    return true;
+}
+
+// Undo: a nudge, a Track run and a Solve are one step each, back to the poses exactly as they
+// were; the Solve of a bone without masks is unchecked, never shown as confirmed; the Track
+// line belongs to the object it tracked.
+TEST_F(TrackUi, UndoTakesBackASolveATrackRunAndANudgeOneStepEach) {
+    const int ulna = object("ulna");
+    script->clickWidget("select:object-ulna");
+    script->idle(1);
+    const auto atStart = app->state().poses;
+    const std::size_t steps = app->state().undo.steps.size();
+    script->pressKey(ImGuiKey_RightArrow);
+    script->pressKey(ImGuiKey_RightArrow);
+    script->idle(1);
+    ASSERT_FALSE(samePoses(app->state().poses, atStart)) << "the nudges moved nothing";
+    EXPECT_EQ(app->state().undo.steps.size(), steps + 2) << "one step per nudge";
+    const auto nudged = app->state().poses;
+
+    script->clickWidget("button:track-forward");
+    idleUntil([&] { return app->state().track.run.running; });
+    idleUntil([&] { return !app->state().track.run.running; });
+    script->idle(2);
+    ASSERT_TRUE(app->state().track.run.error.empty()) << app->state().track.run.error;
+    const auto tracked = app->state().poses;
+    ASSERT_FALSE(samePoses(tracked, nudged));
+    // Another object selected: the ulna's run is not shown as its.
+    script->clickWidget("select:object-radius");
+    script->idle(1);
+    EXPECT_THROW(script->widget("text:track-status"), Error);
+    script->clickWidget("select:object-ulna");
+    script->idle(1);
+    EXPECT_NO_THROW(script->widget("text:track-status"));
+
+    app->state().requests.frame = 0;
+    script->idle(1);
+    script->clickWidget("button:solve");
+    app->waitForSolve();
+    const app::WorkspaceSolve& s = app->state().solve;
+    ASSERT_TRUE(s.finished && s.result) << s.error;
+    EXPECT_EQ(s.check, app::WorkspaceSolve::Check::Unchecked) << s.checkText;
+    EXPECT_EQ(s.checkText.rfind("unchecked", 0), 0u) << s.checkText;
+    ASSERT_FALSE(samePoses(app->state().poses, tracked)) << "the Solve changed nothing";
+
+    script->clickWidget("button:undo");
+    script->idle(1);
+    EXPECT_TRUE(samePoses(app->state().poses, tracked)) << app->state().undoMessage;
+    EXPECT_NE(app->state().undoMessage.find("Solve of ulna in frame 0"), std::string::npos)
+        << app->state().undoMessage;
+    script->clickWidget("button:undo");
+    script->idle(1);
+    EXPECT_TRUE(samePoses(app->state().poses, nudged)) << app->state().undoMessage;
+    EXPECT_NE(app->state().undoMessage.find("Track of ulna forward from frame 0"), std::string::npos);
+    script->pressKey(ImGuiKey_Z, true);  // Ctrl+Z
+    script->pressKey(ImGuiKey_Z, true);
+    script->idle(1);
+    EXPECT_TRUE(samePoses(app->state().poses, atStart)) << app->state().undoMessage;
+    EXPECT_EQ(app->state().undo.steps.size(), steps);
+    EXPECT_TRUE(poseAt(0, ulna).has_value());
 }
 
 TEST_F(TrackUi, ABonePutBackByHandAndSolvedEndsAtItsKeyframe) {

@@ -111,6 +111,9 @@ TEST_F(WorkspaceUi, SolveRegistersFromThePoseShownAndSaveWritesTheTra) {
     EXPECT_GT(*s.iou, *s.startIou);
     EXPECT_GT(s.inPlaneMm, 1.0);  // it moved back across the film
     EXPECT_NEAR(glm::length(s.result->translation - jts(0, 0).translation), 0.0, 12.0);
+    // The mask confirms it: the one verdict shown as good.
+    EXPECT_EQ(s.check, app::WorkspaceSolve::Check::Confirmed) << s.checkText;
+    EXPECT_EQ(s.checkText.rfind("checked: silhouette IoU", 0), 0u) << s.checkText;
     // Save: the .tra holds every frame's poses (Autoscoper's frame: the mesh's own here).
     const fs::path out = scratchDir("workspace-ui-save") / "knee.tra";
     app->state().savePath = out.string();
@@ -128,6 +131,11 @@ TEST_F(WorkspaceUi, SolveRegistersFromThePoseShownAndSaveWritesTheTra) {
     EXPECT_TRUE(app->state().saveFailed);
     EXPECT_NE(app->state().saveMessage.find("missing"), std::string::npos);
     EXPECT_EQ(app->pose(0)->translation, s.result->translation);
+    // Undo: back to the pose Solve started from, exactly.
+    script->clickWidget("button:undo");
+    script->idle(1);
+    EXPECT_EQ(app->pose(0)->translation, start.translation) << app->state().undoMessage;
+    EXPECT_EQ(app->pose(0)->rotation, start.rotation);
 }
 
 // The Save of a trial of three bones (48 numbers a row, which 3 matrices and 8 xyzypr rows both
