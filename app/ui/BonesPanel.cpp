@@ -34,8 +34,13 @@ void Ui::kneeAnglesLine(const AppState& state) {
                           "floating axis, internal rotation about the tibia's long axis");
     ImGui::TextColored(kDim, "shift %.1f  drawer %.1f  distr. %.1f mm", a[0], a[1], a[2]);
     if (ImGui::IsItemHovered())
-        tooltip("The tibia's origin in the femur's frame, along e1, e2, e3: medial "
-                          "shift, anterior drawer, distraction");
+        tooltip("Grood-Suntay translations of the tibia's origin in the femur's frame (mm):\n"
+                "shift: medial (+) or lateral along the femur's medio-lateral axis (e1)\n"
+                "drawer: anterior (+) or posterior along the floating axis (e2), as in the "
+                "drawer test\n"
+                "distr.: distraction, the tibia pulled away (+) from the femur along its long "
+                "axis (e3); negative is compression");
+    record("text:knee-translations");
 }
 
 void Ui::bonesTab(AppState& state) {

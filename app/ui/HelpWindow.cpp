@@ -54,7 +54,26 @@ void Ui::helpWindow(AppState& state) {
             "...). Difficulty: easy hides 2 parameters, medium 4, hard all 6, further off.");
         bulletWrapped(
             "Solve: the computer searches from your pose (live; Stop keeps its best so far); "
-            "its answer is judged like yours. Apply solution puts it on the sliders.");
+            "its answer is judged like yours, its pose hidden until Reveal. Apply solution puts "
+            "it on the sliders; a Match from there is marked as assisted, not yours.");
+        ImGui::Spacing();
+        ImGui::TextUnformatted("Bones (the Bones tab):");
+        bulletWrapped(
+            "The CT's bones as objects: show or hide each (in both DRRs and the 3D view), and "
+            "choose what the sliders move: the camera, or one bone (its offsets and turns).");
+        bulletWrapped(
+            "Knee: the Grood-Suntay angles of the tibia against the femur, live: flexion, "
+            "varus, internal rotation (deg); medial shift, anterior drawer, distraction (mm).");
+        bulletWrapped(
+            "The flex game (knee): New flexion hides a flexion of the tibia (femur and patella "
+            "stay); move the tibia until your DRR matches, then Check. Hints name the angle "
+            "furthest off; numbers after a match or Reveal.");
+        bulletWrapped(
+            "The move game (other bones: a label map, components, a grown region): one bone is "
+            "moved by a hidden motion; move it back with the sliders, then Check.");
+        bulletWrapped(
+            "Solve for a bone registers that bone alone against the bone game's reference "
+            "(the others stay), optionally biplane.");
         ImGui::Spacing();
         ImGui::TextUnformatted("Controls:");
         bulletWrapped("Drag a slider, or type a number in the field beside it.");

@@ -121,7 +121,11 @@ void Ui::matchTab(AppState& state) {
             else
                 ImGui::TextUnformatted(specs[p].name);
             ImGui::TableNextColumn();
-            ImGui::TextColored(m.direction[p] == 0 ? kGood : kWarn, "%s", m.hintCells[p].c_str());
+            // Wrapped in its column: after Reveal a third column takes room, and a hint with
+            // its numbers ("too high, close (+18.4 mm)") was cut off.
+            ImGui::PushStyleColor(ImGuiCol_Text, m.direction[p] == 0 ? kGood : kWarn);
+            ImGui::TextWrapped("%s", m.hintCells[p].c_str());
+            ImGui::PopStyleColor();
             if (state.referenceRevealed) {
                 ImGui::TableNextColumn();
                 ImGui::Text("%.1f", reference[p]);

@@ -78,10 +78,14 @@ void Ui::solveSection(AppState& state) {
     }
 
     // Finished: the computer's answer, judged like a user's attempt.
-    std::string verdict = solve.matched
-                              ? "The computer's answer matches the reference."
-                              : std::string("No match: the computer's answer is ") +
-                                    closenessName(solve.closeness) + " from the reference.";
+    // "close to", "far from": the search looks around your pose, so a miss suggests a closer start.
+    std::string verdict =
+        solve.matched ? "The computer's answer matches the reference."
+                      : std::string("No match: the computer's answer is ") +
+                            closenessName(solve.closeness) +
+                            (solve.closeness == Closeness::Far ? " from" : " to") +
+                            " the reference. It searches around your pose: start closer and "
+                            "Solve again.";
     if (solve.stopped) verdict += " (stopped)";
     coloredWrapped(solve.matched ? kGood : kWarn, verdict);
     record("text:solve-verdict");
