@@ -101,18 +101,23 @@ void WorkspaceUi::trackPane(WorkspaceState& state, const Pane& pane) {
     }
     if (!v.error.empty()) coloredWrapped(kBad, v.error);
 
-    ImGui::SetNextItemWidth(std::max(60.0f, ImGui::GetContentRegionAvail().x - ImGui::CalcTextSize("Save .tra").x -
+    // This save writes the selected object alone (the Solve pane's writes them all): named on it.
+    const std::string saveTraLabel =
+        "Save " + (haveObject ? state.objects[static_cast<std::size_t>(state.selected)].name : std::string("object")) +
+        ".tra###save-tra";
+    ImGui::SetNextItemWidth(std::max(60.0f, ImGui::GetContentRegionAvail().x -
+                                                ImGui::CalcTextSize(saveTraLabel.c_str(), nullptr, true).x -
                                                 ImGui::CalcTextSize("Save keyframes").x -
                                                 4 * ImGui::GetStyle().FramePadding.x -
                                                 2 * ImGui::GetStyle().ItemSpacing.x));
     ImGui::InputTextWithHint("##trapath", "<trial>_<object>.tra", &t.traPath);
     record("input:tra-path");
     if (ImGui::IsItemHovered())
-        tooltip("Where Save .tra writes the selected object's poses (Autoscoper's .tra, NaN where none; the "
+        tooltip("Where Save <object>.tra writes the selected object's poses (Autoscoper's .tra, NaN where none; the "
                 "bytes fluoromatch track writes). Empty: beside the save path, <name>_<object>.tra");
     ImGui::SameLine();
     ImGui::BeginDisabled(!haveObject);
-    if (ImGui::Button("Save .tra")) r.saveTra = true;
+    if (ImGui::Button(saveTraLabel.c_str())) r.saveTra = true;
     record("button:save-tra");
     ImGui::EndDisabled();
     ImGui::SameLine();

@@ -356,15 +356,18 @@ void WorkspaceUi::solvePane(WorkspaceState& state, const Pane& pane) {
         if (state.showTimings) bulletWrapped("%.2f s, %d evaluations", s.seconds, s.evaluations);
     }
     ImGui::Separator();
-    ImGui::SetNextItemWidth(std::max(60.0f, ImGui::GetContentRegionAvail().x - ImGui::CalcTextSize("Save").x -
+    // Two saves in a trial: this one writes every object (Track's "Save <object>.tra" one): said
+    // on the button.
+    const char* saveLabel = state.objects.size() > 1 ? "Save all objects" : "Save";
+    ImGui::SetNextItemWidth(std::max(60.0f, ImGui::GetContentRegionAvail().x - ImGui::CalcTextSize(saveLabel).x -
                                                 2 * ImGui::GetStyle().FramePadding.x - ImGui::GetStyle().ItemSpacing.x));
     ImGui::InputText("##savepath", &state.savePath);
     record("input:save-path");
     if (ImGui::IsItemHovered())
-        tooltip("Where Save writes every frame's poses: .tra (Autoscoper) for a trial; .jts (JointTrack) or "
-                ".tra for one radiograph");
+        tooltip("Where Save writes every frame's poses of every object: one .tra (Autoscoper, the objects in "
+                "the trial's order) for a trial; .jts (JointTrack) or .tra for one radiograph");
     ImGui::SameLine();
-    if (ImGui::Button("Save")) state.requests.save = true;
+    if (ImGui::Button(saveLabel)) state.requests.save = true;
     record("button:save");
     if (!state.undoMessage.empty()) dimWrapped("%s", state.undoMessage.c_str());
     if (!state.saveMessage.empty()) coloredWrapped(state.saveFailed ? kBad : kGood, state.saveMessage);
