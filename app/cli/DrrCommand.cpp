@@ -18,6 +18,7 @@
 #include "cli/BoneOptions.h"
 #include "cli/CommandRegistry.h"
 #include "cli/SceneOptions.h"
+#include "cli/ValueChecks.h"
 #include "cli/VolumeOption.h"
 #include "core/Error.h"
 #include "core/Parallel.h"
@@ -48,6 +49,7 @@ struct DrrArgs {
     bool noSkip = false;
     std::string walk = "auto";
     std::string voxels = "auto";
+    std::string center = "ct";  // the pose's isocenter: the whole CT's centre, or the bone's
     std::string out;
     std::string raw;
 };
@@ -217,6 +219,11 @@ void renderBatch(const DrrArgs& a, const std::vector<fm::DrrJob>& jobs,
 void runDrr(const DrrArgs& a) {
     const bool batch = !a.posesFile.empty() || a.angles > 0;
     checkArgs(a, batch);
+    if (a.center == "bone" && a.bones.bone.empty())
+        throw CLI::ValidationError("--center bone needs --bone NAME (the bone to centre on)");
+    if (a.center == "bone" && a.scene.usesGeometryFile())
+        throw CLI::ValidationError("--center: a --geometry file places the camera itself; "
+                                   "--center applies to --pose");
     if (!batch && fm::distributed::launcherProcessCount() > 1)
         throw fm::Error("one view runs on one process: give --poses FILE or --angles N to spread "
                         "views over the processes of an MPI run");
@@ -243,9 +250,19 @@ void runDrr(const DrrArgs& a) {
     if (transport && transport->rank() != 0) fm::distributed::silenceStandardOutput();
     const int threads =
         transport ? fm::distributed::threadsPerRank(*transport, a.threads) : a.threads;
-    std::printf("volume    %s (%d x %d x %d voxels, loaded in %.1f ms)\n", a.volume.c_str(),
-                volume.dims.x, volume.dims.y, volume.dims.z, loadMs);
+    // With --bone the volume is a crop around the bone: said as such, not as the CT.
+    std::printf("volume    %s%s (%d x %d x %d voxels, loaded in %.1f ms)\n", a.volume.c_str(),
+                a.bones.bone.empty() ? "" : ", cropped to the bone", volume.dims.x, volume.dims.y,
+                volume.dims.z, loadMs);
     if (!choice.describe.empty()) std::printf("bone      %s\n", choice.describe.c_str());
+    // The isocenter: the whole CT's centre (poses are the CT's), or the bone's.
+    const glm::dvec3 isocenter = a.center == "bone" ? volume.center() : choice.ctCenter;
+    if (!a.bones.bone.empty() && !a.scene.usesGeometryFile())
+        std::printf("centre    %s\n",
+                    a.center == "bone"
+                        ? "the bone's (--center bone): the film is centred on it"
+                        : "the whole CT's (poses are the CT's; --center bone centres the film on "
+                          "the bone)");
 
     fm::DrrValueOptions valueOptions;
     valueOptions.values = fm::cli::reportValues(volume, a.values);
@@ -282,13 +299,13 @@ void runDrr(const DrrArgs& a) {
     if (batch) {
         // One prepared volume, an indexed list of jobs (engine/drr/DrrBatch).
         const std::vector<fm::DrrJob> jobs =
-            fm::makeDrrJobs(views, fm::cli::sceneSetupFrom(a.scene), choice.ctCenter,
+            fm::makeDrrJobs(views, fm::cli::sceneSetupFrom(a.scene), isocenter,
                             a.scene.downsample, a.out, a.raw);
         renderBatch(a, jobs, *prepared, renderOptions, *transport);
         return;
     }
 
-    const fm::ProjectionGeometry geometry = fm::cli::geometryFrom(a.scene, choice.ctCenter);
+    const fm::ProjectionGeometry geometry = fm::cli::geometryFrom(a.scene, isocenter);
     geometry.validate(a.scene.usesGeometryFile() ? a.scene.geometry : "scene geometry");
     std::printf("geometry  %s\n", fm::cli::describeGeometrySource(a.scene).c_str());
     fm::Image image;
@@ -341,6 +358,11 @@ FM_REGISTER_COMMAND("drr", 20, [](CLI::App& app) {
     fm::cli::addSceneOptions(cmd, a->scene);
     fm::cli::addBoneOptions(cmd, a->bones);
     fm::cli::addValuesOption(cmd, a->values);
+    cmd->add_option("--center", a->center,
+                    "With --bone and --pose: ct (default: the pose is the whole CT's, so bone + "
+                    "rest = whole, pixel for pixel) or bone (the film centred on the bone)")
+        ->capture_default_str()
+        ->check(fm::cli::oneOf({"ct", "bone"}, "centre"));
     cmd->add_option("--poses", a->posesFile,
                     "Many views in one run: a file with one pose \"x y z az el rot\" or one "
                     "geometry JSON per line; outputs numbered (drr_000.png, ...)");

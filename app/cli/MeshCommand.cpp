@@ -81,10 +81,17 @@ void runMesh(const MeshArgs& a) {
     fm::writeMesh(mesh, a.out);
     if (!choice.describe.empty()) std::printf("%s\n", choice.describe.c_str());
     std::printf(
-        "wrote %s: %zu triangles, %zu vertices, %zu components (iso %.6g; load %.0f ms, "
+        "wrote %s: %zu triangles, %zu vertices, %zu component%s (iso %.6g; load %.0f ms, "
         "marching cubes %.1f ms)\n",
-        a.out.c_str(), mesh.triangleCount(), mesh.vertexCount(), components, o.isoValue, loadMs,
+        a.out.c_str(), mesh.triangleCount(), mesh.vertexCount(), components, components == 1 ? "" : "s", o.isoValue, loadMs,
         meshMs);
+    // One bone in pieces: the CT's level cuts thin cortex at coarse voxels (the femur of the
+    // 3 mm example CT: 78 pieces at 300 HU); its label is one surface.
+    if (!a.bones.bone.empty() && !a.mask && a.components == 0 && a.componentRank < 0 &&
+        a.near.empty() && components > 1)
+        std::printf("note: %zu pieces at iso %.6g: --mask meshes the bone's label (one surface), "
+                    "--components 1 keeps the largest piece\n",
+                    components, o.isoValue);
     if (a.check) {
         const auto checkStart = std::chrono::steady_clock::now();
         const fm::MeshCheckReport r = fm::checkMesh(mesh);

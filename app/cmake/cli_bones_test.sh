@@ -47,6 +47,30 @@ if [ -f "$SEG" ]; then
     python3 -c "import sys; sys.exit(0 if float('$err') < 1e-5 else 1)" \
         || fail "bone + rest differs from the whole by $err of the peak"
     echo "bone + rest = whole to $err of the peak"
+    # The crop is named as a crop; --center bone puts the bone in the middle of the film (its
+    # image's centroid within 5% of the film's centre), where the CT's centre left it in a corner.
+    grep -q "cropped to the bone" "$OUT/bone.log" || fail "drr --bone prints the crop as the volume"
+    grep -q "^centre    the whole CT's" "$OUT/bone.log" || fail "drr --bone does not say where the film is centred"
+    "$FM" drr "${common[@]}" --labels "$SEG" --label-table "$OUT/table.json" --bone femur_right \
+        --center bone --raw "$OUT/centred.mha" > /dev/null || fail "drr --bone --center bone exited $?"
+    offcentre() { python3 - "$1" <<'PY'
+import sys, struct, zlib
+data = open(sys.argv[1], 'rb').read()
+end = data.index(b'ElementDataFile = LOCAL\n') + len(b'ElementDataFile = LOCAL\n')
+raw = data[end:]
+if b'CompressedData = True' in data[:end]:
+    raw = zlib.decompress(raw)
+v = struct.unpack('<%df' % (len(raw) // 4), raw)
+n = 96
+s = sum(v); cx = sum(v[i] * (i % n) for i in range(len(v))) / s; cy = sum(v[i] * (i // n) for i in range(len(v))) / s
+print(max(abs(cx - (n - 1) / 2), abs(cy - (n - 1) / 2)) / n)
+PY
+    }
+    far=$(offcentre "$OUT/bone.mha"); near=$(offcentre "$OUT/centred.mha")
+    python3 -c "import sys; sys.exit(0 if float('$near') < 0.05 < float('$far') else 1)" \
+        || fail "--center bone: the bone is $near of the film off centre (CT centre: $far)"
+    msg=$("$FM" drr --center bone --out "$OUT/x.png" 2>&1); rc=$?
+    [ $rc -eq 2 ] && grep -q "needs --bone" <<<"$msg" || fail "--center bone without --bone: exit $rc: $msg"
 
     msg=$("$FM" info "$CT" --labels "$SEG" --label-table "$OUT/table.json" 2>&1) || fail "info --labels exited $?"
     grep -Eq "76 femur_right +4396 voxels" <<<"$msg" || fail "info does not list femur_right with 4396 voxels"
@@ -88,7 +112,7 @@ KNEE=(--volume phantom:knee,size=64x64x70 --labels phantom:knee,size=64x64x70)
 "$FM" drr "${KNEE[@]}" --bone tibia+fibula --size 64x64 --out "$OUT/tibia.png" > /dev/null \
     || fail "drr of the phantom's tibia exited $?"
 "$FM" mesh "${KNEE[@]}" --bone patella --out "$OUT/patella.ply" > "$OUT/mesh.log" || fail "mesh --bone exited $?"
-grep -q "1 components" "$OUT/mesh.log" || fail "the patella's mesh is not one piece: $(cat "$OUT/mesh.log")"
+grep -q "1 component " "$OUT/mesh.log" || fail "the patella's mesh is not one piece: $(cat "$OUT/mesh.log")"
 "$FM" mesh "${KNEE[@]}" --bone femur --mask --out "$OUT/femur.ply" > /dev/null || fail "mesh --mask exited $?"
 msg=$("$FM" info phantom:knee,size=64x64x70 --labels components 2>&1) || fail "info --labels components exited $?"
 [ "$(grep -c 'component [0-9]' <<<"$msg")" -ge 4 ] || fail "components: fewer than 4 bones: $msg"
