@@ -39,11 +39,12 @@ const fm::test::JpegMarker& frameHeader(const std::vector<fm::test::JpegMarker>&
 
 // The frame header says `height` x `width` (what a lying header does).
 Bytes withFrameSize(Bytes b, std::uint16_t width, std::uint16_t height) {
-    const auto& sof = frameHeader(fm::test::jpegMarkers(b));
-    b[sof.at + 5] = static_cast<std::uint8_t>(height >> 8),
-               b[sof.at + 6] = static_cast<std::uint8_t>(height);
-    b[sof.at + 7] = static_cast<std::uint8_t>(width >> 8),
-               b[sof.at + 8] = static_cast<std::uint8_t>(width);
+    // The markers are a temporary: keep the SOF's offset, not a reference into them.
+    const std::size_t at = frameHeader(fm::test::jpegMarkers(b)).at;
+    b[at + 5] = static_cast<std::uint8_t>(height >> 8);
+    b[at + 6] = static_cast<std::uint8_t>(height);
+    b[at + 7] = static_cast<std::uint8_t>(width >> 8);
+    b[at + 8] = static_cast<std::uint8_t>(width);
     return b;
 }
 
