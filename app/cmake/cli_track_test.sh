@@ -200,4 +200,51 @@ t["cameras"][1] = dict(t["cameras"][0], name="again")
 json.dump(t, open(sys.argv[2], "w"))
 PY
 before_work "are the same camera" "$FM" track --trial "$T/twice.json" --bone radius --out "$T/r.tra"
+# A bone volume in any format the CLI reads, placed by its own geometry: the radius as a
+# MetaImage (origin 0) and as an oblique one (turned 30 deg about k, moved 10,-20,30 mm) registers
+# to the TIFF stack's .tra pose (Autoscoper's frame of the voxels), to rounding.
+MODELS=$SRC/../shared/data/autoscoper-bvr/Models
+"$FM" convert --volume "$MODELS/rad_dcm_cropped.tif?spacing=0.39625,0.39625,0.625" --out "$T/rad.mha" >/dev/null \
+    || fail "convert of the radius failed"
+python3 - "$T" "$TRIAL" <<'PY'
+import json, os, sys
+t, trial = sys.argv[1], sys.argv[2]
+data = open(f"{t}/rad.mha", "rb").read()
+end = data.index(b"ElementDataFile = LOCAL\n")
+head = data[:end].decode()
+assert "TransformMatrix = 1 0 0 0 1 0 0 0 1" in head and "Offset = 0 0 0" in head, head
+head = head.replace("TransformMatrix = 1 0 0 0 1 0 0 0 1",
+                    "TransformMatrix = 0.8660254037844387 0.5 0 -0.5 0.8660254037844387 0 0 0 1")
+head = head.replace("Offset = 0 0 0", "Offset = 10 -20 30")
+open(f"{t}/rad_oblique.mha", "wb").write(head.encode() + data[end:])
+base = os.path.dirname(trial)
+j = json.load(open(trial))
+for c in j["cameras"]:
+    c["calibration"] = os.path.join(base, c["calibration"]); c["frames"] = os.path.join(base, c["frames"])
+for b in j["bones"]:
+    b["volume"] = os.path.join(base, b["volume"])
+json.dump(j, open(f"{t}/w_tif.json", "w"))
+for name in ("rad", "rad_oblique"):
+    k = json.loads(json.dumps(j)); del k["bones"][0]["voxel_size"]; k["bones"][0]["volume"] = f"{t}/{name}.mha"
+    json.dump(k, open(f"{t}/w_{name}.json", "w"))
+k["bones"][0]["voxel_size"] = [1, 1, 1]
+json.dump(k, open(f"{t}/w_sized.json", "w"))
+PY
+for n in tif rad rad_oblique; do
+    "$FM" register --trial "$T/w_$n.json" --bone radius --frame 0 --threads 2 --out "$T/v_$n.tra" >"$T/out" 2>&1 \
+        || { cat "$T/out"; fail "register --trial with the radius as $n failed"; }
+done
+python3 - "$T" <<'PY' || fail "a volume placed by its own geometry registered elsewhere than the TIFF stack"
+import sys
+t = sys.argv[1]
+row = lambda n: [float(x) for x in open(f"{t}/v_{n}.tra").readline().split(",")]
+ref = row("tif")
+for n in ("rad", "rad_oblique"):
+    d = max(abs(a - b) for a, b in zip(ref, row(n)))
+    print(f"{n}: {d:.3g} from the TIFF stack's pose")
+    if not d < 1e-6:
+        sys.exit(1)
+PY
+expect_error 'voxel_size" belongs to a TIFF stack: rad_oblique.mha is placed by its own spacing' \
+    "$FM" register --trial "$T/w_sized.json" --bone radius --frame 0
 echo "track CLI: all checks passed"

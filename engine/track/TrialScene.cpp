@@ -20,6 +20,8 @@
 #include "scene/XrayModel.h"
 #include "similarity/AreaResample.h"
 #include "volume/AutoscoperVolumeFrame.h"
+#include "volume/ValueUnitGuess.h"
+#include "volume/VolumeSource.h"
 
 namespace fm {
 
@@ -145,11 +147,17 @@ TrialScene loadTrialScene(const Trial& trial, const std::vector<std::string>& bo
             t.scene.objects.push_back({name, xray, RigidTransform::identity(), true});
             continue;
         }
-        Volume v = io::readTiffVolume(b.volume, b.voxelSize);
+        // A TIFF stack gets its geometry from the trial (origin 0, identity direction); any other
+        // file is placed by its own (the object's frame is then the file's world, LPS mm). Either
+        // way the .tra poses are in Autoscoper's frame of the voxels (autoscoperFromVolume).
+        Volume v = b.tiffStack() ? io::readTiffVolume(b.volume, b.voxelSize) : loadVolume(b.volume.string());
         flipVolume(v, b.flip);
         t.autoscoperFromVolume[name] = autoscoperVolumeFromWorld(v);
         DrrValueOptions values;
-        values.values = DrrValues::Raw;  // the crops hold raw CT integers, background 0
+        // Autoscoper's crops hold raw CT integers, background 0: integrated as stored; a file in
+        // HU (air -1000 around the bone) is converted to attenuation, as the CLI and app do.
+        const bool hounsfield = !b.tiffStack() && guessHounsfield(v).hounsfield;
+        values.values = hounsfield ? DrrValues::Mu : DrrValues::Raw;
         values.threads = threads;
         auto model = std::make_shared<VolumeXrayModel>(prepareDrrVolume(v, values));
         t.scene.objects.push_back({name, model, RigidTransform::identity(), true});

@@ -15,6 +15,11 @@
 namespace fm {
 
 namespace fs = std::filesystem;
+
+bool TrialBone::tiffStack() const {
+    const std::string ext = io::toLower(volume.extension().string());
+    return ext == ".tif" || ext == ".tiff";
+}
 using Json = nlohmann::json;
 
 namespace {
@@ -108,10 +113,16 @@ Trial readTrialJson(const fs::path& path) {
         // A bone is a volume (with its voxel size), or a mesh alone (an implant, a surface).
         if (bones[i].contains("volume") || !bones[i].contains("mesh")) {
             b.volume = resolve(base, r.text(r.member(bones[i], "volume", f), f + ".volume"));
-            const auto s = r.numbers(r.member(bones[i], "voxel_size", f), 3, f + ".voxel_size");
-            for (double x : s)
-                if (!(x > 0.0) || x > 1000.0) r.fail(f + ".voxel_size", "must be positive mm (at most 1000)");
-            b.voxelSize = {s[0], s[1], s[2]};
+            // A TIFF stack needs its voxel size; any other volume file has its own geometry.
+            if (b.tiffStack()) {
+                const auto s = r.numbers(r.member(bones[i], "voxel_size", f), 3, f + ".voxel_size");
+                for (double x : s)
+                    if (!(x > 0.0) || x > 1000.0) r.fail(f + ".voxel_size", "must be positive mm (at most 1000)");
+                b.voxelSize = {s[0], s[1], s[2]};
+            } else if (bones[i].contains("voxel_size")) {
+                r.fail(f + ".voxel_size", "belongs to a TIFF stack: " + b.volume.filename().string() +
+                                              " is placed by its own spacing, origin and direction");
+            }
         } else if (bones[i].contains("voxel_size")) {
             r.fail(f + ".voxel_size", "belongs to a volume: this bone is a mesh only");
         }
@@ -271,7 +282,7 @@ void writeTrialJson(const fs::path& path, const Trial& trial) {
         Json j{{"name", b.name}};
         if (!b.meshOnly()) {
             j["volume"] = rel(b.volume);
-            j["voxel_size"] = {b.voxelSize.x, b.voxelSize.y, b.voxelSize.z};
+            if (b.tiffStack()) j["voxel_size"] = {b.voxelSize.x, b.voxelSize.y, b.voxelSize.z};
             j["flip"] = {b.flip.x, b.flip.y, b.flip.z};
         }
         if (!b.mesh.empty()) j["mesh"] = rel(b.mesh);

@@ -30,8 +30,11 @@ struct TrialCamera {
 
 struct TrialBone {
     std::string name;              // "radius"
-    std::filesystem::path volume;  // TIFF stack (or any volume file); empty: a mesh-only bone
-    glm::dvec3 voxelSize{1.0};     // mm
+    // A TIFF stack (Autoscoper's: no geometry of its own, voxelSize gives it) or any volume file
+    // the CLI reads (NIfTI, MetaImage, NRRD, DICOM folder: placed by its own spacing, origin and
+    // direction); empty: a mesh-only bone.
+    std::filesystem::path volume;
+    glm::dvec3 voxelSize{1.0};     // mm, TIFF stacks only
     glm::ivec3 flip{0};            // Autoscoper VolumeFlip
     std::filesystem::path mesh;    // with a volume: for display; without: the bone's model
     double muPerMm = 0.0;          // mesh-only: attenuation (0 = cobalt-chromium, an implant)
@@ -40,6 +43,7 @@ struct TrialBone {
     std::filesystem::path masks;
 
     bool meshOnly() const { return volume.empty(); }
+    bool tiffStack() const;  // a .tif/.tiff volume
 };
 
 enum class VolumeFrame { Autoscoper, Fluoromatch };

@@ -188,26 +188,30 @@ TEST(TrialJson, RoundTripWithKeyframesAndStrictReading) {
         const char* expect;
     } cases[] = {
         {"{\"cameras\": [], \"bones\": []}", "\"cameras\" must be a non-empty array"},
-        {"{\"cameras\": [{\"calibration\": \"c\", \"frames\": \"f\"}], \"bones\": [{\"name\": \"a\", \"volume\": \"v\"}]}",
+        {"{\"cameras\": [{\"calibration\": \"c\", \"frames\": \"f\"}], \"bones\": [{\"name\": \"a\", \"volume\": \"v.tif\"}]}",
          "bones[0].voxel_size\" is missing"},
-        {"{\"cameras\": [{\"calibration\": \"c\", \"frames\": \"f\"}], \"bones\": [{\"name\": \"a\", \"volume\": \"v\", "
+        {"{\"cameras\": [{\"calibration\": \"c\", \"frames\": \"f\"}], \"bones\": [{\"name\": \"a\", \"volume\": \"v.tif\", "
          "\"voxel_size\": [1,1,1]}], \"keyframes\": {\"b\": []}}",
          "no bone \"b\""},
-        {"{\"cameras\": [{\"calibration\": \"c\", \"frames\": \"f\"}], \"bones\": [{\"name\": \"a\", \"volume\": \"v\", "
+        {"{\"cameras\": [{\"calibration\": \"c\", \"frames\": \"f\"}], \"bones\": [{\"name\": \"a\", \"volume\": \"v.tif\", "
          "\"voxel_size\": [1,1,1]}], \"keyframes\": {\"a\": [{\"frame\": 0, \"volume_frame\": \"autoscoper\", "
          "\"world_from_volume\": [2,0,0,0, 0,2,0,0, 0,0,2,0, 0,0,0,1]}]}}",
          "not orthonormal"},
         {"{\"name\": \"a\", \"name\": \"b\"}", "duplicate key \"name\""},
         {"{\"name\": ", "not valid JSON"},
-        {"{\"cameras\": [{\"calibration\": \"c\", \"frames\": \"f\"}], \"bones\": [{\"name\": \"a\", \"volume\": \"v\", "
-         "\"voxel_size\": [1,1,1]}, {\"name\": \"a\", \"volume\": \"w\", \"voxel_size\": [1,1,1]}]}",
+        {"{\"cameras\": [{\"calibration\": \"c\", \"frames\": \"f\"}], \"bones\": [{\"name\": \"a\", \"volume\": \"v.tif\", "
+         "\"voxel_size\": [1,1,1]}, {\"name\": \"a\", \"volume\": \"w.tif\", \"voxel_size\": [1,1,1]}]}",
          "repeats the bone name"},
         {"{\"cameras\": [{\"name\": \"c\", \"calibration\": \"a\", \"frames\": \"f\"}, {\"name\": \"c\", "
-         "\"calibration\": \"b\", \"frames\": \"g\"}], \"bones\": [{\"name\": \"a\", \"volume\": \"v\", "
+         "\"calibration\": \"b\", \"frames\": \"g\"}], \"bones\": [{\"name\": \"a\", \"volume\": \"v.tif\", "
          "\"voxel_size\": [1,1,1]}]}",
          "cameras 1 and 2 are both named \"c\""},
+        // Another volume format has its own geometry: a voxel size is refused, not ignored.
+        {"{\"cameras\": [{\"calibration\": \"c\", \"frames\": \"f\"}], \"bones\": [{\"name\": \"a\", "
+         "\"volume\": \"v.nii.gz\", \"voxel_size\": [1,1,1]}]}",
+         "belongs to a TIFF stack: v.nii.gz is placed by its own spacing, origin and direction"},
         {"{\"cameras\": [{\"calibration\": \"a\", \"frames\": \"f\"}, {\"calibration\": \"./a\", "
-         "\"frames\": \"f/\"}], \"bones\": [{\"name\": \"a\", \"volume\": \"v\", \"voxel_size\": [1,1,1]}]}",
+         "\"frames\": \"f/\"}], \"bones\": [{\"name\": \"a\", \"volume\": \"v.tif\", \"voxel_size\": [1,1,1]}]}",
          "cameras cam1 and cam2 are the same camera"},
     };
     for (const Case& c : cases) {
