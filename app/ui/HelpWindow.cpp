@@ -22,6 +22,11 @@ void Ui::helpWindow(AppState& state) {
     if (ImGui::Begin("Help", &state.showHelp,
                      ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse |
                          ImGuiWindowFlags_NoMove | ImGuiWindowFlags_AlwaysAutoResize)) {
+        // At the top: the text is taller than a small window, and a Close below it scrolled away.
+        if (ImGui::Button("Close")) state.showHelp = false;
+        record("button:close-help");
+        ImGui::SameLine();
+        ImGui::TextColored(kDim, "(or Escape)");
         ImGui::TextWrapped(
             "The task: the left image is a radiograph (DRR) of the CT taken from a hidden pose. "
             "Find that pose: move the six parameters until your DRR (middle) matches it, then "
@@ -94,8 +99,6 @@ void Ui::helpWindow(AppState& state) {
         bulletWrapped(
             "Open another CT: type a path (file, DICOM folder or phantom:NAME) or drop it onto "
             "the window.");
-        if (ImGui::Button("Close")) state.showHelp = false;
-        record("button:close-help");
     }
     ImGui::End();
 }

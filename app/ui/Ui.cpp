@@ -74,11 +74,26 @@ void Ui::referencePane(AppState& state, const Pane& pane, unsigned texture) {
     const float side = squareSide(ImGui::GetTextLineHeightWithSpacing());
     imageWidget(state, "image:reference", texture, textures_.referenceImage,
                 textures_.referenceDataMask, state.referenceEdges, side);
+    const FlexGame& flex = state.bones.flex;
     if (readoutLine(state, "image:reference")) {
+    } else if (flex.active) {  // the bone game's reference: its bone moved, the camera yours
+        const std::string bone = flex.bone >= 0 && flex.bone < int(state.bones.list.size())
+                                     ? state.bones.list[static_cast<std::size_t>(flex.bone)].name
+                                     : std::string("the bone");
+        if (flex.revealed) {
+            const auto& m = flex.hiddenMotion;
+            ImGui::TextColored(kDim, "%s moved %.1f, %.1f, %.1f mm | %.1f, %.1f, %.1f deg",
+                               bone.c_str(), m[0], m[1], m[2], m[3], m[4], m[5]);
+        } else {
+            ImGui::TextColored(kDim, "Bone game: %s moved by a hidden motion.", bone.c_str());
+        }
+        record("text:reference-caption");
     } else if (state.referenceRevealed) {
         poseLine(state.referencePose);
+        record("text:reference-caption");
     } else {
         ImGui::TextColored(kDim, "Parameters hidden: match this image.");
+        record("text:reference-caption");
     }
     ImGui::End();
 }
@@ -93,7 +108,10 @@ void Ui::userPane(AppState& state, const Pane& pane, unsigned texture) {
     } else if (state.solve.running) {  // the image follows the computer's best pose meanwhile
         ImGui::TextColored(kWarn, "solving:");
         ImGui::SameLine();
-        poseLine(state.solve.bestPose);
+        if (state.referenceRevealed)
+            poseLine(state.solve.bestPose);
+        else  // the best pose converges on the answer
+            ImGui::TextColored(kDim, "its best pose so far (numbers after Reveal)");
     } else if (state.mode == ImagingMode::Slice && state.userSliceEmpty) {
         ImGui::TextColored(kWarn, "The plane misses the volume: no data.");
     } else {
