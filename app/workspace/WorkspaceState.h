@@ -110,6 +110,7 @@ struct WorkspaceState {
 
     ModelImage modelImage = ModelImage::Outline;
     bool sideBySide = false;  // radiograph and model image side by side, not over each other
+    int enlargedCamera = -1;  // a camera's pane shown over the whole window (-1: none)
     std::vector<DisplaySettings> display;  // per camera: window/level of the radiograph
     ImageView imageView;                   // shared zoom and pan of the camera panes
     PixelReadout readout;

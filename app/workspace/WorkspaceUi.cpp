@@ -94,16 +94,32 @@ void WorkspaceUi::draw(WorkspaceState& state, const WorkspaceTextures& textures)
     posePane(state, layout.pose);
     solvePane(state, layout.solve);
     if (state.tracking) trackPane(state, layout.track);
+    if (state.enlargedCamera >= 0 && state.enlargedCamera < static_cast<int>(state.cameraNames.size())) {
+        // Over everything, the whole window but a margin: a 1024^2 frame at full size where the
+        // layout gives it a third of its pixels.
+        const float margin = 8.0f;
+        cameraPane(state, textures, state.enlargedCamera,
+                   Pane{{margin, margin}, {display.x - 2 * margin, display.y - 2 * margin}}, true);
+    }
     keyboard(state);
     drawTooltip();
 }
 
 void WorkspaceUi::cameraPane(WorkspaceState& state, const WorkspaceTextures& textures, int camera,
-                             const Pane& pane) {
+                             const Pane& pane, bool enlarged) {
     const std::string name = state.cameraNames.at(static_cast<std::size_t>(camera));
-    const std::string title =
-        name + ": " + state.frameNames.at(static_cast<std::size_t>(camera)).at(static_cast<std::size_t>(state.frame)) + "###" + name;
-    beginPane(title.c_str(), pane);
+    const std::string title = name + ": " +
+                              state.frameNames.at(static_cast<std::size_t>(camera)).at(static_cast<std::size_t>(state.frame)) +
+                              (enlarged ? " (enlarged)###" + name + "-enlarged" : "###" + name);
+    if (enlarged) {  // a window of its own over the panes (theirs never come to the front)
+        ImGui::SetNextWindowPos(ImVec2(pane.pos.x, pane.pos.y), ImGuiCond_Always);
+        ImGui::SetNextWindowSize(ImVec2(pane.size.x, pane.size.y), ImGuiCond_Always);
+        ImGui::SetNextWindowBgAlpha(1.0f);
+        ImGui::SetNextWindowFocus();
+        ImGui::Begin(title.c_str(), nullptr, kPaneFlags & ~ImGuiWindowFlags_NoBringToFrontOnFocus);
+    } else {
+        beginPane(title.c_str(), pane);
+    }
     const ImVec2 avail = ImGui::GetContentRegionAvail();
     const float reserve = ImGui::GetTextLineHeightWithSpacing();
     const int images = state.sideBySide ? 2 : 1;
@@ -133,6 +149,17 @@ void WorkspaceUi::cameraPane(WorkspaceState& state, const WorkspaceTextures& tex
                            state.readout.value, state.imageView.zoom);
     else
         ImGui::TextColored(kDim, "window %.4g  level %.4g%s", d.window, d.level, d.autoWindow ? " (auto)" : "");
+    ImGui::SameLine();
+    if (enlarged) {
+        if (ImGui::SmallButton("Close")) state.enlargedCamera = -1;
+        record("button:close-enlarged");
+        ImGui::SameLine();
+        ImGui::TextColored(kDim, "(or Escape)");
+    } else {
+        if (ImGui::SmallButton(("Enlarge##" + name).c_str())) state.enlargedCamera = camera;
+        record("button:enlarge-" + name);
+        if (ImGui::IsItemHovered()) tooltip("Show this camera's pane over the whole window");
+    }
     ImGui::End();
 }
 
@@ -379,6 +406,7 @@ void WorkspaceUi::keyboard(WorkspaceState& state) {
     const ImGuiIO& io = ImGui::GetIO();
     if (io.WantTextInput) return;  // typing a number or a path: the keys are the field's
     const auto pressed = [](ImGuiKey key) { return ImGui::IsKeyPressed(ImGui::GetKeyIndex(key), true); };
+    if (pressed(ImGuiKey_Escape)) state.enlargedCamera = -1;
     PoseControls& c = state.controls;
     if (pressed(ImGuiKey_UpArrow)) c.selected = (c.selected + 5) % 6;
     if (pressed(ImGuiKey_DownArrow)) c.selected = (c.selected + 1) % 6;

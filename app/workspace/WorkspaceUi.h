@@ -46,7 +46,9 @@ class WorkspaceUi {
     const std::string& shownTooltip() const { return shownTooltip_; }
 
   private:
-    void cameraPane(WorkspaceState& state, const WorkspaceTextures& textures, int camera, const Pane& pane);
+    // `enlarged`: drawn over the whole window (Enlarge), with a Close.
+    void cameraPane(WorkspaceState& state, const WorkspaceTextures& textures, int camera, const Pane& pane,
+                    bool enlarged = false);
     void scenePane(WorkspaceState& state, const Pane& pane, unsigned texture);
     void objectsPane(WorkspaceState& state, const Pane& pane);
     void posePane(WorkspaceState& state, const Pane& pane);

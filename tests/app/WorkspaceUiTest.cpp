@@ -138,6 +138,30 @@ TEST_F(WorkspaceUi, SolveRegistersFromThePoseShownAndSaveWritesTheTra) {
     EXPECT_EQ(app->pose(0)->rotation, start.rotation);
 }
 
+// Enlarge shows a camera's pane over the whole window (a 1024^2 frame drawn ~335 px in the
+// layout), with the same image and overlays; Close or Escape returns.
+TEST_F(WorkspaceUi, EnlargeShowsTheCameraPaneOverTheWholeWindow) {
+    const app::WidgetRect small = script->widget("image:cam1");
+    script->clickWidget("button:enlarge-cam1");
+    script->idle(1);
+    ASSERT_EQ(app->state().enlargedCamera, 0);
+    const app::WidgetRect large = script->widget("image:cam1");
+    const auto side = [](const app::WidgetRect& r) { return std::min(r.max.x - r.min.x, r.max.y - r.min.y); };
+    EXPECT_GT(side(large), 2.0f * side(small)) << "enlarged " << side(large) << " px, was " << side(small);
+    EXPECT_GE(side(large), 700.0f);  // of the 800-px window's height
+    script->pressKey(ImGuiKey_Escape);
+    script->idle(1);
+    EXPECT_EQ(app->state().enlargedCamera, -1);
+    script->clickWidget("button:enlarge-cam1");
+    // On top: a click on its image's centre reaches it (no pane below takes it).
+    const app::WidgetRect again = script->widget("image:cam1");
+    EXPECT_GE(side(again), 700.0f);
+    script->clickWidget("button:close-enlarged");
+    script->idle(1);
+    EXPECT_EQ(app->state().enlargedCamera, -1);
+    EXPECT_NEAR(side(script->widget("image:cam1")), side(small), 0.5f);
+}
+
 // The Save of a trial of three bones (48 numbers a row, which 3 matrices and 8 xyzypr rows both
 // fit) is read back as every command that takes a trial's .tra reads it: the trial's bone count
 // decides the form, and each bone is its own object (the tibia is not drawn at the femur's pose).
