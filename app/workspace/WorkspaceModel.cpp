@@ -112,16 +112,17 @@ const std::vector<RegistrationView>& WorkspaceModel::prepared(int frame) const {
     if (frame < 0 || frame >= frameCount())
         throw Error("frame " + std::to_string(frame) + ": the workspace has frames 0.." +
                     std::to_string(frameCount() - 1));
-    auto it = prepared_.find(frame);
-    if (it == prepared_.end()) {
-        std::vector<RegistrationView> views = trialFrameViews(trial_, preparation_)(frame);
-        for (const RegistrationView& v : views)
-            if (v.valid && v.valid->count() == 0)
-                throw Error(trial_.sequences[v.camera].frameName(frame) +
-                            ": no valid pixel is left after the preparation");
-        it = prepared_.emplace(frame, std::move(views)).first;
+    {
+        const std::lock_guard<std::mutex> lock(cacheMutex_);
+        if (const auto it = prepared_.find(frame); it != prepared_.end()) return it->second;
     }
-    return it->second;
+    std::vector<RegistrationView> views = trialFrameViews(trial_, preparation_)(frame);
+    for (const RegistrationView& v : views)
+        if (v.valid && v.valid->count() == 0)
+            throw Error(trial_.sequences[v.camera].frameName(frame) +
+                        ": no valid pixel is left after the preparation");
+    const std::lock_guard<std::mutex> lock(cacheMutex_);
+    return prepared_.emplace(frame, std::move(views)).first->second;  // another thread's, if first
 }
 
 std::vector<std::vector<std::optional<RigidTransform>>> WorkspaceModel::initialPoses() const {
@@ -157,8 +158,14 @@ Image WorkspaceModel::objectImage(int object, int camera, const RigidTransform& 
 const Mask* WorkspaceModel::mask(int object, int frame) const {
     const std::string& name = objectName(object);
     if (!trial_.masks.count(name)) return nullptr;
-    auto it = masks_.find({object, frame});
-    if (it == masks_.end()) it = masks_.emplace(std::pair{object, frame}, trialBoneMask(trial_, name, frame)).first;
+    {
+        const std::lock_guard<std::mutex> lock(cacheMutex_);
+        if (const auto it = masks_.find({object, frame}); it != masks_.end())
+            return it->second ? &*it->second : nullptr;
+    }
+    std::optional<Mask> m = trialBoneMask(trial_, name, frame);
+    const std::lock_guard<std::mutex> lock(cacheMutex_);
+    const auto it = masks_.emplace(std::pair{object, frame}, std::move(m)).first;
     return it->second ? &*it->second : nullptr;
 }
 

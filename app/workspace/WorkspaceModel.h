@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <vector>
@@ -87,6 +88,10 @@ class WorkspaceModel {
     std::string title_;
     std::filesystem::path savePath_;
     std::vector<std::optional<RigidTransform>> starts_;  // one radiograph: per model
+    // Caches filled on first use by the UI thread and the Solve and Track workers at once: a
+    // lookup or an insertion holds the lock, the work to fill one does not. std::map keeps its
+    // elements in place, so a reference handed out stays valid.
+    mutable std::mutex cacheMutex_;
     mutable std::map<int, std::vector<RegistrationView>> prepared_;
     mutable std::map<std::pair<int, int>, std::optional<Mask>> masks_;
 };
