@@ -15,6 +15,7 @@
 #include "render/Texture.h"
 #include "ui/PresentFrame.h"
 #include "scene/ObjectPoseParameterization.h"
+#include "workspace/RawImageHint.h"
 #include "workspace/ShownPose.h"
 #include "workspace/WorkspacePose.h"
 #include "xray/CameraPoseDifference.h"
@@ -106,6 +107,9 @@ WorkspaceApp::WorkspaceApp(RenderBackend& backend, std::shared_ptr<WorkspaceMode
         modelTextures_.push_back(std::make_unique<render::Texture>());
     }
     state_.tracking = model_->fromTrial();
+    state_.canPrepare = !model_->fromTrial();
+    state_.invert = model_->preparation().invert;
+    state_.logTransform = model_->preparation().logTransform;
     if (state_.tracking) tracking_.init(*model_, state_);
     syncControls();
     buildSurfaces();
@@ -193,6 +197,17 @@ void WorkspaceApp::processRequests() {
     }
     if (r.save) save();
     if (r.undo) undo();
+    if (r.preparation) {
+        if (state_.solve.running) {  // the worker reads the prepared frames
+            state_.invert = model_->preparation().invert;
+            state_.logTransform = model_->preparation().logTransform;
+            state_.error = "invert / log wait until the Solve ends";
+        } else {
+            model_->setInvertAndLog(state_.invert, state_.logTransform);
+            ++state_.preparationVersion;
+            autoWindowFrame_ = -1;  // a new value range
+        }
+    }
 }
 
 void WorkspaceApp::pollSolver() {
@@ -278,6 +293,35 @@ void WorkspaceApp::save() {
     }
 }
 
+void WorkspaceApp::updateRawHint() {
+    state_.rawHint.clear();
+    if (!state_.canPrepare) return;
+    const auto& views = model_->prepared(state_.frame);
+    for (std::size_t c = 0; c < views.size(); ++c) {
+        Mask footprint;
+        for (int k = 0; k < model_->objectCount(); ++k) {
+            const Mask& s = images_.silhouette(static_cast<int>(c), k);
+            if (!state_.objects.at(static_cast<std::size_t>(k)).visible || s.inside.empty()) continue;
+            if (footprint.inside.empty()) footprint = Mask(s.width, s.height, false);
+            if (s.inside.size() != footprint.inside.size()) continue;
+            for (std::size_t i = 0; i < s.inside.size(); ++i) footprint.inside[i] |= s.inside[i];
+        }
+        if (footprint.inside.empty()) continue;
+        const RegistrationView& v = views[c];
+        const double contrast = footprintContrast(v.reference, v.valid ? *v.valid : Mask(), footprint);
+        if (contrast < kRawLookingContrast) {
+            char text[320];
+            std::snprintf(text, sizeof text,
+                          "The models lie on darker pixels than around them (contrast %.2f): dense matter "
+                          "is dark in a raw radiograph, bright in the DRRs the cost compares with. %s",
+                          contrast, state_.invert ? "Is this image already inverted? Try invert off."
+                                                  : "Try invert (or --invert).");
+            state_.rawHint = text;
+            return;
+        }
+    }
+}
+
 void WorkspaceApp::updateImages() {
     if (autoWindowFrame_ != state_.frame || std::any_of(state_.display.begin(), state_.display.end(),
                                                         [](const DisplaySettings& d) { return d.autoWindow; })) {
@@ -300,6 +344,7 @@ void WorkspaceApp::updateImages() {
         }
         ++imagesVersion_;
         state_.imageMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+        updateRawHint();
         state_.iou.reset();
         const int k = state_.selected;
         if (const Mask* m = model_->mask(k, state_.frame); m && pose(k)) {

@@ -71,6 +71,8 @@ class WorkspaceApp : public ScriptableApp {
     void checkAnswer(WorkspaceSolve& w, const SceneObject& object, int frame, const RigidTransform& pose) const;
     void save();
     void updateImages();
+    // state_.rawHint from the shown models' footprints on the prepared radiographs.
+    void updateRawHint();
     void buildSurfaces();
     void drawScene();
 

@@ -74,6 +74,7 @@ bool WorkspaceImages::update(const WorkspaceModel& model, const WorkspaceState& 
     key.allObjects = state.allObjects;
     key.sideBySide = state.sideBySide;
     key.modelImage = state.modelImage;
+    key.preparation = state.preparationVersion;
     for (const WorkspaceObject& o : state.objects) key.visible.push_back(o.visible);
     for (const DisplaySettings& d : state.display) key.windowLevel.push_back({d.window, d.level});
     for (int c = 0; c < cameras; ++c) {

@@ -58,6 +58,7 @@ class WorkspaceImages {
         std::vector<bool> visible;
         std::vector<std::array<float, 2>> windowLevel;
         std::vector<std::uint64_t> entryVersions;
+        std::uint64_t preparation = 0;
         bool operator==(const Key&) const = default;
     };
     std::vector<std::vector<Entry>> entries_;  // [camera][object]

@@ -108,6 +108,14 @@ const std::string& WorkspaceModel::objectName(int object) const {
     return trial_.scene.objects.at(static_cast<std::size_t>(object)).name;
 }
 
+void WorkspaceModel::setInvertAndLog(bool invert, bool logTransform) {
+    if (fromTrial_) throw Error("a trial's radiographs are prepared as tracking prepares them");
+    const std::lock_guard<std::mutex> lock(cacheMutex_);
+    preparation_.invert = invert;
+    preparation_.logTransform = logTransform;
+    prepared_.clear();
+}
+
 const std::vector<RegistrationView>& WorkspaceModel::prepared(int frame) const {
     if (frame < 0 || frame >= frameCount())
         throw Error("frame " + std::to_string(frame) + ": the workspace has frames 0.." +

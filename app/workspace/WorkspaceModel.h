@@ -50,6 +50,10 @@ class WorkspaceModel {
     int objectCount() const { return static_cast<int>(trial_.scene.objects.size()); }
     const std::string& objectName(int object) const;
     const RadiographPreparation& preparation() const { return preparation_; }
+    // One radiograph: invert and log as the workspace's toggles set them (the prepared frames
+    // are made again). Not while a worker prepares frames. A trial's preparation is tracking's,
+    // fixed: fm::Error.
+    void setInvertAndLog(bool invert, bool logTransform);
     int threads() const { return threads_; }
     const std::string& title() const { return title_; }
     const std::filesystem::path& defaultSavePath() const { return savePath_; }

@@ -277,6 +277,25 @@ void WorkspaceUi::objectsPane(WorkspaceState& state, const Pane& pane) {
     if (ImGui::Button("Auto window"))
         for (DisplaySettings& d : state.display) d.autoWindow = true;
     record("button:auto-window");
+    if (state.canPrepare) {
+        // How the radiograph is prepared, as --invert / --log would: what Solve compares.
+        ImGui::BeginDisabled(state.solve.running);
+        if (ImGui::Checkbox("invert", &state.invert)) state.requests.preparation = true;
+        record("checkbox:invert");
+        if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+            tooltip("Full scale minus the value (--invert): raw fluoroscopy shows dense matter dark, a DRR "
+                    "bright; Solve compares the image as shown");
+        ImGui::SameLine();
+        if (ImGui::Checkbox("log", &state.logTransform)) state.requests.preparation = true;
+        record("checkbox:log");
+        if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+            tooltip("-ln(I / I0) of raw detector intensities (--log): line integrals, like a DRR's");
+        ImGui::EndDisabled();
+    }
+    if (!state.rawHint.empty()) {
+        coloredWrapped(kWarn, state.rawHint);
+        record("text:raw-hint");
+    }
     for (const std::string& w : state.warnings) coloredWrapped(kWarn, w);
     ImGui::End();
 }

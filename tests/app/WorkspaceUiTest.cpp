@@ -12,6 +12,7 @@
 #include "pose/AutoscoperTra.h"
 #include "scene/ObjectPoseParameterization.h"
 #include "track/TrialTra.h"
+#include "platform/RenderBackend.h"
 #include "ui/UiScript.h"
 #include "workspace/WorkspaceApp.h"
 #include "xray/ObjectRegistration.h"
@@ -160,6 +161,36 @@ TEST_F(WorkspaceUi, EnlargeShowsTheCameraPaneOverTheWholeWindow) {
     script->idle(1);
     EXPECT_EQ(app->state().enlargedCamera, -1);
     EXPECT_NEAR(side(script->widget("image:cam1")), side(small), 0.5f);
+}
+
+// One raw radiograph opened without --invert: the implant lies on dark pixels, and the workspace
+// says so; the invert toggle prepares it as --invert does, and the hint goes.
+TEST(WorkspaceRaw, ARawRadiographIsNamedAndInvertFixesIt) {
+    FM_REQUIRE_SHARED_DATA("jtml-kneel-tka-fluoro");
+    const fs::path d = sharedDataDir() / "jtml-kneel-tka-fluoro";
+    app::WorkspaceSource source;
+    source.reference = d / "AT_K1_V1_0160.tif";
+    source.camera = d / "calibration.txt";
+    source.models = {d / "KR_right_7_fem.stl"};
+    source.starts = {(d / "fem.jts").string()};
+    const auto model = app::WorkspaceModel::open(source, 2);
+    const auto backend = app::createOsmesaBackend({1280, 800});
+    app::WorkspaceOptions options;
+    options.showTimings = false;
+    app::WorkspaceApp app(*backend, model, options);
+    app::UiScript script(app);
+    script.idle(2);
+    ASSERT_TRUE(app.state().canPrepare);
+    EXPECT_FALSE(app.state().invert);
+    EXPECT_NE(app.state().rawHint.find("Try invert"), std::string::npos) << app.state().rawHint;
+    const float before = model->prepared(0).at(0).reference.pixels.at(512 * 1024 + 512);
+    script.clickWidget("checkbox:invert");
+    script.idle(1);
+    EXPECT_TRUE(app.state().invert);
+    EXPECT_TRUE(model->preparation().invert);
+    EXPECT_TRUE(app.state().rawHint.empty()) << app.state().rawHint;
+    // The prepared frame is the inverted one (full scale minus the value, then resampled).
+    EXPECT_NE(model->prepared(0).at(0).reference.pixels.at(512 * 1024 + 512), before);
 }
 
 // The Save of a trial of three bones (48 numbers a row, which 3 matrices and 8 xyzypr rows both
