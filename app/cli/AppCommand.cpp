@@ -8,7 +8,9 @@
 #include "cli/WorkspaceOptions.h"
 #include "core/Error.h"
 #include "platform/RenderBackend.h"
+#include "state/RecentFiles.h"
 #include "ui/App.h"
+#include "ui/AppShell.h"
 #include "ui/HeadlessScreenshot.h"
 #include "volume/VolumeSource.h"
 #include "workspace/WorkspaceApp.h"
@@ -25,6 +27,29 @@ struct AppArgs {
     fm::cli::WorkspaceArgs workspace;
     int threads = 0;
 };
+
+// The game's options in a window; the shell opens a CT asked from inside with them.
+fm::app::AppOptions windowGameOptions(const AppArgs& args) {
+    fm::app::AppOptions options;
+    options.volumeSpec = args.volume;
+    options.labelsSpec = args.labels;
+    options.labelTable = args.labelTable;
+    options.userDrrOffThread = true;  // a window's frame never waits for the user's DRR
+    options.seed =
+        static_cast<std::uint64_t>(std::chrono::system_clock::now().time_since_epoch().count());
+    return options;
+}
+
+// What the window's shell switches with (ui/AppShell.h): the Recent list in the user's config.
+fm::app::AppShell::Options shellOptions(const AppArgs& args) {
+    fm::app::AppShell::Options o;
+    o.game = windowGameOptions(args);
+    o.game.labelsSpec.clear();  // the labels belong to the CT given at start
+    o.game.labelTable.clear();
+    o.threads = args.threads;
+    o.recentFile = fm::app::defaultRecentFile();
+    return o;
+}
 
 // The real X-ray workspace (--trial or --reference): opened before any window, so bad input is
 // a message and a non-zero exit.
@@ -51,11 +76,12 @@ void runWorkspace(const AppArgs& args) {
     }
     std::printf("window: %s\n", backend->describe().c_str());
     backend->drawContinuously(args.frames > 0);  // a counted run: no event would wake it
-    fm::app::WorkspaceApp app(*backend, model);
-    app.state().requests.frame = frame;
+    auto app = std::make_unique<fm::app::WorkspaceApp>(*backend, model);
+    app->state().requests.frame = frame;
+    fm::app::AppShell shell(*backend, std::move(app), shellOptions(args));
     int frames = 0;
     while (!backend->shouldClose() && (args.frames <= 0 || frames < args.frames)) {
-        app.frame();
+        shell.frame();
         ++frames;
     }
     std::printf("drew %d frames; workspace: %s\n", frames, model->title().c_str());
@@ -79,24 +105,20 @@ void runApp(const AppArgs& args) {
     }
     std::printf("window: %s\n", backend->describe().c_str());
     backend->drawContinuously(args.frames > 0);  // a counted run: no event would wake it
-    fm::app::AppOptions options;
-    options.volumeSpec = args.volume;
-    options.labelsSpec = args.labels;
-    options.labelTable = args.labelTable;
-    options.userDrrOffThread = true;  // a window's frame never waits for the user's DRR
-    options.seed =
-        static_cast<std::uint64_t>(std::chrono::system_clock::now().time_since_epoch().count());
-    fm::app::App app(*backend, options);
+    fm::app::AppShell shell(*backend, std::make_unique<fm::app::App>(*backend, windowGameOptions(args)),
+                            shellOptions(args));
     int frames = 0;
     double totalMs = 0.0;
     while (!backend->shouldClose() && (args.frames <= 0 || frames < args.frames)) {
-        app.frame();
-        totalMs += app.state().timings.frameMs;
+        shell.frame();
+        if (fm::app::App* game = shell.game()) totalMs += game->state().timings.frameMs;
         ++frames;
     }
-    std::printf("drew %d frames (mean %.1f ms per frame); scene: %s\n", frames,
-                frames ? totalMs / frames : 0.0,
-                app.scene() ? app.scene()->spec.c_str() : "not loaded yet");
+    const fm::app::App* game = shell.game();
+    std::printf("drew %d frames (mean %.1f ms per frame); %s\n", frames, frames ? totalMs / frames : 0.0,
+                !game ? "the workspace open at the end"
+                : game->scene() ? ("scene: " + game->scene()->spec).c_str()
+                                : "scene: not loaded yet");
 }
 
 FM_REGISTER_COMMAND("app", 1, [](CLI::App& cli) {

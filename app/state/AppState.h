@@ -11,6 +11,7 @@
 #include "geometry/Pose.h"
 #include "match/MatchVerdict.h"
 #include "match/ReferenceDraw.h"
+#include "state/OpenRequest.h"
 
 namespace fm::app {
 
@@ -274,6 +275,10 @@ struct LabelsLoad {
 };
 
 struct AppState {
+    // The Open window (a trial or a radiograph: the workspace; the shell opens it) and what it
+    // asked for.
+    OpenPanel open;
+    std::optional<OpenRequest> openRequest;
     // Chosen on load (slices for an MRI file, X-rays otherwise) and by the user.
     ImagingMode mode = ImagingMode::Xray;
     bool userSliceEmpty = false;  // slice mode: the user's plane misses the volume (no data)

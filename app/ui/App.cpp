@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <filesystem>
 
 #include "core/Error.h"
 #include "geometry/PatientDirection.h"
@@ -550,12 +551,39 @@ void App::showUserDrr(const DrrKey& key, DrrRender render,
     userShownInputTime_ = inputTime;
 }
 
+std::optional<OpenRequest> App::takeOpenRequest() {
+    std::optional<OpenRequest> r = std::move(state_.openRequest);
+    state_.openRequest.reset();
+    // A CT is the game's own: loaded here, as the CT field does.
+    if (r && r->kind == OpenRequest::Kind::Volume) {
+        state_.volumePathField = r->volume;
+        state_.requests.loadVolume = r->volume;
+        state_.open.shown = false;
+        return std::nullopt;
+    }
+    return r;
+}
+
+void App::openFailed(const std::string& why) {
+    state_.open.shown = true;  // the fields as typed, to mend
+    state_.open.error = why;
+}
+
 void App::frame() {
     const auto start = std::chrono::steady_clock::now();
     backend_.newFrame();
     frameInputTime_ = std::chrono::steady_clock::now();
     userShownInputTime_.reset();
     for (auto& path : backend_.takeDroppedPaths()) {
+        // A dropped trial opens the workspace (the shell does); anything else is a CT.
+        const std::string ext = std::filesystem::path(path).extension().string();
+        if (ext == ".json" || ext == ".cfg") {
+            OpenRequest r;
+            r.kind = OpenRequest::Kind::Trial;
+            r.trial = path;
+            state_.openRequest = r;
+            continue;
+        }
         state_.volumePathField = path;
         state_.requests.loadVolume = path;
     }

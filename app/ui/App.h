@@ -58,6 +58,9 @@ class App : public ScriptableApp {
 
     // One whole frame: input, UI, requests, DRRs, 3D view, ImGui draw, present.
     void frame() override;
+    std::optional<OpenRequest> takeOpenRequest() override;
+    void openFailed(const std::string& why) override;
+    void setRecent(std::vector<OpenRequest> recent) override { state_.open.recent = std::move(recent); }
     // Blocks until the background loader is idle and its result is installed (headless runs).
     void waitForLoad();
     // The last drawn frame (call after frame(), before the next one).

@@ -3,8 +3,10 @@
 // recorded by name. The matching game (App) and the real X-ray workspace (WorkspaceApp) are both.
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "platform/RenderBackend.h"
+#include "state/OpenRequest.h"
 #include "ui/Ui.h"
 
 namespace fm::app {
@@ -17,6 +19,12 @@ class ScriptableApp {
     virtual void frame() = 0;
     // The screen rectangle of a widget drawn in the last frame, by its recorded name.
     virtual std::optional<WidgetRect> widgetRect(const std::string& id) const = 0;
+
+    // Opening from inside the app (ui/AppShell.h): what the user asked the shell to open (taken
+    // once), why it could not be opened, and the Recent list to offer.
+    virtual std::optional<OpenRequest> takeOpenRequest() { return std::nullopt; }
+    virtual void openFailed(const std::string& /*why*/) {}
+    virtual void setRecent(std::vector<OpenRequest> /*recent*/) {}
 };
 
 }  // namespace fm::app

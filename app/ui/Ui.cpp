@@ -1,5 +1,6 @@
 #include "ui/Ui.h"
 
+#include "ui/OpenWindow.h"
 #include "ui/UiWidgets.h"
 
 #include <imgui.h>
@@ -65,6 +66,10 @@ void Ui::draw(AppState& state, const UiTextures& textures) {
     matchPane(state, layout.match);
     if (state.compareEnlarged) enlargedCompare(state, textures.compare);
     if (state.showHelp) helpWindow(state);
+    if (auto r = drawOpenWindow(state.open, [this](const std::string& id) { record(id); })) {
+        state.open.error.clear();
+        state.openRequest = std::move(r);
+    }
     keyboard(state);
     drawTooltip();  // last: it knows where the progress bar is
 }
@@ -282,6 +287,11 @@ void Ui::parameterPane(AppState& state, const Pane& pane) {
     ImGui::SameLine();
     if (ImGui::Button("Knee")) state.requests.loadVolume = std::string("phantom:knee");
     record("button:knee");
+    if (ImGui::SmallButton("Open a trial or a radiograph...")) state.open.shown = true;
+    record("button:open-workspace");
+    if (ImGui::IsItemHovered())
+        tooltip("The real X-ray workspace: a trial (.json, Autoscoper .cfg) or one radiograph with "
+                "its calibration and models; also the Recent list");
 
     const LoadStatus& load = state.load;
     if (load.loading) {

@@ -418,6 +418,17 @@ void WorkspaceApp::drawScene() {
     ++sceneDraws_;
 }
 
+std::optional<OpenRequest> WorkspaceApp::takeOpenRequest() {
+    std::optional<OpenRequest> r = std::move(state_.openRequest);
+    state_.openRequest.reset();
+    return r;
+}
+
+void WorkspaceApp::openFailed(const std::string& why) {
+    state_.open.shown = true;
+    state_.open.error = why;
+}
+
 void WorkspaceApp::frame() {
     backend_.newFrame();
     pollSolver();

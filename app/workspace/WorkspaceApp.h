@@ -36,6 +36,9 @@ class WorkspaceApp : public ScriptableApp {
     WorkspaceApp& operator=(const WorkspaceApp&) = delete;
 
     void frame() override;
+    std::optional<OpenRequest> takeOpenRequest() override;
+    void openFailed(const std::string& why) override;
+    void setRecent(std::vector<OpenRequest> recent) override { state_.open.recent = std::move(recent); }
     RenderBackend& backend() override { return backend_; }
     std::optional<WidgetRect> widgetRect(const std::string& id) const override { return ui_.rect(id); }
     render::RgbaImage capture() const;

@@ -10,6 +10,7 @@
 
 #include "scene/RigidTransform.h"
 #include "state/AppState.h"
+#include "state/OpenRequest.h"
 #include "workspace/PoseHistory.h"
 #include "workspace/TrackState.h"
 
@@ -122,6 +123,8 @@ struct WorkspaceState {
     PixelReadout readout;
     View3d view = defaultRigView();
 
+    OpenPanel open;                          // the Open window (ui/OpenWindow.h)
+    std::optional<OpenRequest> openRequest;  // ... what it asked the shell to open
     WorkspaceSolve solve;
     PoseHistory undo;         // Undo: the poses before each change
     std::string undoMessage;  // what the last Undo undid

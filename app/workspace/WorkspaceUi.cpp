@@ -1,5 +1,7 @@
 #include "workspace/WorkspaceUi.h"
 
+#include "ui/OpenWindow.h"
+
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
@@ -94,6 +96,10 @@ void WorkspaceUi::draw(WorkspaceState& state, const WorkspaceTextures& textures)
     posePane(state, layout.pose);
     solvePane(state, layout.solve);
     if (state.tracking) trackPane(state, layout.track);
+    if (auto r = drawOpenWindow(state.open, [this](const std::string& id) { record(id); })) {
+        state.open.error.clear();
+        state.openRequest = std::move(r);
+    }
     if (state.enlargedCamera >= 0 && state.enlargedCamera < static_cast<int>(state.cameraNames.size())) {
         // Over everything, the whole window but a margin: a 1024^2 frame at full size where the
         // layout gives it a third of its pixels.
@@ -277,6 +283,10 @@ void WorkspaceUi::objectsPane(WorkspaceState& state, const Pane& pane) {
     if (ImGui::Button("Auto window"))
         for (DisplaySettings& d : state.display) d.autoWindow = true;
     record("button:auto-window");
+    ImGui::SameLine();
+    if (ImGui::Button("Open...")) state.open.shown = true;
+    record("button:open-workspace");
+    if (ImGui::IsItemHovered()) tooltip("Open another trial or radiograph, or a CT (the matching game); Recent");
     if (state.canPrepare) {
         // How the radiograph is prepared, as --invert / --log would: what Solve compares.
         ImGui::BeginDisabled(state.solve.running);
