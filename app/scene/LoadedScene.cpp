@@ -1,5 +1,7 @@
 #include "scene/LoadedScene.h"
 
+#include "scene/DisplaySurface.h"
+
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -93,7 +95,10 @@ std::shared_ptr<LoadedScene> buildScene(const std::string& spec, const SceneProg
     // An MRI has no bone level: its surface is the head's (or body's), voxels above the mean.
     scene->isoValue = mc.isoValue =
         scene->looksLikeMri ? foregroundLevel(*volume) : boneIsoValue(*volume);
-    scene->mesh = std::make_shared<Mesh>(marchingCubes(*volume, mc));
+    DisplaySurface surface = displaySurface(*volume, mc);
+    scene->mesh = std::move(surface.mesh);
+    scene->meshFactor = surface.factor;
+    scene->fullMeshTriangles = surface.fullTriangles;
     scene->meshSeconds = secondsSince(start);
     progress("picking bone target points", 0.95f);
     try {

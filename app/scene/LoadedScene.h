@@ -23,7 +23,9 @@ struct LoadedScene {
     std::uint64_t generation = 0;  // changes with every loaded scene (cache keys)
     std::shared_ptr<const Volume> volume;
     DrrVolumePtr drrVolume;
-    std::shared_ptr<const Mesh> mesh;        // bone surface at load, world mm
+    std::shared_ptr<const Mesh> mesh;        // bone surface at load, world mm (DisplaySurface.h)
+    int meshFactor = 1;                      // its block-mean factor (1: the volume's grid)
+    std::size_t fullMeshTriangles = 0;       // the full-resolution surface's size
     double isoValue = 0.0;                   // the surface level used (and the mTRE targets')
     float minValue = 0.0f, maxValue = 0.0f;  // the volume's value range (bone level limits)
     SceneSetup setup;                        // distances and film, fitted to the volume

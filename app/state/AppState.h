@@ -192,6 +192,8 @@ struct BoneSurface {
     float minLevel = 0.0f, maxLevel = 1.0f;  // the volume's value range
     double shownLevel = 0.0;                 // the level of the surface drawn
     std::size_t triangles = 0;               // ... and its size
+    int displayFactor = 1;                   // 1, or n: drawn from n^3 block means (DisplaySurface)
+    std::size_t fullTriangles = 0;           // the full-resolution surface's size
 };
 
 // One bone of the scene in the bone list (app/scene/SceneBones: the articulated knee).

@@ -17,6 +17,7 @@
 #include "render/Texture.h"
 #include "ui/PresentFrame.h"
 #include "scene/Matching.h"
+#include "scene/DisplaySurface.h"
 #include "scene/SliceImages.h"
 
 namespace fm::app {
@@ -115,7 +116,7 @@ void App::installLoadResult(SceneLoader::Result result) {
     state_.bone.minLevel = scene_->minValue;
     state_.bone.maxLevel = std::max(scene_->maxValue, scene_->minValue + 1.0f);
     state_.bone.level = static_cast<float>(scene_->isoValue);
-    showBone(scene_->mesh, scene_->isoValue);
+    showBone(scene_->mesh, scene_->isoValue, scene_->meshFactor, scene_->fullMeshTriangles);
     installBones();
     state_.labels.loaded.clear();
     state_.labels.error.clear();
@@ -174,10 +175,13 @@ void App::applyDrrThreshold() {
     state_.matchIsStale = state_.match.has_value();
 }
 
-void App::showBone(std::shared_ptr<const Mesh> mesh, double level) {
+void App::showBone(std::shared_ptr<const Mesh> mesh, double level, int factor,
+                   std::size_t fullTriangles) {
     bone_ = std::move(mesh);
     ++boneGeneration_;
     state_.bone.shownLevel = level;
+    state_.bone.displayFactor = factor;
+    state_.bone.fullTriangles = fullTriangles;
     state_.bone.triangles = 0;
     if (scene_ && scene_->bones)
         for (const auto& b : boneSurfaces_) state_.bone.triangles += b ? b->triangleCount() : 0;
@@ -192,7 +196,7 @@ void App::remesh() {
     options.isoValue = state_.bone.level;
     options.threads = options_.drrThreads;
     const auto start = std::chrono::steady_clock::now();
-    std::shared_ptr<const Mesh> mesh;
+    DisplaySurface surface;
     std::vector<std::shared_ptr<const Mesh>> boneSurfaces;
     try {
         // With bones, each bone's own surface (its volume alone); otherwise the CT's.
@@ -201,7 +205,7 @@ void App::remesh() {
                 boneSurfaces.push_back(
                     std::make_shared<const Mesh>(marchingCubes(*b.volume, options)));
         else
-            mesh = std::make_shared<const Mesh>(marchingCubes(*scene_->volume, options));
+            surface = displaySurface(*scene_->volume, options);
     } catch (const Error& e) {  // e.g. more vertices than 32-bit indices hold: keep the old one
         state_.load.error = e.what();
         state_.bone.level = static_cast<float>(state_.bone.shownLevel);
@@ -211,7 +215,7 @@ void App::remesh() {
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     ++remeshes_;
     if (scene_->bones) boneSurfaces_ = std::move(boneSurfaces);
-    showBone(std::move(mesh), options.isoValue);
+    showBone(std::move(surface.mesh), options.isoValue, surface.factor, surface.fullTriangles);
 }
 
 void App::newReference() {

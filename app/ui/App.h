@@ -108,7 +108,9 @@ class App : public ScriptableApp {
     void startXraySolve(int method);
     void recordAttempt(MatchOutcome outcome);  // counts it as the latest, best-so-far tracked
     void pollSolver();
-    void showBone(std::shared_ptr<const Mesh> mesh, double level);
+    // `factor`, `fullTriangles`: the display surface's coarsening (scene/DisplaySurface.h).
+    void showBone(std::shared_ptr<const Mesh> mesh, double level, int factor = 1,
+                  std::size_t fullTriangles = 0);
     void remesh();
     // AppBones.cpp: the bones of the scene (shown, moved), the joint angles and the flex game.
     void installBones();

@@ -272,7 +272,7 @@ void Ui::parameterPane(AppState& state, const Pane& pane) {
     ImGui::TextUnformatted("CT");
     ImGui::SameLine();
     ImGui::SetNextItemWidth(std::max(60.0f, ImGui::GetContentRegionAvail().x -
-                                                ImGui::CalcTextSize("Open Knee").x - 5 * spacing));
+                                                ImGui::CalcTextSize("Open Knee ...").x - 7 * spacing));
     const bool enter =
         ImGui::InputTextWithHint("##volume", "file, DICOM folder or phantom:NAME",
                                  &state.volumePathField, ImGuiInputTextFlags_EnterReturnsTrue);
@@ -287,11 +287,12 @@ void Ui::parameterPane(AppState& state, const Pane& pane) {
     ImGui::SameLine();
     if (ImGui::Button("Knee")) state.requests.loadVolume = std::string("phantom:knee");
     record("button:knee");
-    if (ImGui::SmallButton("Open a trial or a radiograph...")) state.open.shown = true;
+    ImGui::SameLine();  // one row: the pane has no room for another
+    if (ImGui::Button("...")) state.open.shown = true;
     record("button:open-workspace");
     if (ImGui::IsItemHovered())
-        tooltip("The real X-ray workspace: a trial (.json, Autoscoper .cfg) or one radiograph with "
-                "its calibration and models; also the Recent list");
+        tooltip("Open a trial (.json, Autoscoper .cfg) or one radiograph with its calibration and "
+                "models in the real X-ray workspace, or a recent file");
 
     const LoadStatus& load = state.load;
     if (load.loading) {
@@ -302,9 +303,16 @@ void Ui::parameterPane(AppState& state, const Pane& pane) {
         elidedLine("text:loaded", kDim, load.loadedSpec.empty() ? "No CT loaded" : load.loadedSpec);
         elidedLine("text:summary", kDim, load.summary);
         if (!load.loadedSpec.empty()) {
-            char text[96];
-            std::snprintf(text, sizeof(text), "%zu bone triangles (iso %.4g)",
-                          state.bone.triangles, state.bone.shownLevel);
+            char text[160];
+            if (state.bone.displayFactor > 1)  // drawn coarser than the volume: said
+                std::snprintf(text, sizeof(text),
+                              "%zu surface triangles (iso %.4g; drawn from %d^3 block means, "
+                              "%zu at full resolution)",
+                              state.bone.triangles, state.bone.shownLevel,
+                              state.bone.displayFactor, state.bone.fullTriangles);
+            else
+                std::snprintf(text, sizeof(text), "%zu bone triangles (iso %.4g)",
+                              state.bone.triangles, state.bone.shownLevel);
             elidedLine("text:bone-triangles", kDim, text);
         }
     }
