@@ -235,6 +235,9 @@ struct BonesState {
     // mm; flexion, varus, internal rotation deg).
     std::array<double, 6> angles{};
     FlexGame flex;
+    // The bone list unfolded: folded while a bone game runs (its hints need the room), the user
+    // may unfold it.
+    bool listUnfolded = true;
     // A bone's Solve also compares a second view of the reference, 90 deg around in azimuth
     // (as biplane fluoroscopy): one view hardly sees a motion along its rays.
     bool biplaneSolve = false;

@@ -87,6 +87,7 @@ void App::newFlex() {
                          : 0;
     flex = FlexGame{};
     flex.active = true;
+    bones.listUnfolded = false;  // the game's hints need the pane
     flex.difficulty = difficulty;
     flex.bone = bone;
     flex.hiddenMotion = bones.isKnee ? drawKneeMotion(nextSeed_++, difficulty)

@@ -68,7 +68,14 @@ void Ui::bonesTab(AppState& state) {
         return;
     }
     int& target = bones.sliderTarget;
-    if (ImGui::BeginTable("bones", 3, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
+    // During a bone game the list folds under a header: the game's hints need the pane.
+    bool listShown = true;
+    if (bones.flex.active) {
+        ImGui::SetNextItemOpen(bones.listUnfolded, ImGuiCond_Always);
+        listShown = bones.listUnfolded = ImGui::CollapsingHeader("bones (show, hide, move)");
+        record("header:bone-list");
+    }
+    if (listShown && ImGui::BeginTable("bones", 3, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
         ImGui::TableSetupColumn("bone", ImGuiTableColumnFlags_WidthStretch, 2.0f);
         ImGui::TableSetupColumn("sliders", ImGuiTableColumnFlags_WidthStretch, 1.0f);
         ImGui::TableSetupColumn("view", ImGuiTableColumnFlags_WidthStretch, 1.2f);
@@ -183,33 +190,40 @@ void Ui::boneGame(AppState& state) {
     record("text:flex-verdict");
     ImGui::Text("attempt %d%s", m.attempt,
                 flex.outcomeIsStale ? (", " + bone + " moved since").c_str() : "");
-    const int columns = flex.revealed ? 3 : 2;
+    record("text:flex-attempt");
+    // Two numbers a row (the translations beside the rotations): six rows did not fit the pane
+    // of a 960 x 600 window. After Reveal the hints carry the signed errors; the reference's own
+    // numbers go on one line below.
     const std::array<double, 6>& truth = knee ? flex.referenceAngles : flex.hiddenMotion;
-    if (ImGui::BeginTable("flex-hints", columns,
-                          ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
-        ImGui::TableSetupColumn(knee ? "joint angle" : "motion", ImGuiTableColumnFlags_WidthStretch,
-                                1.6f);
-        ImGui::TableSetupColumn("hint", ImGuiTableColumnFlags_WidthStretch, 2.0f);
-        if (flex.revealed)
-            ImGui::TableSetupColumn("reference", ImGuiTableColumnFlags_WidthStretch, 0.9f);
+    if (ImGui::BeginTable("flex-hints", 4, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
+        for (int half = 0; half < 2; ++half) {
+            ImGui::TableSetupColumn(knee ? "joint" : "motion", ImGuiTableColumnFlags_WidthStretch, 1.3f);
+            ImGui::TableSetupColumn("hint", ImGuiTableColumnFlags_WidthStretch, 1.6f);
+        }
         ImGui::TableHeadersRow();
-        for (int p = 0; p < kParameterCount; ++p) {
-            const char* name = knee ? kneeComponentName(p) : boneMotionComponentName(p);
+        for (int row = 0; row < kParameterCount / 2; ++row) {
             ImGui::TableNextRow();
-            ImGui::TableNextColumn();
-            if (p == m.furthestParameter)
-                ImGui::TextColored(kWarn, "%s (furthest)", name);
-            else
-                ImGui::TextUnformatted(name);
-            ImGui::TableNextColumn();
-            ImGui::TextColored(m.direction[p] == 0 ? kGood : kWarn, "%s", m.hintCells[p].c_str());
-            if (flex.revealed) {
+            for (const int p : {row, row + kParameterCount / 2}) {
+                const char* name = knee ? kneeComponentName(p) : boneMotionComponentName(p);
                 ImGui::TableNextColumn();
-                ImGui::Text("%.1f", truth[p]);
+                if (p == m.furthestParameter)
+                    ImGui::TextColored(kWarn, "%s*", name);
+                else
+                    ImGui::TextUnformatted(name);
+                if (ImGui::IsItemHovered())
+                    tooltip(p == m.furthestParameter ? "%s: furthest off" : "%s", name);
+                ImGui::TableNextColumn();
+                ImGui::PushStyleColor(ImGuiCol_Text, m.direction[p] == 0 ? kGood : kWarn);
+                ImGui::TextWrapped("%s", m.hintCells[p].c_str());
+                ImGui::PopStyleColor();
             }
         }
         ImGui::EndTable();
+        record("table:flex-hints");
     }
+    if (flex.revealed)
+        ImGui::TextColored(kDim, "reference: %.1f, %.1f, %.1f mm | %.1f, %.1f, %.1f deg", truth[0], truth[1],
+                           truth[2], truth[3], truth[4], truth[5]);
 }
 
 }  // namespace fm::app

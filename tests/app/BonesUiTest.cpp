@@ -190,6 +190,26 @@ TEST_F(BonesUi, TheSlidersMoveTheChosenBoneAndTheJointAnglesFollowLive) {
     EXPECT_THROW(script->widget("slider:turn-x"), Error);
 }
 
+// In a 960 x 600 window the game's hints fit their pane without scrolling: the bone list folds
+// while a game runs (unfolded on request) and the hints take two numbers a row.
+TEST_F(BonesUi, TheFlexGamesHintsFitASmallWindow) {
+    script->clickWidget("tab:bones");
+    script->clickWidget("button:new-flex");
+    ASSERT_TRUE(app->state().bones.flex.active);
+    EXPECT_FALSE(app->state().bones.listUnfolded);
+    script->idle(1);
+    script->clickWidget("button:check-flex");
+    script->idle(1);
+    ASSERT_TRUE(app->state().bones.flex.outcome.has_value());
+    const float bottom = float(backend->framebufferSize().y);
+    EXPECT_LE(script->widget("table:flex-hints").max.y, bottom) << "the hints run below the window";
+    EXPECT_THROW(script->widget("radio:moves-tibia"), Error) << "the bone list is folded";
+    script->clickWidget("header:bone-list");
+    script->idle(1);
+    EXPECT_TRUE(app->state().bones.listUnfolded);
+    EXPECT_NO_THROW(script->widget("radio:moves-tibia"));
+}
+
 TEST_F(BonesUi, TheFlexGameHidesAFlexionThatTheTibiaMustFind) {
     start(testAppOptions(), {1280, 800});  // room for the game's hints under the bone list
     script->clickWidget("tab:bones");
