@@ -56,24 +56,23 @@ std::optional<OpenRequest> drawOpenWindow(OpenPanel& panel,
     if (ImGui::Begin("Open", &panel.shown,
                      ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse |
                          ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize)) {
-        ImGui::TextUnformatted("A CT or MRI (the matching game)");
-        const bool volumeEnter = pathField("CT", "open-volume", "file, DICOM folder or phantom:NAME", panel.volume, record);
-        if ((ImGui::Button("Open CT") || volumeEnter) && !panel.volume.empty()) {
-            request = OpenRequest{};
-            request->kind = OpenRequest::Kind::Volume;
-            request->volume = panel.volume;
-        }
-        record("button:open-volume");
-        ImGui::Separator();
-        ImGui::TextUnformatted("A trial (the real X-ray workspace, with tracking)");
-        const bool trialEnter = pathField("trial", "open-trial", "trial .json or Autoscoper .cfg", panel.trial, record);
-        if ((ImGui::Button("Open trial") || trialEnter) && !panel.trial.empty()) {
-            request = OpenRequest{};
-            request->kind = OpenRequest::Kind::Trial;
-            request->trial = panel.trial;
-        }
-        record("button:open-trial");
-        ImGui::Separator();
+        // A CT and a trial: one path each, opened by its button or Enter.
+        const auto onePath = [&](const char* title, const char* label, const char* id, const char* hint,
+                                 std::string& path, const char* button, OpenRequest::Kind kind) {
+            ImGui::TextUnformatted(title);
+            const bool enter = pathField(label, id, hint, path, record);
+            if ((ImGui::Button(button) || enter) && !path.empty()) {
+                request = OpenRequest{};
+                request->kind = kind;
+                (kind == OpenRequest::Kind::Volume ? request->volume : request->trial) = path;
+            }
+            record(std::string("button:") + id);
+            ImGui::Separator();
+        };
+        onePath("A CT or MRI (the matching game)", "CT", "open-volume", "file, DICOM folder or phantom:NAME",
+                panel.volume, "Open CT", OpenRequest::Kind::Volume);
+        onePath("A trial (the real X-ray workspace, with tracking)", "trial", "open-trial",
+                "trial .json or Autoscoper .cfg", panel.trial, "Open trial", OpenRequest::Kind::Trial);
         ImGui::TextUnformatted("One radiograph with its calibration and models");
         pathField("radiograph", "open-reference", "TIFF, PNG or JPEG", panel.reference, record);
         pathField("camera", "open-camera", "MayaCam .txt/.csv, JointTrack, geometry .json", panel.camera, record);
