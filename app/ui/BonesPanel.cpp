@@ -192,9 +192,8 @@ void Ui::boneGame(AppState& state) {
                 flex.outcomeIsStale ? (", " + bone + " moved since").c_str() : "");
     record("text:flex-attempt");
     // Two numbers a row (the translations beside the rotations): six rows did not fit the pane
-    // of a 960 x 600 window. After Reveal the hints carry the signed errors; the reference's own
-    // numbers go on one line below.
-    const std::array<double, 6>& truth = knee ? flex.referenceAngles : flex.hiddenMotion;
+    // of a 960 x 600 window. After Reveal a hint is its signed error (the words in its tooltip);
+    // the reference's own motion is under the reference image.
     if (ImGui::BeginTable("flex-hints", 4, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
         for (int half = 0; half < 2; ++half) {
             ImGui::TableSetupColumn(knee ? "joint" : "motion", ImGuiTableColumnFlags_WidthStretch, 1.3f);
@@ -214,16 +213,19 @@ void Ui::boneGame(AppState& state) {
                     tooltip(p == m.furthestParameter ? "%s: furthest off" : "%s", name);
                 ImGui::TableNextColumn();
                 ImGui::PushStyleColor(ImGuiCol_Text, m.direction[p] == 0 ? kGood : kWarn);
-                ImGui::TextWrapped("%s", m.hintCells[p].c_str());
+                if (m.numbersShown)  // the signed error says the direction: one short line
+                    ImGui::Text("%s%+.1f %s", m.direction[p] == 0 ? "ok " : "", m.error[p],
+                                isAngleParameter(p) ? "deg" : "mm");
+                else
+                    ImGui::TextWrapped("%s", m.hintCells[p].c_str());
                 ImGui::PopStyleColor();
+                if (m.numbersShown && ImGui::IsItemHovered()) tooltip("%s", m.hintCells[p].c_str());
             }
         }
         ImGui::EndTable();
         record("table:flex-hints");
     }
-    if (flex.revealed)
-        ImGui::TextColored(kDim, "reference: %.1f, %.1f, %.1f mm | %.1f, %.1f, %.1f deg", truth[0], truth[1],
-                           truth[2], truth[3], truth[4], truth[5]);
+
 }
 
 }  // namespace fm::app

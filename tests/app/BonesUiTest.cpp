@@ -203,6 +203,11 @@ TEST_F(BonesUi, TheFlexGamesHintsFitASmallWindow) {
     ASSERT_TRUE(app->state().bones.flex.outcome.has_value());
     const float bottom = float(backend->framebufferSize().y);
     EXPECT_LE(script->widget("table:flex-hints").max.y, bottom) << "the hints run below the window";
+    // After Reveal too: the signed errors in one line each.
+    script->clickWidget("checkbox:reveal-flex");
+    script->idle(1);
+    ASSERT_TRUE(app->state().bones.flex.outcome->numbersShown);
+    EXPECT_LE(script->widget("table:flex-hints").max.y, bottom) << "the revealed hints run below the window";
     EXPECT_THROW(script->widget("radio:moves-tibia"), Error) << "the bone list is folded";
     script->clickWidget("header:bone-list");
     script->idle(1);
