@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "cli/CommandRegistry.h"
+#include "cli/ModeOptions.h"
 #include "cli/WorkspaceOptions.h"
 #include "core/Error.h"
 #include "platform/RenderBackend.h"
@@ -148,7 +149,17 @@ FM_REGISTER_COMMAND("app", 1, [](CLI::App& cli) {
     fm::cli::addWorkspaceOptions(cmd, args->workspace);
     cmd->add_option("--threads", args->threads, "Threads of the workspace's images and Solve (0 = all cores)")
         ->check(CLI::NonNegativeNumber);
-    cmd->callback([args] { runApp(*args); });
+    cmd->callback([args, cmd] {
+        // The game (a CT) or the workspace (--trial / --reference): each takes its own options.
+        static const std::vector<fm::cli::CommandMode> modes{
+            {"app", "the matching game on a CT",
+             {"volume", "labels", "label-table", "frames", "require-window", "headless-out", "threads"}},
+            {"app --trial/--reference", "the real X-ray workspace",
+             {"trial", "reference", "camera", "model", "start", "mask", "frame", "mu", "invert", "log", "i0",
+           "exclude-below", "erode", "roi", "out", "frames", "require-window", "headless-out", "threads"}}};
+        fm::cli::refuseOptionsOutside(*cmd, modes[fm::cli::wantsWorkspace(args->workspace) ? 1 : 0], modes);
+        runApp(*args);
+    });
     return cmd;
 });
 
