@@ -155,7 +155,7 @@ FM_REGISTER_COMMAND("app", 1, [](CLI::App& cli) {
             {"app", "the matching game on a CT",
              {"volume", "labels", "label-table", "frames", "require-window", "headless-out", "threads"}},
             {"app --trial/--reference", "the real X-ray workspace",
-             {"trial", "reference", "camera", "model", "start", "mask", "frame", "mu", "invert", "log", "i0",
+             {"trial", "reference", "camera", "model", "start", "mask", "frame", "mu", "tra-form", "invert", "log", "i0",
            "exclude-below", "erode", "roi", "out", "frames", "require-window", "headless-out", "threads"}}};
         fm::cli::refuseOptionsOutside(*cmd, modes[fm::cli::wantsWorkspace(args->workspace) ? 1 : 0], modes);
         runApp(*args);

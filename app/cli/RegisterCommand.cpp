@@ -167,7 +167,7 @@ const std::vector<fm::cli::CommandMode>& registerModes() {
         {"register --trial", "one bone in one frame of a trial, in its cameras",
          {"trial", "bone", "frame", "cameras", "start", "out", "seed", "threads"}},
         {"register --model", "models in a real radiograph",
-         withSearch({"reference", "camera", "model", "start", "frame", "out", "mask", "mu", "page",
+         withSearch({"reference", "camera", "model", "start", "frame", "out", "mask", "mu", "tra-form", "page",
                      "invert", "log", "i0", "exclude-below", "erode", "roi"})},
         {"register --slice", "a 2D image against slices of a volume",
          withSearch({"slice", "volume", "reference-pose", "reference", "start", "truth", "size",

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "camera/CameraFile.h"
+#include "cli/ValueChecks.h"
 #include "core/Error.h"
 #include "core/Parallel.h"
 #include "meshdrr/MeshDrr.h"
@@ -52,6 +53,10 @@ void addXrayRegisterOptions(CLI::App* cmd, XrayRegisterArgs& a) {
     cmd->add_option("--mask", a.masks,
                     "Label mask per model (binary image): the silhouette IoU is reported");
     cmd->add_option("--mu", a.mu, "Model attenuation 1/mm (default 1.2, cobalt-chromium)");
+    cmd->add_option("--tra-form", a.traForm,
+                    "How a --start .tra's numbers divide when their count does not say (48 a row: 3 "
+                    "matrices or 8 xyzypr rows): matrix or xyzypr")
+        ->check(oneOf({"matrix", "xyzypr"}, ".tra form"));
     addPageOption(cmd, a.page, "Page of a multi-page TIFF reference (0-based)");
     addRadiographOptions(cmd, a.prep);
 }
@@ -101,7 +106,8 @@ void runXrayRegister(const std::string& reference, const XrayRegisterArgs& a,
         auto xray = std::make_shared<MeshXrayModel>(prepareMeshDrr(model), mu, name);
         const std::string& spec = perModel(starts, k, n, "--start");
         const bool one = starts.size() != n;  // one .tra for all models
-        startPoses.push_back(readPoseSpec(spec, a.frame, one ? k : 0, one ? static_cast<int>(n) : 0));
+        startPoses.push_back(readPoseSpec(spec, a.frame, one ? k : 0, one ? static_cast<int>(n) : 0,
+                                          a.traForm.empty() ? TraForm::Auto : parseTraForm(a.traForm, "--tra-form")));
         scene.objects.push_back({name, xray, startPoses.back(), true});
     }
     // A start that covers no valid pixel leaves the search blind: refused with the numbers.

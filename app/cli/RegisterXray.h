@@ -20,6 +20,7 @@ struct XrayRegisterArgs {
     int frame = 0;  // --frame (the trial mode's option, shared): set by the command
     int page = -1;
     double mu = 0.0;  // 0 = the default attenuation of the model kind
+    std::string traForm;  // --tra-form: "" (from the counts), matrix or xyzypr
     RadiographOptions prep;
 };
 

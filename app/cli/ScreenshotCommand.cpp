@@ -181,7 +181,7 @@ FM_REGISTER_COMMAND("screenshot", 2, [](CLI::App& cli) {
              {"out", "size", "volume", "labels", "label-table", "pose", "reference-pose", "view", "seed",
               "compare", "match", "help-window", "timings", "threads", "measure-drag", "drag-modes"}},
             {"screenshot --trial/--reference", "the real X-ray workspace",
-             {"out", "size", "trial", "reference", "camera", "model", "start", "mask", "frame", "mu", "invert", "log", "i0",
+             {"out", "size", "trial", "reference", "camera", "model", "start", "mask", "frame", "mu", "tra-form", "invert", "log", "i0",
            "exclude-below", "erode", "roi", "side-by-side", "drr", "timings", "threads"}}};
         fm::cli::refuseOptionsOutside(*cmd, modes[fm::cli::wantsWorkspace(a->workspace) ? 1 : 0], modes);
         runScreenshot(*a);

@@ -1,6 +1,8 @@
 #include "cli/WorkspaceOptions.h"
 
+#include "cli/ValueChecks.h"
 #include "core/Error.h"
+#include "pose/AutoscoperTra.h"
 #include "radiograph/Radiograph.h"
 
 namespace fm::cli {
@@ -17,6 +19,10 @@ void addWorkspaceOptions(CLI::App* cmd, WorkspaceArgs& a, bool withOut) {
         cmd->add_option("--out", a.out, "Where Save writes the poses (.tra for a trial; .jts or .tra for one radiograph)");
     cmd->add_option("--frame", a.frame, "A trial's frame to open at; with --reference: the row of --start files")
         ->check(CLI::NonNegativeNumber);
+    cmd->add_option("--tra-form", a.traForm,
+                    "With --reference: how a --start .tra's numbers divide when their count does not "
+                    "say: matrix or xyzypr")
+        ->check(oneOf({"matrix", "xyzypr"}, ".tra form"));
     cmd->add_option("--mu", a.mu, "With --reference: the models' attenuation 1/mm (default 1.2, cobalt-chromium)");
     addRadiographOptions(cmd, a.prep);
 }
@@ -45,6 +51,7 @@ app::WorkspaceSource workspaceSource(const WorkspaceArgs& a) {
     s.starts = a.starts;
     s.startFrame = a.frame;
     s.muPerMm = a.mu;
+    if (!a.traForm.empty()) s.traForm = parseTraForm(a.traForm, "--tra-form");
     s.preparation = preparationFrom(a.prep, readRadiograph(a.reference).bitsPerSample);
     return s;
 }

@@ -18,6 +18,7 @@ struct WorkspaceArgs {
     std::vector<std::string> models, starts, masks;
     int frame = 0;
     double mu = 0.0;
+    std::string traForm;  // --tra-form for .tra starts: "", matrix or xyzypr
     RadiographOptions prep;
 };
 

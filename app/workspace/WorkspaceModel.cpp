@@ -91,7 +91,8 @@ std::shared_ptr<WorkspaceModel> WorkspaceModel::open(const WorkspaceSource& sour
             }
             const bool one = source.starts.size() != source.models.size();
             m->starts_.push_back(readPoseSpec(source.starts[one ? 0 : k], source.startFrame, one ? k : 0,
-                                              one ? static_cast<int>(source.models.size()) : 0));
+                                              one ? static_cast<int>(source.models.size()) : 0,
+                                              source.traForm));
         }
         m->title_ = source.reference.filename().string();
         const std::string ext = source.models.size() == 1 ? ".jts" : ".tra";

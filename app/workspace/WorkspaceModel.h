@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/Image.h"
+#include "pose/AutoscoperTra.h"
 #include "radiograph/RadiographPreparation.h"
 #include "scene/RigidTransform.h"
 #include "search/Registration.h"
@@ -30,6 +31,7 @@ struct WorkspaceSource {
     std::vector<std::filesystem::path> masks;  // none, or one per model
     int startFrame = 0;                        // the row of .jts/.tra starts (register --frame)
     double muPerMm = 0.0;                      // models' attenuation; 0 = cobalt-chromium
+    TraForm traForm = TraForm::Auto;           // a .tra start's numbers (--tra-form)
     // How the radiographs are prepared: a trial's default is tracking's
     // (defaultTrialPreparation); one radiograph takes the register flags.
     std::optional<RadiographPreparation> preparation;

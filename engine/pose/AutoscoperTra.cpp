@@ -34,7 +34,14 @@ void xyzyprFromTransform(const RigidTransform& t, double v[6]) {
     v[3] = a[0], v[4] = a[1], v[5] = a[2];
 }
 
-TraFile parseTra(const std::string& text, const std::string& what, TraForm form, int objects) {
+TraForm parseTraForm(const std::string& text, const std::string& option) {
+    if (text == "matrix") return TraForm::Matrix;
+    if (text == "xyzypr") return TraForm::Xyzypr;
+    throw Error(option + " \"" + text + "\": expected matrix (16 numbers an object) or xyzypr (6)");
+}
+
+TraFile parseTra(const std::string& text, const std::string& what, TraForm form, int objects,
+                 const std::string& howToSay) {
     std::vector<std::pair<std::size_t, std::vector<std::string>>> rows;
     std::size_t pos = 0, number = 0, lastNonBlank = 0;
     std::string line;
@@ -62,8 +69,10 @@ TraFile parseTra(const std::string& text, const std::string& what, TraForm form,
                         (objects > 0 ? ", and neither is the " + std::to_string(objects) +
                                            " objects expected"
                                      : std::string()) +
-                        "; write the file with one object, or read it where the object count is "
-                        "known (a trial's bones, one --start .tra for all --model)");
+                        "; " + (howToSay.empty() ? std::string("write the file with one object, or read it "
+                                                               "where the object count is known (a "
+                                                               "trial's bones)")
+                                                 : howToSay));
         if (!m && !x)
             throw Error(what + ": line 1 holds " + std::to_string(count) +
                         " numbers: not 16 (a 4x4 matrix) or 6 (x, y, z, yaw, pitch, roll) per object");
@@ -114,9 +123,10 @@ TraFile parseTra(const std::string& text, const std::string& what, TraForm form,
     return tra;
 }
 
-TraFile readTra(const std::filesystem::path& path, TraForm form, int objects) {
+TraFile readTra(const std::filesystem::path& path, TraForm form, int objects,
+                const std::string& howToSay) {
     return parseTra(io::readTextFile(path, kMaxPoseFileBytes, "Autoscoper tracking file"),
-                    path.string(), form, objects);
+                    path.string(), form, objects, howToSay);
 }
 
 std::string traText(const TraFile& tra) {

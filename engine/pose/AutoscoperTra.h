@@ -38,9 +38,14 @@ void xyzyprFromTransform(const RigidTransform& t, double xyzypr[6]);
 // NaN, a matrix that is not rigid. `objects` (0: unknown) is how many objects the file is
 // expected to hold: with TraForm::Auto it decides a count that both forms divide (48 numbers:
 // 3 matrices, or 8 xyzypr rows); the file may still hold one object.
+// `howToSay`: what the refusal of an undecided line suggests (the caller's option, e.g. "give
+// --tra-form matrix or xyzypr"); empty: the general advice.
 TraFile parseTra(const std::string& text, const std::string& what, TraForm form = TraForm::Auto,
-                 int objects = 0);
-TraFile readTra(const std::filesystem::path& path, TraForm form = TraForm::Auto, int objects = 0);
+                 int objects = 0, const std::string& howToSay = {});
+TraFile readTra(const std::filesystem::path& path, TraForm form = TraForm::Auto, int objects = 0,
+                const std::string& howToSay = {});
+// "matrix" or "xyzypr" (an option's value); fm::Error naming `option` otherwise.
+TraForm parseTraForm(const std::string& text, const std::string& option);
 
 // What Autoscoper reads back (its own backup format): per object 16 comma-separated numbers in
 // row order (or 6 for Xyzypr), fixed-point with 16 decimals, "NaN" x 16 for untracked frames.

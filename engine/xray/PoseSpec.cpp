@@ -31,7 +31,8 @@ void checkFrame(int frame, const std::string& what) {
 
 }  // namespace
 
-RigidTransform readPoseSpec(const std::string& spec, int frame, std::size_t object, int objects) {
+RigidTransform readPoseSpec(const std::string& spec, int frame, std::size_t object, int objects,
+                            TraForm form) {
     const std::string ext = extensionOf(spec);
     if (ext == ".jts") {
         checkFrame(frame, spec);
@@ -46,7 +47,7 @@ RigidTransform readPoseSpec(const std::string& spec, int frame, std::size_t obje
     }
     if (ext == ".tra") {
         checkFrame(frame, spec);
-        const TraFile tra = readTra(spec, TraForm::Auto, objects);
+        const TraFile tra = readTra(spec, form, objects, "give --tra-form matrix or xyzypr");
         if (static_cast<std::size_t>(frame) >= tra.frames.size())
             throw Error(spec + ": frame " + std::to_string(frame) + " does not exist (the file has " +
                         std::to_string(tra.frames.size()) + " rows)");

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <string>
 
+#include "pose/AutoscoperTra.h"
 #include "scene/RigidTransform.h"
 
 namespace fm {
@@ -16,8 +17,9 @@ namespace fm {
 // Throws fm::Error naming the file, row and field for unreadable input, a row that does not
 // exist or holds no pose (NOT_OPTIMIZED, NaN). `objects`: how many objects a .tra is expected
 // to hold (one --start .tra for all models), 0 when unknown (parseTra).
+// `form`: how a .tra's numbers divide when its count does not say (--tra-form).
 RigidTransform readPoseSpec(const std::string& spec, int frame, std::size_t object = 0,
-                            int objects = 0);
+                            int objects = 0, TraForm form = TraForm::Auto);
 
 // Writes `pose` as row `frame` (object `object` for .tra) of `path`, keeping the file's other
 // rows when it exists (rows added in between hold no pose). The format is the extension's

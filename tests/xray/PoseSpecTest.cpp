@@ -83,6 +83,23 @@ TEST(PoseSpec, TraObjectsReadAndWriteBack) {
     expectError([&] { readPoseSpec(path.string(), 1, 2); }, "object 3");
 }
 
+// A .tra whose count both forms divide (48: 3 matrices or 8 xyzypr rows), read for one model:
+// the count says nothing, so the refusal names --tra-form, and the form given reads it.
+TEST(PoseSpec, AnUndecidedTraNamesTraFormAndTheFormGivenReadsIt) {
+    const auto dir = test::scratchDir("PoseSpecTraForm");
+    const auto path = dir / "three.tra";
+    const RigidTransform a = readPoseSpec("18.5,19.7,-1027.7,-26.7,-7.4,-0.26", 0);
+    const RigidTransform b = readPoseSpec("-3,4,-990,10,20,-30", 0);
+    writePoseSpec(path, 0, 0, a);
+    writePoseSpec(path, 0, 2, b);  // three objects: 48 numbers a row, the second NaN
+    expectError([&] { readPoseSpec(path.string(), 0, 0); }, "give --tra-form matrix or xyzypr");
+    expectSame(readPoseSpec(path.string(), 0, 0, 0, TraForm::Matrix), a, 1e-12);
+    expectSame(readPoseSpec(path.string(), 0, 2, 0, TraForm::Matrix), b, 1e-12);
+    expectSame(readPoseSpec(path.string(), 0, 2, 3), b, 1e-12);  // the model count decides too
+    EXPECT_EQ(parseTraForm("xyzypr", "--tra-form"), TraForm::Xyzypr);
+    expectError([&] { parseTraForm("rows", "--tra-form"); }, "--tra-form \"rows\"");
+}
+
 TEST(PoseSpec, OutputsAreCheckedBeforeWork) {
     const auto dir = test::scratchDir("PoseSpecOut");
     expectError([&] { checkPoseOutput(dir / "pose.txt", 0); }, "must end in .jts or .tra");
