@@ -108,6 +108,9 @@ done <<TABLE
 2|--budget|register --reference-pose 1,2,3,4,5,6 --budget 0
 2|--seed|register --reference-pose 1,2,3,4,5,6 --seed -1
 2|--values|drr --values foo --out $OUT/x.png
+2|--volume does not apply to screenshot --trial|screenshot --trial t.json --volume phantom:sphere --out $OUT/x.png
+2|--invert does not apply to app (the matching game|app --volume phantom:knee --invert --headless-out $OUT/y.png
+2|unknown .tra form 'rows' (matrix or xyzypr)|register --reference r.tif --camera c.txt --model m.stl --start s.tra --tra-form rows
 1|none.nii|drr --volume $OUT/none.nii --out $OUT/a.png
 1|does not exist|drr --out $OUT/missing/v.png
 0||drr --pose 0,0,0,0,0,0 --size 16x16 --out $OUT/ok.png
