@@ -151,12 +151,16 @@ FM_REGISTER_COMMAND("app", 1, [](CLI::App& cli) {
         ->check(CLI::NonNegativeNumber);
     cmd->callback([args, cmd] {
         // The game (a CT) or the workspace (--trial / --reference): each takes its own options.
-        static const std::vector<fm::cli::CommandMode> modes{
-            {"app", "the matching game on a CT",
-             {"volume", "labels", "label-table", "frames", "require-window", "headless-out", "threads"}},
-            {"app --trial/--reference", "the real X-ray workspace",
-             {"trial", "reference", "camera", "model", "start", "mask", "frame", "mu", "tra-form", "invert", "log", "i0",
-           "exclude-below", "erode", "roi", "out", "frames", "require-window", "headless-out", "threads"}}};
+        static const std::vector<fm::cli::CommandMode> modes = [] {
+            fm::cli::WorkspaceArgs scratch;
+            return std::vector<fm::cli::CommandMode>{
+                {"app", "the matching game on a CT",
+                 {"volume", "labels", "label-table", "frames", "require-window", "headless-out",
+                  "threads"}},
+                {"app --trial/--reference", "the real X-ray workspace",
+                 fm::cli::optionNames([&](CLI::App* c) { fm::cli::addWorkspaceOptions(c, scratch); },
+                                      {"frames", "require-window", "headless-out", "threads"})}};
+        }();
         fm::cli::refuseOptionsOutside(*cmd, modes[fm::cli::wantsWorkspace(args->workspace) ? 1 : 0], modes);
         runApp(*args);
     });

@@ -4,9 +4,19 @@
 
 namespace fm::cli {
 
-std::vector<std::string> searchOptionNames() {
-    return {"method", "similarity", "seed",   "budget",  "polish-budget",
-            "levels", "radius",     "threads", "polish"};
+std::vector<std::string> optionNames(const std::function<void(CLI::App*)>& add,
+                                     std::initializer_list<const char*> more,
+                                     std::initializer_list<const char*> less) {
+    CLI::App scratch;
+    add(&scratch);
+    std::vector<std::string> names(more.begin(), more.end());
+    for (const CLI::Option* o : scratch.get_options()) {
+        if (o->get_lnames().empty()) continue;
+        const std::string& name = o->get_lnames().front();
+        if (name != "help" && std::find(less.begin(), less.end(), name) == less.end())
+            names.push_back(name);
+    }
+    return names;
 }
 
 namespace {

@@ -3,6 +3,8 @@
 // radiograph, a trial's frame): each mode names the options it takes, and any other option the
 // user gave is refused before any work, naming the mode and what it does take. An option that
 // does not apply is never silently ignored (README "Conventions").
+#include <functional>
+#include <initializer_list>
 #include <string>
 #include <vector>
 
@@ -16,8 +18,11 @@ struct CommandMode {
     std::vector<std::string> takes;  // long option names without dashes
 };
 
-// The search options every registration mode shares (cli/SearchCli.h) but --values.
-std::vector<std::string> searchOptionNames();
+// The long names of the options `add` adds to a command (e.g. addSearchOptions on scratch
+// arguments), so a mode's list follows the options as they are, plus `more`, less `less`.
+std::vector<std::string> optionNames(const std::function<void(CLI::App*)>& add,
+                                     std::initializer_list<const char*> more = {},
+                                     std::initializer_list<const char*> less = {});
 
 // Throws CLI::ValidationError (exit 2, "the command line did not parse") naming every given
 // option outside `mode.takes`, and which of the `other` modes take it.

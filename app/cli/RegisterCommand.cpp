@@ -156,40 +156,48 @@ void printPoseRow(const char* label, const std::array<double, 6>& v) {
 }
 
 // register's modes and the options each takes (cli/ModeOptions.h); the given options choose
-// one, and the rest are refused before any work.
+// one, and the rest are refused before any work. In registerModes()'s order.
+enum RegisterMode { kTrialMode, kModelMode, kSliceMode, kBoneMode, kPoseMode };
+
 const std::vector<fm::cli::CommandMode>& registerModes() {
-    const auto withSearch = [](std::vector<std::string> own) {
-        for (std::string& name : fm::cli::searchOptionNames()) own.push_back(std::move(name));
-        return own;
-    };
-    static const std::vector<fm::cli::CommandMode> modes{
-        // The tracker's search: its own settings, seeded.
-        {"register --trial", "one bone in one frame of a trial, in its cameras",
-         {"trial", "bone", "frame", "cameras", "start", "out", "seed", "threads"}},
-        {"register --model", "models in a real radiograph",
-         withSearch({"reference", "camera", "model", "start", "frame", "out", "mask", "mu", "tra-form", "page",
-                     "invert", "log", "i0", "exclude-below", "erode", "roi"})},
-        {"register --slice", "a 2D image against slices of a volume",
-         withSearch({"slice", "volume", "reference-pose", "reference", "start", "truth", "size",
-                     "spacing", "thickness", "interpolation"})},
-        {"register --bone", "one bone of a labelled CT against a reference it renders",
-         withSearch({"volume", "labels", "label-table", "bone", "without", "bone-motion", "pose",
-                     "biplane", "no-rest", "footprint-margin", "values"})},
-        {"register", "a CT against one image, the 2011 pose",
-         withSearch({"volume", "reference-pose", "reference", "geometry", "start", "truth",
-                     "values"})}};
+    static const std::vector<fm::cli::CommandMode> modes = [] {
+        // The search options of cli/SearchCli.h (--values only where a CT's values are
+        // integrated) and the real X-ray ones of cli/RegisterXray.h, as they are added.
+        const auto withSearch = [](std::initializer_list<const char*> own) {
+            fm::cli::SearchArgs scratch;
+            return fm::cli::optionNames([&](CLI::App* c) { fm::cli::addSearchOptions(c, scratch); },
+                                        own, {"values"});
+        };
+        std::vector<std::string> xray = withSearch({"reference", "start", "frame"});
+        fm::cli::XrayRegisterArgs scratchXray;
+        for (std::string& name : fm::cli::optionNames(
+                 [&](CLI::App* c) { fm::cli::addXrayRegisterOptions(c, scratchXray); }))
+            xray.push_back(std::move(name));
+        return std::vector<fm::cli::CommandMode>{
+            // The tracker's search: its own settings, seeded.
+            {"register --trial", "one bone in one frame of a trial, in its cameras",
+             {"trial", "bone", "frame", "cameras", "start", "out", "seed", "threads"}},
+            {"register --model", "models in a real radiograph", xray},
+            {"register --slice", "a 2D image against slices of a volume",
+             withSearch({"slice", "volume", "reference-pose", "reference", "start", "truth", "size",
+                         "spacing", "thickness", "interpolation"})},
+            {"register --bone", "one bone of a labelled CT against a reference it renders",
+             withSearch({"volume", "labels", "label-table", "bone", "without", "bone-motion",
+                         "pose", "biplane", "no-rest", "footprint-margin", "values"})},
+            {"register", "a CT against one image, the 2011 pose",
+             withSearch({"volume", "reference-pose", "reference", "geometry", "start", "truth",
+                         "values"})}};
+    }();
     return modes;
 }
 
-const fm::cli::CommandMode& registerMode(const RegisterArgs& a,
-                                         const fm::cli::TrialRegisterArgs& trial) {
-    const auto& modes = registerModes();
-    if (!trial.trial.empty()) return modes[0];
-    if (!a.xray.models.empty() || !a.xray.camera.empty()) return modes[1];
-    if (a.slice) return modes[2];
+RegisterMode registerMode(const RegisterArgs& a, const fm::cli::TrialRegisterArgs& trial) {
+    if (!trial.trial.empty()) return kTrialMode;
+    if (!a.xray.models.empty() || !a.xray.camera.empty()) return kModelMode;
+    if (a.slice) return kSliceMode;
     if (!a.bones.bone.empty() || !a.bones.labels.empty() || !a.bones.without.empty())
-        return modes[3];
-    return modes[4];
+        return kBoneMode;
+    return kPoseMode;
 }
 
 void runRegister(const RegisterArgs& a, bool similarityGiven, int frame) {
@@ -352,9 +360,9 @@ FM_REGISTER_COMMAND("register", 40, [](CLI::App& app) {
     auto trial = std::make_shared<fm::cli::TrialRegisterArgs>();
     fm::cli::addTrialRegisterOptions(cmd, *trial);
     cmd->callback([a, trial, cmd] {
-        const fm::cli::CommandMode& mode = registerMode(*a, *trial);
-        fm::cli::refuseOptionsOutside(*cmd, mode, registerModes());
-        if (mode.name == "register" || mode.name == "register --slice")
+        const RegisterMode mode = registerMode(*a, *trial);
+        fm::cli::refuseOptionsOutside(*cmd, registerModes()[mode], registerModes());
+        if (mode == kPoseMode || mode == kSliceMode)
             for (std::string start : a->start)  // a 2011 pose here: checked before any work
                 if (const std::string e = fm::cli::kPoseText(start); !e.empty())
                     throw CLI::ValidationError("--start: " + e);

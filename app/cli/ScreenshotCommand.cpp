@@ -176,13 +176,18 @@ FM_REGISTER_COMMAND("screenshot", 2, [](CLI::App& cli) {
     cmd->add_flag("--side-by-side", a->sideBySide, "workspace: the model beside each radiograph, not over it");
     cmd->add_flag("--drr", a->drr, "workspace: the models' DRRs instead of their outlines");
     cmd->callback([a, cmd] {
-        static const std::vector<fm::cli::CommandMode> modes{
-            {"screenshot", "the matching game on a CT",
-             {"out", "size", "volume", "labels", "label-table", "pose", "reference-pose", "view", "seed",
-              "compare", "match", "help-window", "timings", "threads", "measure-drag", "drag-modes"}},
-            {"screenshot --trial/--reference", "the real X-ray workspace",
-             {"out", "size", "trial", "reference", "camera", "model", "start", "mask", "frame", "mu", "tra-form", "invert", "log", "i0",
-           "exclude-below", "erode", "roi", "side-by-side", "drr", "timings", "threads"}}};
+        static const std::vector<fm::cli::CommandMode> modes = [] {
+            fm::cli::WorkspaceArgs scratch;
+            return std::vector<fm::cli::CommandMode>{
+                {"screenshot", "the matching game on a CT",
+                 {"out", "size", "volume", "labels", "label-table", "pose", "reference-pose", "view",
+                  "seed", "compare", "match", "help-window", "timings", "threads", "measure-drag",
+                  "drag-modes"}},
+                {"screenshot --trial/--reference", "the real X-ray workspace",
+                 fm::cli::optionNames(
+                     [&](CLI::App* c) { fm::cli::addWorkspaceOptions(c, scratch, false); },
+                     {"out", "size", "side-by-side", "drr", "timings", "threads"})}};
+        }();
         fm::cli::refuseOptionsOutside(*cmd, modes[fm::cli::wantsWorkspace(a->workspace) ? 1 : 0], modes);
         runScreenshot(*a);
     });

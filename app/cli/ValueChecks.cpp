@@ -5,6 +5,7 @@
 #include "core/Error.h"
 #include "core/Suggest.h"
 #include "geometry/Pose.h"
+#include "search/Optimizer.h"
 
 namespace fm::cli {
 
@@ -36,7 +37,11 @@ const CLI::Validator kPoseText(
     },
     "POSE");
 
-std::vector<std::string> globalMethodNames() { return {"mc", "pso", "bees", "cmaes"}; }
+std::vector<std::string> globalMethodNames() {
+    std::vector<std::string> names;  // the engine's list, in its order
+    for (const SearchMethod m : globalSearchMethods()) names.emplace_back(toString(m));
+    return names;
+}
 std::vector<std::string> polishMethodNames() { return {"nm", "cmaes"}; }
 std::vector<std::string> similarityNames() {
     return {"ncc", "gncc", "gd", "mi", "edge", "gradient-ncc", "gradient-difference",

@@ -25,14 +25,13 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-// The level of the foreground surface of an MRI: the mean value (above it: head, not air).
+}  // namespace
+
 double foregroundLevel(const Volume& volume) {
     double sum = 0.0;
     for (float v : volume.values) sum += v;
     return volume.values.empty() ? 0.0 : sum / double(volume.values.size());
 }
-
-}  // namespace
 
 double boneIsoValue(const Volume& volume) {
     if (looksLikeHounsfield(volume)) return 300.0;

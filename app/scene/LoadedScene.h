@@ -65,6 +65,9 @@ double boneIsoValue(const Volume& volume);
 // An MRI file: modality MR; or, without a modality, a NIfTI file whose values are not HU
 // (research MRIs come as NIfTI; CTs in NIfTI hold HU, caught first). Phantoms are CTs.
 bool looksLikeMri(const Volume& volume);
+// The mean of the volume's values: an MRI's surface level (above it: head, not air), and the
+// foreground the slice game's references must cut.
+double foregroundLevel(const Volume& volume);
 
 // The DRR options the app uses for every image (both reference and user).
 DrrValueOptions appDrrValueOptions(const Volume& volume);

@@ -25,12 +25,6 @@ double round1(double v) {
     return std::round(v * 10.0) / 10.0;
 }
 
-double meanValue(const Volume& volume) {
-    double sum = 0.0;
-    for (float v : volume.values) sum += v;
-    return sum / double(std::max<std::size_t>(1, volume.values.size()));
-}
-
 // Share of the slice's pixels that cut the foreground (values above the volume's mean).
 double foregroundShare(const LoadedScene& scene, const Pose& pose, double mean) {
     const SampledSlice s = renderAppSlice(scene, pose, 4, 1);
@@ -74,7 +68,7 @@ ReferenceChoice chooseSliceReference(const LoadedScene& scene, std::uint64_t see
     // How much foreground each standard plane through the centre cuts: a drawn plane must cut
     // a good part of what its own plane does (an absolute share failed on ch2, whose head fills
     // a fifth of the slice grid: every draw fell back to the plain plane).
-    const double mean = meanValue(*scene.volume);
+    const double mean = foregroundLevel(*scene.volume);
     double standardShare[3];
     for (int k = 0; k < 3; ++k) standardShare[k] = foregroundShare(scene, standardPose(kPlanes[k]), mean);
     Rng rng(seed);

@@ -9,10 +9,11 @@
 
 namespace fm::app {
 
-// The mean of `image` over the valid pixels inside `footprint` minus its mean over the valid
-// pixels outside, in units of the valid pixels' 1st..99th percentile range. 0 when either part
-// is empty or the range is 0.
-double footprintContrast(const Image& image, const Mask& valid, const Mask& footprint);
+// The mean of `image` over the valid pixels (`valid` empty: all) inside `footprint` minus its mean
+// over the valid pixels outside, in units of `range` (the valid pixels' 1st..99th percentile
+// range, track/PoseOverlay's validPercentileRange: one per prepared frame, not per call). 0 when
+// either part is empty, the range is not positive or the sizes differ. One pass.
+double footprintContrast(const Image& image, const Mask& valid, const Mask& footprint, double range);
 
 // Below this the footprints are clearly darker than their surroundings: the image looks raw.
 inline constexpr double kRawLookingContrast = -0.05;

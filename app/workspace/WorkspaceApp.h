@@ -70,8 +70,6 @@ class WorkspaceApp : public ScriptableApp {
     void syncControls();
     void processRequests();
     void pollSolver();
-    // The verdict of a Solve's answer (WorkspaceSolve::check) from what can be checked.
-    void checkAnswer(WorkspaceSolve& w, const SceneObject& object, int frame, const RigidTransform& pose) const;
     void save();
     void updateImages();
     // state_.rawHint from the shown models' footprints on the prepared radiographs.
@@ -116,6 +114,11 @@ class WorkspaceApp : public ScriptableApp {
     std::uint64_t imagesVersion_ = 0;
     int sceneDraws_ = 0;
     int autoWindowFrame_ = -1;
+    // The raw-image hint (updateRawHint): due after the panes changed; each frame's value range
+    // kept for its (frame, preparation version).
+    bool rawHintStale_ = false;
+    std::pair<int, std::uint64_t> rawRangesKey_{-1, 0};
+    std::vector<double> rawRanges_;
     std::uint64_t solveVersion_ = 0;
     // Last: joined first (their workers hold the model).
     WorkspaceTracking tracking_;

@@ -72,16 +72,12 @@ struct WorkspaceSolve {
     double inPlaneMm = 0.0, depthMm = 0.0, rotationDeg = 0.0;
     std::optional<double> iou, startIou;  // against the object's mask, when there is one
     std::string summary;                  // one line: how it ended
-    // How far the answer can be trusted, from what can be checked here (the mask, the model's
-    // coverage of valid pixels): only a checked answer is shown as good.
+    // How far the answer can be trusted (workspace/SolveCheck.h): only a checked answer is shown
+    // as good.
     enum class Check { Confirmed, Unchecked, Doubtful, Lost } check = Check::Unchecked;
     std::string checkText;  // "checked: IoU 0.95 against the mask", "unchecked: no mask ..."
 };
 
-// Silhouette IoU against the mask from which an answer counts as confirmed, and below which it is
-// lost rather than doubtful.
-inline constexpr double kConfirmedIoU = 0.9;
-inline constexpr double kLostIoU = 0.5;
 
 struct WorkspaceRequests {
     bool solve = false, stopSolve = false;

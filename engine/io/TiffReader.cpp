@@ -10,6 +10,7 @@
 
 #include "core/Error.h"
 #include "io/ByteSource.h"
+#include "io/HeaderText.h"
 
 namespace fm::io {
 
@@ -276,6 +277,11 @@ TiffShape readTiffShape(const std::filesystem::path& path) {
     const std::vector<PageLayout> layouts = scan(f, std::filesystem::file_size(path));
     return {static_cast<int>(layouts[0].width), static_cast<int>(layouts[0].height),
             static_cast<int>(layouts.size()), layouts[0].bits};
+}
+
+bool hasTiffExtension(const std::filesystem::path& path) {
+    const std::string ext = toLower(path.extension().string());
+    return ext == ".tif" || ext == ".tiff";
 }
 
 }  // namespace fm::io

@@ -47,4 +47,7 @@ struct TiffShape {
 };
 TiffShape readTiffShape(const std::filesystem::path& path);
 
+// A .tif or .tiff name, in any case: what every reader that takes TIFF among other formats tests.
+bool hasTiffExtension(const std::filesystem::path& path);
+
 }  // namespace fm::io

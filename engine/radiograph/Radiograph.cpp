@@ -52,7 +52,7 @@ RadiographFile readTiffRadiograph(const std::filesystem::path& path, int page) {
 
 RadiographFile readRadiograph(const std::filesystem::path& path, int page) {
     const std::string ext = lowerExtension(path);
-    if (ext == ".tif" || ext == ".tiff") return readTiffRadiograph(path, page);
+    if (io::hasTiffExtension(path)) return readTiffRadiograph(path, page);
     if (ext == ".png") return fromGrey(io::readPng(path), "PNG");
     if (ext == ".jpg" || ext == ".jpeg") return fromGrey(io::readJpeg(path), "JPEG");
     if (ext == ".bmp") return fromGrey(io::readBmp(path), "BMP");

@@ -8,7 +8,6 @@
 #include "core/Parallel.h"
 #include "drr/Drr.h"
 #include "io/ByteSource.h"
-#include "io/HeaderText.h"
 #include "io/TiffReader.h"
 #include "io/TiffVolume.h"
 #include "meshdrr/MeshDrr.h"
@@ -41,11 +40,6 @@ void flipVolume(Volume& v, const glm::ivec3& flip) {
     v.values = std::move(out.values);
 }
 
-bool isTiff(const fs::path& file) {
-    const std::string ext = io::toLower(file.extension().string());
-    return ext == ".tif" || ext == ".tiff";
-}
-
 // A folder of frames, a multi-page TIFF, or one image (a one-frame sequence: a single-page TIFF,
 // a PNG or JPEG).
 ImageSequence openSequence(const fs::path& frames) {
@@ -53,7 +47,7 @@ ImageSequence openSequence(const fs::path& frames) {
     if (fs::is_directory(frames, ec)) return listImageFolder(frames);
     ImageSequence s;
     s.source = frames;
-    if (isTiff(frames) && io::readTiffShape(frames).pages > 1) {
+    if (io::hasTiffExtension(frames) && io::readTiffShape(frames).pages > 1) {
         s.multiPage = true;
         s.pageCount = io::readTiffShape(frames).pages;
     } else {
@@ -65,7 +59,7 @@ ImageSequence openSequence(const fs::path& frames) {
 // The size of a sequence's first frame, read from its header where it can be.
 glm::ivec2 firstFrameSize(const ImageSequence& seq) {
     const fs::path file = seq.multiPage ? seq.source : seq.frames.at(0);
-    if (isTiff(file)) {
+    if (io::hasTiffExtension(file)) {
         const io::TiffShape shape = io::readTiffShape(file);
         return {shape.width, shape.height};
     }

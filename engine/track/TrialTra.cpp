@@ -13,11 +13,11 @@ std::size_t traObjectOfBone(const TraFile& tra, const TrialScene& trial, const s
                             const std::filesystem::path& path) {
     if (tra.objects == 1) return 0;
     const auto& bones = trial.trial.bones;
+    if (tra.objects == static_cast<int>(bones.size()))
+        for (std::size_t b = 0; b < bones.size(); ++b)
+            if (bones[b].name == bone) return b;
     std::string names;
-    for (std::size_t b = 0; b < bones.size(); ++b) {
-        if (tra.objects == static_cast<int>(bones.size()) && bones[b].name == bone) return b;
-        names += (names.empty() ? "" : ", ") + bones[b].name;
-    }
+    for (const TrialBone& b : bones) names += (names.empty() ? "" : ", ") + b.name;
     throw Error(io::quoted(path) + ": holds " + std::to_string(tra.objects) +
                 " objects; a .tra of trial " + trial.trial.name + " holds one bone, or all its " +
                 std::to_string(bones.size()) + " bones in its order (" + names + ")");

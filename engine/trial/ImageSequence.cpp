@@ -6,7 +6,7 @@
 
 #include "core/Error.h"
 #include "io/ByteSource.h"
-#include "io/HeaderText.h"
+#include "io/TiffReader.h"
 
 namespace fm {
 
@@ -27,8 +27,7 @@ ImageSequence listImageFolder(const fs::path& folder) {
     ImageSequence seq;
     seq.source = folder;
     for (const auto& entry : fs::directory_iterator(folder, ec)) {
-        const std::string ext = io::toLower(entry.path().extension().string());
-        if ((ext == ".tif" || ext == ".tiff") && entry.is_regular_file(ec))
+        if (io::hasTiffExtension(entry.path()) && entry.is_regular_file(ec))
             seq.frames.push_back(entry.path());
     }
     if (ec) throw Error("cannot list image folder " + io::quoted(folder) + ": " + ec.message());

@@ -10,16 +10,15 @@
 #include "io/ByteSource.h"
 #include "io/HeaderText.h"
 #include "io/StrictJson.h"
+#include "io/TiffReader.h"
 #include "trial/AutoscoperConfig.h"
 
 namespace fm {
 
 namespace fs = std::filesystem;
 
-bool TrialBone::tiffStack() const {
-    const std::string ext = io::toLower(volume.extension().string());
-    return ext == ".tif" || ext == ".tiff";
-}
+bool TrialBone::tiffStack() const { return io::hasTiffExtension(volume); }
+
 using Json = nlohmann::json;
 
 namespace {

@@ -9,6 +9,7 @@
 #include "AppFixture.h"
 #include "common/TestData.h"
 #include "state/RecentFiles.h"
+#include "workspace/WorkspaceTestData.h"
 #include "ui/AppShell.h"
 #include "ui/UiScript.h"
 
@@ -18,12 +19,8 @@ namespace {
 namespace fs = std::filesystem;
 
 TEST(AppShell, TheGameOpensATrialAndTheWorkspaceARadiographAndACt) {
-    FM_REQUIRE_SHARED_DATA("autoscoper-bvr");
+    FM_REQUIRE_SHIPPED_TRIAL_DATA("autoscoper-bvr");
     FM_REQUIRE_SHARED_DATA("jtml-kneel-tka-fluoro");
-    if (!sharedDataBesideRepo()) {
-        if (underCI()) FAIL() << "under CI the shared data must be ../shared/data beside the repository";
-        GTEST_SKIP() << "FM_DATA_DIR is not ../shared/data beside the repository";
-    }
     const fs::path recentFile = scratchDir("app-shell") / "config" / "recent.json";
     fs::remove(recentFile);
     auto backend = app::createOsmesaBackend({1280, 800});
@@ -61,7 +58,7 @@ TEST(AppShell, TheGameOpensATrialAndTheWorkspaceARadiographAndACt) {
     script.idle(2);
 
     // 3. From the workspace: one radiograph with its camera, model and start.
-    const fs::path d = sharedDataDir() / "jtml-kneel-tka-fluoro";
+    const fs::path d = jtmlDir();
     app::OpenPanel& panel = shell.workspace()->state().open;
     panel.shown = true;
     panel.reference = (d / "AT_K1_V1_0160.tif").string();

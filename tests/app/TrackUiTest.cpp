@@ -322,7 +322,6 @@ bool samePoses(const std::vector<std::vector<std::optional<RigidTransform>>>& a,
 // were; the Solve of a bone without masks is unchecked, never shown as confirmed; the Track
 // line belongs to the object it tracked.
 TEST_F(TrackUi, UndoTakesBackASolveATrackRunAndANudgeOneStepEach) {
-    const int ulna = object("ulna");
     script->clickWidget("select:object-ulna");
     script->idle(1);
     const auto atStart = app->state().poses;
@@ -373,7 +372,6 @@ TEST_F(TrackUi, UndoTakesBackASolveATrackRunAndANudgeOneStepEach) {
     script->idle(1);
     EXPECT_TRUE(samePoses(app->state().poses, atStart)) << app->state().undoMessage;
     EXPECT_EQ(app->state().undo.steps.size(), steps);
-    EXPECT_TRUE(poseAt(0, ulna).has_value());
 }
 
 TEST_F(TrackUi, ABonePutBackByHandAndSolvedEndsAtItsKeyframe) {

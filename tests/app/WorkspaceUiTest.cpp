@@ -9,12 +9,13 @@
 #include "WorkspaceFixture.h"
 #include "common/TestData.h"
 #include "core/Error.h"
+#include "platform/RenderBackend.h"
 #include "pose/AutoscoperTra.h"
 #include "scene/ObjectPoseParameterization.h"
 #include "track/TrialTra.h"
-#include "platform/RenderBackend.h"
 #include "ui/UiScript.h"
 #include "workspace/WorkspaceApp.h"
+#include "workspace/WorkspaceTestData.h"
 #include "xray/ObjectRegistration.h"
 #include "xray/PoseSpec.h"
 
@@ -167,8 +168,8 @@ TEST_F(WorkspaceUi, EnlargeShowsTheCameraPaneOverTheWholeWindow) {
 // says so; the invert toggle prepares it as --invert does, and the hint goes.
 TEST(WorkspaceRaw, ARawRadiographIsNamedAndInvertFixesIt) {
     FM_REQUIRE_SHARED_DATA("jtml-kneel-tka-fluoro");
-    const fs::path d = sharedDataDir() / "jtml-kneel-tka-fluoro";
-    app::WorkspaceSource source;
+    const fs::path d = jtmlDir();
+    app::WorkspaceSource source;  // as jtmlRadiographSource() but raw: no --invert, no masks
     source.reference = d / "AT_K1_V1_0160.tif";
     source.camera = d / "calibration.txt";
     source.models = {d / "KR_right_7_fem.stl"};
@@ -197,11 +198,7 @@ TEST(WorkspaceRaw, ARawRadiographIsNamedAndInvertFixesIt) {
 // fit) is read back as every command that takes a trial's .tra reads it: the trial's bone count
 // decides the form, and each bone is its own object (the tibia is not drawn at the femur's pose).
 TEST(WorkspaceSave, ATrialsSaveOfSeveralBonesReadsBackBoneByBone) {
-    FM_REQUIRE_SHARED_DATA("autoscoper-bvr");
-    if (!sharedDataBesideRepo()) {
-        if (underCI()) FAIL() << "under CI the shared data must be ../shared/data beside the repository";
-        GTEST_SKIP() << "FM_DATA_DIR is not ../shared/data beside the repository";
-    }
+    FM_REQUIRE_SHIPPED_TRIAL_DATA("autoscoper-bvr");
     app::WorkspaceSource source;
     source.trial = repoDir() / "data/trials/wrist.json";
     const auto model = app::WorkspaceModel::open(source, 2);
