@@ -11,8 +11,8 @@
 
 #include "bones/LabelMap.h"
 #include "core/Error.h"
+#include "core/StrictJson.h"
 #include "io/ByteSource.h"
-#include "io/StrictJson.h"
 
 namespace fm {
 namespace {
@@ -57,7 +57,7 @@ void addEntry(LabelTable& table, const std::string& name, long long label,
 
 LabelTable parseJson(const std::string& text, const std::string& what) {
     // Strict: {"femur_left": 1, "femur_left": 2} is refused, not read as its last entry.
-    const nlohmann::json j = io::parseStrictJson(text, what);
+    const nlohmann::json j = parseStrictJson(text, what);
     LabelTable table;
     auto number = [&](const nlohmann::json& v, const std::string& where) -> long long {
         if (!v.is_number_integer())

@@ -12,7 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/Error.h"
-#include "io/StrictJson.h"
+#include "core/StrictJson.h"
 
 namespace fm::json_detail {
 
@@ -46,9 +46,9 @@ class StrictJsonReader {
     StrictJsonReader(std::string what, std::string format)
         : what_(std::move(what)), format_(std::move(format)) {}
 
-    // Parses the whole text (io::parseStrictJson: syntax errors, numbers beyond the double
+    // Parses the whole text (core/StrictJson.h: syntax errors, numbers beyond the double
     // range and duplicate keys are fm::Error naming the file).
-    Json parse(const std::string& text) const { return io::parseStrictJson(text, what_); }
+    Json parse(const std::string& text) const { return parseStrictJson(text, what_); }
 
     [[noreturn]] void fail(const std::string& field, const std::string& why) const {
         throw Error(what_ + ": " + (field.empty() ? "" : "\"" + field + "\" ") + why);

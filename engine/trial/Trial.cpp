@@ -6,10 +6,10 @@
 #include <nlohmann/json.hpp>
 
 #include "core/Error.h"
+#include "core/StrictJson.h"
 #include "io/AtomicFile.h"
 #include "io/ByteSource.h"
 #include "io/HeaderText.h"
-#include "io/StrictJson.h"
 #include "io/TiffReader.h"
 #include "trial/AutoscoperConfig.h"
 
@@ -83,7 +83,7 @@ Trial readTrialJson(const fs::path& path) {
     const std::uintmax_t size = io::fileSize(path);
     if (size > kMaxTrialBytes) throw Error(io::quoted(path) + ": too large for a trial file");
     const io::Bytes bytes = io::readFileRange(path, 0, static_cast<std::size_t>(size));
-    const Json root = io::parseStrictJson(std::string(bytes.begin(), bytes.end()), io::quoted(path));
+    const Json root = parseStrictJson(std::string(bytes.begin(), bytes.end()), io::quoted(path));
     const Reader r{io::quoted(path)};
     const fs::path base = path.parent_path();
     Trial t;

@@ -1,11 +1,11 @@
-#include "io/StrictJson.h"
+#include "core/StrictJson.h"
 
 #include <set>
 #include <vector>
 
 #include "core/Error.h"
 
-namespace fm::io {
+namespace fm {
 
 nlohmann::json parseStrictJson(const std::string& text, const std::string& what) {
     using Json = nlohmann::json;
@@ -37,4 +37,4 @@ nlohmann::json parseStrictJson(const std::string& text, const std::string& what)
     return root;
 }
 
-}  // namespace fm::io
+}  // namespace fm

@@ -5,10 +5,10 @@
 
 #include <nlohmann/json.hpp>
 
-namespace fm::io {
+namespace fm {
 
 // Parses `text`; throws fm::Error "<what>: not valid JSON: ..." on a syntax error and
 // "<what>: duplicate key "k"" when an object repeats a key (at any depth).
 nlohmann::json parseStrictJson(const std::string& text, const std::string& what);
 
-}  // namespace fm::io
+}  // namespace fm
