@@ -16,7 +16,7 @@
 #include "core/Error.h"
 #include "mesh/MarchingCubes.h"
 #include "mesh/MeshCheck.h"
-#include "mesh/MeshWriter.h"
+#include "model/MeshWriter.h"
 #include "volume/VolumeSource.h"
 
 namespace {

@@ -28,7 +28,7 @@
 #include "io/AtomicFile.h"
 #include "io/PngWriter.h"
 #include "io/VolumeWriter.h"
-#include "mesh/MeshWriter.h"
+#include "model/MeshWriter.h"
 
 namespace fs = std::filesystem;
 using fm::test::Bytes;

@@ -15,7 +15,7 @@
 #include "io/PngWriter.h"
 #include "io/ReadVolume.h"
 #include "io/VolumeWriter.h"
-#include "mesh/MeshWriter.h"
+#include "model/MeshWriter.h"
 
 namespace {
 

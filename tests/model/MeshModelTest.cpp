@@ -6,8 +6,8 @@
 #include "common/TestData.h"
 #include "common/TestMeshes.h"
 #include "core/Error.h"
-#include "mesh/MeshWriter.h"
 #include "model/MeshModel.h"
+#include "model/MeshWriter.h"
 
 namespace {
 

@@ -11,8 +11,8 @@
 #include "common/TestData.h"
 #include "common/TestMeshes.h"
 #include "core/Error.h"
-#include "mesh/MeshWriter.h"
 #include "model/MeshFile.h"
+#include "model/MeshWriter.h"
 #include "model/WeldVertices.h"
 
 namespace {

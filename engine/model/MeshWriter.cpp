@@ -1,4 +1,4 @@
-#include "mesh/MeshWriter.h"
+#include "model/MeshWriter.h"
 
 #include <algorithm>
 #include <bit>

@@ -11,7 +11,7 @@
 
 #include "common/TestData.h"
 #include "core/Error.h"
-#include "mesh/MeshWriter.h"
+#include "model/MeshWriter.h"
 
 namespace {
 
