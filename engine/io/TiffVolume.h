@@ -2,7 +2,7 @@
 // A volume from a multi-page TIFF stack (Autoscoper's bone crops: one page per CT slice, no
 // spacing in the file). The voxel size must be given. Frame: voxel (i, j, k) = (column, row,
 // page) is placed in the LPS world with identity direction and origin 0 (its centre at
-// (sx i, sy j, sz k) mm) unless the caller moves it; volume/AutoscoperVolumeFrame.h converts to
+// (sx i, sy j, sz k) mm) unless the caller moves it; pose/AutoscoperVolumeFrame.h converts to
 // Autoscoper's corner frame.
 #include <filesystem>
 

@@ -4,7 +4,7 @@
 //   [R t; 0 0 0 1] (mm), or 6 numbers x, y, z, yaw, pitch, roll (mm, degrees) with
 //   R = Rz(yaw) Ry(pitch) Rx(roll); objects follow each other on the line; comma or white space
 //   separated; NaN (all numbers of an object) for a frame that object was not tracked in.
-// A pose is worldFromVolume: from Autoscoper's corner frame of the volume (volume/AutoscoperVolumeFrame.h)
+// A pose is worldFromVolume: from Autoscoper's corner frame of the volume (pose/AutoscoperVolumeFrame.h)
 // to the calibration's world (the MayaCam cube frame). Only mm, degrees and row order are read:
 // Autoscoper's cm / radian / column-order exports are not recognisable from the numbers (a
 // column-order matrix is refused by its last row).

@@ -1,4 +1,4 @@
-#include "volume/AutoscoperVolumeFrame.h"
+#include "pose/AutoscoperVolumeFrame.h"
 
 namespace fm {
 
