@@ -5,7 +5,7 @@
 #include "drr/Drr.h"
 #include "scene/VolumeScene.h"
 #include "search/Registration.h"
-#include "volume/VolumeSource.h"
+#include "source/VolumeSource.h"
 
 namespace {
 

@@ -9,11 +9,11 @@
 #include "cli/WorkspaceOptions.h"
 #include "core/Error.h"
 #include "platform/RenderBackend.h"
+#include "source/VolumeSource.h"
 #include "state/RecentFiles.h"
 #include "ui/App.h"
 #include "ui/AppShell.h"
 #include "ui/HeadlessScreenshot.h"
-#include "volume/VolumeSource.h"
 #include "workspace/WorkspaceApp.h"
 #include "workspace/WorkspaceHeadless.h"
 

@@ -9,10 +9,10 @@
 #include <CLI/CLI.hpp>
 #include <glm/glm.hpp>
 
-#include "bones/LabelSource.h"
+#include "bones/LabelTable.h"
 #include "drr/Drr.h"
 #include "scene/Scene.h"
-#include "bones/LabelTable.h"
+#include "source/LabelSource.h"
 #include "volume/Volume.h"
 
 namespace fm::cli {

@@ -8,7 +8,7 @@
 #include "cli/CommandRegistry.h"
 #include "cli/VolumeOption.h"
 #include "io/VolumeWriter.h"
-#include "volume/VolumeSource.h"
+#include "source/VolumeSource.h"
 
 namespace {
 

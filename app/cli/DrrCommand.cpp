@@ -19,17 +19,17 @@
 #include "cli/CommandRegistry.h"
 #include "cli/SceneOptions.h"
 #include "cli/ValueChecks.h"
+#include "cli/ValuesChoice.h"
 #include "cli/VolumeOption.h"
 #include "core/Error.h"
 #include "core/Parallel.h"
 #include "distributed/JobRunner.h"
 #include "distributed/ProcessTransport.h"
 #include "drr/Drr.h"
-#include "cli/ValuesChoice.h"
 #include "drr/DrrBatch.h"
 #include "io/ImageFileWriter.h"
 #include "io/OutputPath.h"
-#include "volume/VolumeSource.h"
+#include "source/VolumeSource.h"
 
 namespace {
 

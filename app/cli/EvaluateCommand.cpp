@@ -27,7 +27,7 @@
 #include "io/AtomicFile.h"
 #include "scene/VolumeScene.h"
 #include "search/Evaluation.h"
-#include "volume/VolumeSource.h"
+#include "source/VolumeSource.h"
 
 namespace {
 

@@ -16,7 +16,7 @@
 #include "core/Error.h"
 #include "geometry/ProjectionGeometry.h"
 #include "io/AtomicFile.h"
-#include "volume/VolumeSource.h"
+#include "source/VolumeSource.h"
 
 namespace {
 

@@ -8,7 +8,7 @@
 #include "cli/BoneOptions.h"
 #include "cli/CommandRegistry.h"
 #include "cli/VolumeOption.h"
-#include "volume/VolumeSource.h"
+#include "source/VolumeSource.h"
 #include "volume/VolumeStats.h"
 
 namespace {

@@ -17,7 +17,7 @@
 #include "mesh/MarchingCubes.h"
 #include "mesh/MeshCheck.h"
 #include "model/MeshWriter.h"
-#include "volume/VolumeSource.h"
+#include "source/VolumeSource.h"
 
 namespace {
 

@@ -31,7 +31,7 @@
 #include "scene/VolumeScene.h"
 #include "search/Registration.h"
 #include "search/RegistrationTargets.h"
-#include "volume/VolumeSource.h"
+#include "source/VolumeSource.h"
 
 namespace {
 

@@ -10,9 +10,9 @@
 #include "cli/WorkspaceOptions.h"
 #include "core/Error.h"
 #include "geometry/Pose.h"
+#include "source/VolumeSource.h"
 #include "ui/DragMeasurement.h"
 #include "ui/HeadlessScreenshot.h"
-#include "volume/VolumeSource.h"
 #include "workspace/WorkspaceHeadless.h"
 
 namespace {

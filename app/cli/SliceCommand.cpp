@@ -15,7 +15,7 @@
 #include "io/PngWriter.h"
 #include "io/VolumeWriter.h"
 #include "slice/SliceSampler.h"
-#include "volume/VolumeSource.h"
+#include "source/VolumeSource.h"
 
 namespace {
 

@@ -11,7 +11,7 @@
 #include "core/Parallel.h"
 #include "slice/SliceEvaluation.h"
 #include "slice/SlicePoseError.h"
-#include "volume/VolumeSource.h"
+#include "source/VolumeSource.h"
 
 namespace fm::cli {
 

@@ -4,7 +4,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "volume/VolumeSource.h"
+#include "source/VolumeSource.h"
 
 namespace fm::cli {
 

@@ -2,8 +2,8 @@
 
 #include "bones/ConnectedComponents.h"
 #include "bones/LabelMap.h"
-#include "bones/LabelSource.h"
 #include "core/Error.h"
+#include "source/LabelSource.h"
 
 namespace fm::app {
 namespace {

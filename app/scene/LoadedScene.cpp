@@ -9,11 +9,11 @@
 #include <cstdio>
 
 #include "core/Error.h"
-#include "slice/SlicePoseError.h"
 #include "match/PoseError.h"
 #include "mesh/MarchingCubes.h"
+#include "slice/SlicePoseError.h"
+#include "source/VolumeSource.h"
 #include "volume/ValueUnitGuess.h"
-#include "volume/VolumeSource.h"
 #include "volume/VolumeStats.h"
 
 namespace fm::app {

@@ -5,13 +5,13 @@
 
 #include "bones/BoneScene.h"
 #include "bones/BoneVolume.h"
-#include "bones/LabelSource.h"
 #include "bones/RegionGrow.h"
 #include "core/Error.h"
 #include "match/PoseError.h"
 #include "mesh/MarchingCubes.h"
 #include "phantom/ArticulatedKnee.h"
 #include "phantom/Phantoms.h"
+#include "source/LabelSource.h"
 
 namespace fm::app {
 namespace {

@@ -19,8 +19,8 @@
 #include "scene/MeshXrayModel.h"
 #include "scene/XrayModel.h"
 #include "similarity/AreaResample.h"
+#include "source/VolumeSource.h"
 #include "volume/ValueUnitGuess.h"
-#include "volume/VolumeSource.h"
 
 namespace fm {
 

@@ -4,8 +4,8 @@
 
 #include "mesh/MarchingCubes.h"
 #include "scene/DisplaySurface.h"
+#include "source/VolumeSource.h"
 #include "volume/BlockMean.h"
-#include "volume/VolumeSource.h"
 
 namespace fm::test {
 namespace {

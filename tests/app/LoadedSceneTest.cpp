@@ -6,7 +6,7 @@
 
 #include "common/TestData.h"
 #include "scene/LoadedScene.h"
-#include "volume/VolumeSource.h"
+#include "source/VolumeSource.h"
 
 namespace fm::test {
 namespace {

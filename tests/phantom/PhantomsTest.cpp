@@ -8,7 +8,7 @@
 #include "core/Error.h"
 #include "phantom/AnalyticObjects.h"
 #include "phantom/Phantoms.h"
-#include "volume/VolumeSource.h"
+#include "source/VolumeSource.h"
 
 namespace {
 

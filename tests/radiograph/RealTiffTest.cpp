@@ -13,7 +13,7 @@
 #include "io/TiffReader.h"
 #include "pose/JointTrackPoses.h"
 #include "radiograph/Radiograph.h"
-#include "volume/VolumeSource.h"
+#include "source/VolumeSource.h"
 
 namespace {
 

@@ -13,7 +13,7 @@
 #include "io/ReadVolume.h"
 #include "io/TiffReader.h"
 #include "radiograph/Radiograph.h"
-#include "volume/VolumeSource.h"
+#include "source/VolumeSource.h"
 
 #include <stb/stb_image_write.h>
 #include <tiffio.h>

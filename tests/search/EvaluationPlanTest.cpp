@@ -10,7 +10,7 @@
 #include "scene/VolumeScene.h"
 #include "search/Evaluation.h"
 #include "search/RegistrationTargets.h"
-#include "volume/VolumeSource.h"
+#include "source/VolumeSource.h"
 
 namespace fm {
 namespace {

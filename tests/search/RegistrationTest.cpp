@@ -6,14 +6,14 @@
 
 #include "core/Error.h"
 #include "drr/Drr.h"
-#include "match/PoseError.h"
-#include "search/Evaluation.h"
 #include "geometry/DetectorCrop.h"
+#include "match/PoseError.h"
 #include "scene/SceneParameterization.h"
 #include "scene/VolumeScene.h"
+#include "search/Evaluation.h"
 #include "search/Registration.h"
 #include "search/RegistrationTargets.h"
-#include "volume/VolumeSource.h"
+#include "source/VolumeSource.h"
 
 namespace fm {
 namespace {

@@ -8,7 +8,7 @@
 #include "scene/ObjectPoseParameterization.h"
 #include "scene/VolumeScene.h"
 #include "search/Registration.h"
-#include "volume/VolumeSource.h"
+#include "source/VolumeSource.h"
 
 namespace fm {
 namespace {

@@ -1,4 +1,4 @@
-#include "volume/VolumeSource.h"
+#include "source/VolumeSource.h"
 
 #include <algorithm>
 

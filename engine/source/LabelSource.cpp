@@ -1,4 +1,4 @@
-#include "bones/LabelSource.h"
+#include "source/LabelSource.h"
 
 #include <cmath>
 
