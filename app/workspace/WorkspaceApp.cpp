@@ -18,7 +18,7 @@
 #include "track/PoseOverlay.h"
 #include "workspace/RawImageHint.h"
 #include "workspace/ShownPose.h"
-#include "workspace/SolveCheck.h"
+#include "xray/AnswerCheck.h"
 #include "workspace/WorkspacePose.h"
 #include "xray/CameraPoseDifference.h"
 #include "xray/ObjectRegistration.h"
@@ -212,7 +212,7 @@ void WorkspaceApp::pollSolver() {
         w.iou = silhouetteIoU(silhouetteAt(*s.result), *m);
         w.startIou = silhouetteIoU(silhouetteAt(s.start), *m);
     }
-    const SolveCheck check = checkSolveAnswer(o, *s.result, model_->prepared(s.frame), model_->scene().cameras,
+    const AnswerCheck check = checkAnswer(o, *s.result, model_->prepared(s.frame), model_->scene().cameras,
                                               w.iou, model_->threads());
     w.check = check.check;
     w.checkText = check.text;

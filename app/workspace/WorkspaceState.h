@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "scene/RigidTransform.h"
+#include "xray/AnswerCheck.h"
 #include "state/AppState.h"
 #include "state/OpenRequest.h"
 #include "workspace/PoseHistory.h"
@@ -72,9 +73,10 @@ struct WorkspaceSolve {
     double inPlaneMm = 0.0, depthMm = 0.0, rotationDeg = 0.0;
     std::optional<double> iou, startIou;  // against the object's mask, when there is one
     std::string summary;                  // one line: how it ended
-    // How far the answer can be trusted (workspace/SolveCheck.h): only a checked answer is shown
+    // How far the answer can be trusted (xray/AnswerCheck.h): only a checked answer is shown
     // as good.
-    enum class Check { Confirmed, Unchecked, Doubtful, Lost } check = Check::Unchecked;
+    using Check = AnswerVerdict;
+    Check check = Check::Unchecked;
     std::string checkText;  // "checked: IoU 0.95 against the mask", "unchecked: no mask ..."
 };
 

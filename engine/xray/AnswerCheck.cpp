@@ -1,16 +1,25 @@
-#include "workspace/SolveCheck.h"
+#include "xray/AnswerCheck.h"
 
 #include <cstdio>
 
 #include "xray/ModelCoverage.h"
 
-namespace fm::app {
+namespace fm {
 
-SolveCheck checkSolveAnswer(const SceneObject& object, const RigidTransform& pose,
-                            const std::vector<RegistrationView>& views,
-                            const std::vector<ProjectionGeometry>& cameras, std::optional<double> iou,
-                            int threads) {
-    using Check = WorkspaceSolve::Check;
+const char* toString(AnswerVerdict verdict) {
+    switch (verdict) {
+        case AnswerVerdict::Confirmed: return "checked";
+        case AnswerVerdict::Doubtful: return "doubtful";
+        case AnswerVerdict::Lost: return "lost";
+        default: return "unchecked";
+    }
+}
+
+AnswerCheck checkAnswer(const SceneObject& object, const RigidTransform& pose,
+                        const std::vector<RegistrationView>& views,
+                        const std::vector<ProjectionGeometry>& cameras, std::optional<double> iou,
+                        int threads) {
+    using Check = AnswerVerdict;
     // 1. Blind: at the answer the model covers (almost) no valid pixel of any camera: nothing
     //    was matched. (One camera of a biplane trial may miss a bone; the tracker then uses the
     //    other.)
@@ -30,7 +39,7 @@ SolveCheck checkSolveAnswer(const SceneObject& object, const RigidTransform& pos
     // 2. The mask, where there is one: the silhouette must cover it.
     if (iou) {
         const Check check = *iou >= kConfirmedIoU ? Check::Confirmed : *iou >= kLostIoU ? Check::Doubtful : Check::Lost;
-        const char* word = check == Check::Confirmed ? "checked" : check == Check::Doubtful ? "doubtful" : "lost";
+        const char* word = toString(check);
         char text[160];
         std::snprintf(text, sizeof text, "%s: silhouette IoU %.3f against the mask (%s %.2f)", word, *iou,
                       check == Check::Confirmed ? "at least" : "below",
@@ -41,4 +50,4 @@ SolveCheck checkSolveAnswer(const SceneObject& object, const RigidTransform& pos
     return {Check::Unchecked, "unchecked: no mask to compare with; check the outline against the radiograph"};
 }
 
-}  // namespace fm::app
+}  // namespace fm

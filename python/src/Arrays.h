@@ -1,0 +1,45 @@
+#pragma once
+// Conversions between the engine's types and numpy arrays, one convention for the module
+// (docs/python.md):
+//   images   (rows, cols) float32, row 0 first: fm::Image's own layout, handed over without a
+//            copy (the array owns the engine's buffer)
+//   masks    (rows, cols) bool
+//   volumes  (z, y, x) = (k, j, i) float32, C order: fm::Volume's values as they lie (i fastest),
+//            so a volume's array is a view, never a copy
+//   vectors  3 numbers in the engine's (x, y, z) order: world points, spacing, origin
+//   poses    4x4 float64 [R t; 0 0 0 1], named aFromB like the engine (scene/RigidTransform.h)
+#include <array>
+#include <string>
+
+#include <glm/glm.hpp>
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+#include "core/Image.h"
+#include "scene/RigidTransform.h"
+#include "similarity/Mask.h"
+
+namespace fm::py {
+
+namespace pb = pybind11;
+
+// float32 (rows, cols) owning the image's pixels (moved, not copied).
+pb::array_t<float> imageToArray(Image&& image);
+// A 2-D array of numbers -> fm::Image (copied; float32). `what` names the argument in errors.
+Image arrayToImage(const pb::handle& array, const std::string& what);
+pb::array_t<bool> maskToArray(const Mask& mask);
+Mask arrayToMask(const pb::handle& array, const std::string& what);
+
+// 3 numbers (any sequence or array) -> glm vector; fm::Error naming `what` otherwise.
+glm::dvec3 toVec3(const pb::handle& value, const std::string& what);
+glm::ivec2 toSize(const pb::handle& value, const std::string& what);  // (width, height)
+pb::array_t<double> fromVec3(const glm::dvec3& v);
+// 3x3 numpy (row-major, m[row][col]) <-> glm (column-major).
+glm::dmat3 toMat3(const pb::handle& value, const std::string& what);
+pb::array_t<double> fromMat3(const glm::dmat3& m);
+
+// 4x4 pose array <-> RigidTransform (validated: a rotation, last row 0 0 0 1).
+RigidTransform toTransform(const pb::handle& value, const std::string& what);
+pb::array_t<double> fromTransform(const RigidTransform& t);
+
+}  // namespace fm::py

@@ -1,0 +1,195 @@
+// Pose files of the field and their parameterizations: Autoscoper .tra (16-number matrices or
+// xyzypr rows), JointTrack .jts (JT_EULER_312), as 4x4 numpy arrays with NaN for a frame that
+// holds no pose.
+#include <cmath>
+#include <limits>
+
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include "Arrays.h"
+#include "Bindings.h"
+#include "core/Error.h"
+#include "pose/AutoscoperTra.h"
+#include "pose/JointTrackPoses.h"
+
+namespace fm::py {
+
+namespace {
+
+using Doubles = pb::array_t<double, pb::array::c_style | pb::array::forcecast>;
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+std::array<double, 6> sixNumbers(const pb::handle& value, const std::string& what) {
+    Doubles a = Doubles::ensure(value);
+    if (!a || a.size() != 6) {
+        PyErr_Clear();
+        throw Error(what + ": expected 6 numbers");
+    }
+    std::array<double, 6> out{};
+    for (int i = 0; i < 6; ++i) {
+        out[i] = a.data()[i];
+        if (!std::isfinite(out[i])) throw Error(what + ": the numbers must be finite");
+    }
+    return out;
+}
+
+pb::array_t<double> sixArray(const double v[6]) {
+    pb::array_t<double> a(6);
+    std::copy(v, v + 6, a.mutable_data());
+    return a;
+}
+
+// (frames, objects, 4, 4) with NaN for untracked.
+pb::array_t<double> traArray(const TraFile& tra) {
+    const pb::ssize_t frames = static_cast<pb::ssize_t>(tra.frames.size()), objects = tra.objects;
+    pb::array_t<double> a(std::vector<pb::ssize_t>{frames, objects, 4, 4});
+    double* d = a.mutable_data();
+    for (pb::ssize_t f = 0; f < frames; ++f)
+        for (pb::ssize_t o = 0; o < objects; ++o) {
+            double* m = d + (f * objects + o) * 16;
+            const auto& pose = tra.frames[static_cast<std::size_t>(f)][static_cast<std::size_t>(o)];
+            if (!pose) {
+                std::fill(m, m + 16, kNaN);
+                continue;
+            }
+            const std::array<double, 16> r = pose->toRowMajor4x4();
+            std::copy(r.begin(), r.end(), m);
+        }
+    return a;
+}
+
+// (frames, 4, 4) or (frames, objects, 4, 4); a matrix of NaN = no pose in that frame.
+TraFile traFromArray(const pb::handle& value, const std::string& form, const std::string& what) {
+    Doubles a = Doubles::ensure(value);
+    if (!a || !((a.ndim() == 3 || a.ndim() == 4) && a.shape(a.ndim() - 1) == 4 && a.shape(a.ndim() - 2) == 4)) {
+        PyErr_Clear();
+        throw Error(what + ": expected poses as an (frames, 4, 4) or (frames, objects, 4, 4) array");
+    }
+    TraFile tra;
+    tra.form = parseTraForm(form, "form");
+    const pb::ssize_t frames = a.shape(0), objects = a.ndim() == 4 ? a.shape(1) : 1;
+    tra.objects = static_cast<int>(objects);
+    tra.frames.resize(static_cast<std::size_t>(frames));
+    for (pb::ssize_t f = 0; f < frames; ++f)
+        for (pb::ssize_t o = 0; o < objects; ++o) {
+            const double* m = a.data() + (f * objects + o) * 16;
+            bool allNaN = true, anyNaN = false;
+            for (int i = 0; i < 16; ++i) {
+                allNaN = allNaN && std::isnan(m[i]);
+                anyNaN = anyNaN || std::isnan(m[i]);
+            }
+            const std::string where = what + ": frame " + std::to_string(f) + ", object " + std::to_string(o);
+            if (allNaN) {
+                tra.frames[static_cast<std::size_t>(f)].push_back(std::nullopt);
+                continue;
+            }
+            if (anyNaN) throw Error(where + ": partly NaN (all 16 NaN = no pose in this frame)");
+            std::array<double, 16> r{};
+            std::copy(m, m + 16, r.begin());
+            tra.frames[static_cast<std::size_t>(f)].push_back(RigidTransform::fromRowMajor4x4(r, where));
+        }
+    return tra;
+}
+
+}  // namespace
+
+void bindPoses(pb::module_& m) {
+    m.def("read_tra",
+          [](const std::filesystem::path& path, const std::string& form, int objects) {
+              const TraForm f = form == "auto" ? TraForm::Auto : parseTraForm(form, "form");
+              return traArray(readTra(path, f, objects, "give form=\"matrix\" or form=\"xyzypr\""));
+          },
+          pb::arg("path"), pb::arg("form") = "auto", pb::arg("objects") = 0, R"doc(
+An Autoscoper .tra as a (frames, objects, 4, 4) array of worldFromVolume poses (mm), NaN where a
+frame holds no pose. form "auto" (decided by the count of numbers), "matrix" or "xyzypr";
+objects: how many objects a line holds when the count does not say (48 numbers).)doc");
+
+    m.def("write_tra",
+          [](const std::filesystem::path& path, const pb::handle& poses, const std::string& form) {
+              writeTra(path, traFromArray(poses, form, "poses"));
+          },
+          pb::arg("path"), pb::arg("poses"), pb::arg("form") = "matrix", R"doc(
+Writes an Autoscoper .tra (atomically) from (frames, 4, 4) or (frames, objects, 4, 4) poses; a
+pose of 16 NaN writes an untracked frame. form "matrix" (16 numbers) or "xyzypr".)doc");
+
+    m.def("xyzypr_to_matrix",
+          [](const pb::handle& v) {
+              const std::array<double, 6> a = sixNumbers(v, "xyzypr");
+              return fromTransform(transformFromXyzypr(a.data()));
+          },
+          pb::arg("xyzypr"), "Autoscoper's x, y, z (mm), yaw, pitch, roll (deg) -> 4x4: R = Rz(yaw) Ry(pitch) Rx(roll).");
+    m.def("matrix_to_xyzypr",
+          [](const pb::handle& pose) {
+              double v[6];
+              xyzyprFromTransform(toTransform(pose, "pose"), v);
+              return sixArray(v);
+          },
+          pb::arg("pose"), "4x4 -> Autoscoper's x, y, z, yaw, pitch, roll.");
+
+    m.def("jts_to_matrix",
+          [](const pb::handle& row) {
+              const std::array<double, 6> a = sixNumbers(row, "jts row");
+              JointTrackPose p;
+              p.x = a[0], p.y = a[1], p.z = a[2], p.zRot = a[3], p.xRot = a[4], p.yRot = a[5];
+              return fromTransform(p.cameraFromModel());
+          },
+          pb::arg("row"), "A .jts row x, y, z (mm), z_rot, x_rot, y_rot (deg) -> cameraFromModel 4x4.");
+    m.def("matrix_to_jts",
+          [](const pb::handle& pose) {
+              const JointTrackPose p = JointTrackPose::fromCameraFromModel(toTransform(pose, "pose"));
+              const double v[6] = {p.x, p.y, p.z, p.zRot, p.xRot, p.yRot};
+              return sixArray(v);
+          },
+          pb::arg("pose"), "cameraFromModel 4x4 -> the .jts row (JT_EULER_312, x_rot in [-90, 90]).");
+
+    m.def("read_jts",
+          [](const std::filesystem::path& path) {
+              const JointTrackPoses poses = readJointTrackPoses(path);
+              const pb::ssize_t n = static_cast<pb::ssize_t>(poses.frames.size());
+              pb::array_t<double> a(std::vector<pb::ssize_t>{n, 4, 4});
+              double* d = a.mutable_data();
+              for (pb::ssize_t f = 0; f < n; ++f) {
+                  const JointTrackPose& p = poses.frames[static_cast<std::size_t>(f)];
+                  if (!p.optimized) {
+                      std::fill(d + 16 * f, d + 16 * f + 16, kNaN);
+                      continue;
+                  }
+                  const std::array<double, 16> r = p.cameraFromModel().toRowMajor4x4();
+                  std::copy(r.begin(), r.end(), d + 16 * f);
+              }
+              return a;
+          },
+          pb::arg("path"), R"doc(
+A JointTrack .jts (JT_EULER_312) as an (images, 4, 4) array of cameraFromModel poses (the
+JointTrack camera frame: source at the origin, looking along -z); NaN for NOT_OPTIMIZED rows.)doc");
+
+    m.def("write_jts",
+          [](const std::filesystem::path& path, const pb::handle& poses) {
+              Doubles a = Doubles::ensure(poses);
+              if (!a || a.ndim() != 3 || a.shape(1) != 4 || a.shape(2) != 4) {
+                  PyErr_Clear();
+                  throw Error("poses: expected an (images, 4, 4) array");
+              }
+              JointTrackPoses out;
+              for (pb::ssize_t f = 0; f < a.shape(0); ++f) {
+                  const double* m = a.data() + 16 * f;
+                  if (std::isnan(m[0])) {
+                      JointTrackPose none;
+                      none.optimized = false;
+                      out.frames.push_back(none);
+                      continue;
+                  }
+                  std::array<double, 16> r{};
+                  std::copy(m, m + 16, r.begin());
+                  out.frames.push_back(JointTrackPose::fromCameraFromModel(
+                      RigidTransform::fromRowMajor4x4(r, "poses: image " + std::to_string(f))));
+              }
+              writeJointTrackPoses(path, out);
+          },
+          pb::arg("path"), pb::arg("poses"), R"doc(
+Writes a .jts (JT_EULER_312, as JointTrack and JTML read it) from (images, 4, 4) cameraFromModel
+poses; a pose of NaN writes a NOT_OPTIMIZED row.)doc");
+}
+
+}  // namespace fm::py

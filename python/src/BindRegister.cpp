@@ -1,0 +1,311 @@
+// `register` from Python: implant or bone meshes against a real radiograph with its calibration,
+// the same search as `fluoromatch register --reference IMG --camera CALIB --model M --start S`
+// (xray/ObjectRegistration.h), with the CLI's options as keyword arguments and the same pose for
+// the same seed. Every result says how sure it is (xray/AnswerCheck.h).
+#include <chrono>
+#include <filesystem>
+#include <optional>
+
+#include <pybind11/stl.h>
+
+#include "Arrays.h"
+#include "Bindings.h"
+#include "Progress.h"
+#include "PyMesh.h"
+#include "camera/CameraFile.h"
+#include "core/Error.h"
+#include "core/Parallel.h"
+#include "radiograph/LabelMask.h"
+#include "radiograph/Radiograph.h"
+#include "radiograph/RadiographPreparation.h"
+#include "scene/MeshXrayModel.h"
+#include "scene/ObjectPoseParameterization.h"
+#include "search/Optimizer.h"
+#include "xray/AnswerCheck.h"
+#include "xray/CameraPoseDifference.h"
+#include "xray/ModelCoverage.h"
+#include "xray/ObjectRegistration.h"
+#include "xray/PoseSpec.h"
+
+namespace fm::py {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+bool isPath(const pb::handle& h) {
+    return pb::isinstance<pb::str>(h) || pb::isinstance(h, pb::module_::import("pathlib").attr("PurePath"));
+}
+
+std::vector<pb::object> listOf(const pb::object& value) {
+    std::vector<pb::object> out;
+    if (isPath(value) || pb::isinstance<PyMesh>(value) || pb::isinstance<pb::array>(value)) {
+        out.push_back(value);
+        return out;
+    }
+    for (const pb::handle& h : value) out.push_back(pb::reinterpret_borrow<pb::object>(h));
+    return out;
+}
+
+// The search settings of `fluoromatch register --model` with the options' values (cli/SearchCli's
+// registrationSettings on realXraySettings): the same numbers for the same arguments.
+RegistrationSettings searchSettings(const std::string& method, const std::string& similarity,
+                                    std::uint64_t seed, int budget, int polishBudget,
+                                    const std::optional<std::vector<int>>& levels,
+                                    const std::optional<std::vector<double>>& radius, int threads,
+                                    const std::string& polish) {
+    RegistrationSettings s = realXraySettings();
+    s.method = parseSearchMethod(method);
+    if (s.method == SearchMethod::NelderMead)
+        throw Error("method: nm is the local polish, not a global search (use mc, pso, bees or cmaes)");
+    s.similarity = parseSimilarityMeasure(similarity);
+    s.polishMethod = parseSearchMethod(polish);
+    s.seed = seed;
+    if (budget < 0) throw Error("budget must be positive");
+    if (budget > 0) s.globalEvaluations = budget;
+    if (polishBudget >= 0) s.polishEvaluations = s.finestPolishEvaluations = polishBudget;
+    if (threads < 0) throw Error("threads must be 0 (all cores) or more");
+    s.threads = threads;
+    if (levels) {
+        if (levels->empty()) throw Error("levels: give at least one factor");
+        for (int f : *levels)
+            if (f < 1 || f > 64) throw Error("levels: factors must be whole numbers 1..64");
+        s.levelFactors = *levels;
+    }
+    if (radius) {
+        if (radius->size() != 1 && radius->size() != 6)
+            throw Error("radius: give one number or six (u, v, depth, az, el, rot)");
+        for (int i = 0; i < 6; ++i) {
+            s.searchRadius[i] = radius->size() == 1 ? (*radius)[0] : (*radius)[i];
+            if (!(s.searchRadius[i] > 0.0)) throw Error("radius: values must be positive");
+        }
+    }
+    return s;
+}
+
+pb::dict progressDict(const RegistrationProgress& p, const std::string& model) {
+    pb::dict d;
+    d["model"] = model;
+    d["level"] = p.level;
+    d["levels"] = p.levelCount;
+    d["factor"] = p.factor;
+    d["stage"] = p.stage;
+    d["evaluations"] = p.evaluations;
+    d["budget"] = p.evaluationBudget;
+    d["best_cost"] = p.bestCost;
+    d["seconds"] = p.seconds;
+    return d;
+}
+
+}  // namespace
+
+void bindRegister(pb::module_& m) {
+    m.def(
+        "register",
+        [](const pb::object& reference, const pb::object& camera, const pb::object& models,
+           const pb::object& start, int frame, const pb::object& out, const pb::object& mask, double mu,
+           bool invert, bool log, std::optional<double> i0, std::optional<double> excludeBelow, int erode,
+           std::optional<std::array<int, 4>> roi, int page, int bits, const std::string& traForm,
+           const std::string& method, const std::string& similarity, std::uint64_t seed, int budget,
+           int polishBudget, std::optional<std::vector<int>> levels, std::optional<std::vector<double>> radius,
+           int threads, const std::string& polish, const pb::object& progress) {
+            // 1. Everything that can be refused, before the search.
+            const std::vector<pb::object> modelList = listOf(models);
+            const std::size_t n = modelList.size();
+            if (n == 0) throw Error("models: give at least one model");
+            const std::vector<pb::object> starts = listOf(start);
+            const bool oneTra = starts.size() == 1 && n > 1 && isPath(starts[0]) &&
+                                fs::path(starts[0].cast<std::string>()).extension() == ".tra";
+            if (starts.size() != n && !oneTra)
+                throw Error("start: give one per model (" + std::to_string(n) + ") or a single .tra for all");
+            if (!(mu >= 0.0) || mu > 1e3) throw Error("mu must be 0 (the default) or a positive attenuation in 1/mm");
+            std::vector<std::string> outs;
+            if (!out.is_none())
+                for (const pb::object& o : listOf(out)) outs.push_back(pb::str(o).cast<std::string>());
+            const bool oneOutTra = outs.size() == 1 && n > 1 && fs::path(outs[0]).extension() == ".tra";
+            if (!outs.empty() && outs.size() != n && !oneOutTra)
+                throw Error("out: give one per model (" + std::to_string(n) + ") or a single .tra for all");
+            for (const std::string& o : outs) checkPoseOutput(o, frame);
+            const TraForm form = traForm == "auto" ? TraForm::Auto : parseTraForm(traForm, "tra_form");
+            const RegistrationSettings settings =
+                searchSettings(method, similarity, seed, budget, polishBudget, levels, radius, threads, polish);
+
+            // 2. The radiograph, its calibration, its preparation (`radiograph` options).
+            std::string referenceName = "reference image";
+            Image image;
+            if (isPath(reference)) {
+                referenceName = pb::str(reference).cast<std::string>();
+                RadiographFile file = readRadiograph(referenceName, page);
+                image = std::move(file.image);
+                bits = file.bitsPerSample;
+            } else {
+                image = arrayToImage(reference, "reference");
+            }
+            const glm::ivec2 size(image.width, image.height);
+            PinholeCamera cam;
+            std::string cameraName = "camera";
+            if (pb::isinstance<PinholeCamera>(camera)) {
+                cam = camera.cast<PinholeCamera>();
+            } else {
+                cameraName = pb::str(camera).cast<std::string>();
+                cam = readCameraFile(cameraName, size).camera;
+            }
+            checkImageSize(cam, cameraName, size.x, size.y, referenceName);
+            RadiographPreparation prep;
+            prep.invert = invert;
+            prep.logTransform = log;
+            if (i0) {
+                if (!log) throw Error("i0 applies to log=True only (the I0 of -ln(I / I0))");
+                prep.i0 = *i0;
+            }
+            prep.fullScale = radiographFullScale(bits);
+            prep.excludeBelow = excludeBelow;
+            prep.erodePixels = erode;
+            if (roi) prep.roi = PixelRect{(*roi)[0], (*roi)[1], (*roi)[2], (*roi)[3]};
+            const PreparedRadiograph prepared = prepareRadiograph(image, prep);
+            if (prepared.valid.count() == 0)
+                throw Error(referenceName + ": no valid pixel is left after the preparation options");
+            std::vector<std::optional<Mask>> labels(n);
+            if (!mask.is_none()) {
+                const std::vector<pb::object> masks = listOf(mask);
+                if (masks.size() != n) throw Error("mask: give one per model (" + std::to_string(n) + ")");
+                for (std::size_t k = 0; k < n; ++k)
+                    labels[k] = isPath(masks[k]) ? readLabelMask(pb::str(masks[k]).cast<std::string>(), size)
+                                                 : arrayToMask(masks[k], "mask");
+            }
+
+            // 3. The scene: one object per model at its start pose, the camera.
+            Scene scene;
+            scene.cameras.push_back(toProjectionGeometry(cam, cameraName));
+            std::vector<RigidTransform> startPoses;
+            std::vector<std::string> names;
+            for (std::size_t k = 0; k < n; ++k) {
+                PyMesh loaded;
+                const PyMesh* mesh = nullptr;
+                std::string file = "model";
+                if (pb::isinstance<PyMesh>(modelList[k])) {
+                    mesh = &modelList[k].cast<const PyMesh&>();
+                    file = mesh->source;
+                } else {
+                    file = pb::str(modelList[k]).cast<std::string>();
+                    loaded.model = std::make_shared<MeshModel>(loadMeshModel(file));
+                    loaded.mesh = loaded.model->mesh;
+                    loaded.source = file;
+                    mesh = &loaded;
+                }
+                const std::string name = uniqueObjectName(scene, fs::path(file).stem().string());
+                auto xray = std::make_shared<MeshXrayModel>(mesh->tracedPtr(), mu > 0.0 ? mu : kMuCobaltChromePerMm, name);
+                const pb::object& s = oneTra ? starts[0] : starts[k];
+                startPoses.push_back(isPath(s) ? readPoseSpec(pb::str(s).cast<std::string>(), frame, oneTra ? k : 0,
+                                                              oneTra ? static_cast<int>(n) : 0, form)
+                                               : toTransform(s, "start"));
+                scene.objects.push_back({name, xray, startPoses.back(), true});
+                names.push_back(name);
+            }
+            for (std::size_t k = 0; k < n; ++k) {
+                const std::string blind = blindness(modelCoverage(scene.objects[k], scene.cameras[0], prepared.valid, threads));
+                if (!blind.empty()) throw Error(names[k] + " at its start " + formatPoseSpec(startPoses[k]) + " " + blind);
+            }
+
+            // 4. The searches: side by side, one per core, as the CLI runs them.
+            ProgressRelay relay(progress);
+            const RegistrationView view{0, prepared.image, prepared.valid};
+            const int cores = settings.threads > 0 ? settings.threads : defaultThreadCount();
+            const bool sideBySide = n > 1 && cores > 1;
+            std::vector<ObjectRegistrationResult> results(n);
+            double wallSeconds = 0.0;
+            {
+                pb::gil_scoped_release unlock;
+                const auto started = std::chrono::steady_clock::now();
+                const auto run = [&](std::size_t k, const RegistrationSettings& s) {
+                    results[k] = registerObject(
+                        scene, k, view, startPoses[k], s,
+                        [&, k](const RegistrationProgress& p) { relay.report([&] { return progressDict(p, names[k]); }); },
+                        relay.stopFlag());
+                };
+                if (sideBySide) {
+                    RegistrationSettings single = settings;
+                    single.threads = 1;
+                    parallelFor(static_cast<int>(n), cores, [&](int begin, int end) {
+                        for (int k = begin; k < end; ++k) run(static_cast<std::size_t>(k), single);
+                    }, static_cast<int>(n));
+                } else {
+                    for (std::size_t k = 0; k < n; ++k) run(k, settings);
+                }
+                wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+            }
+            relay.rethrowIfFailed();
+
+            // 5. The answers, each with its verdict; written (like the CLI) unless lost.
+            pb::list answers;
+            for (std::size_t k = 0; k < n; ++k) {
+                SceneObject& object = scene.objects[k];
+                const ObjectRegistrationResult& r = results[k];
+                object.worldFromObject = r.worldFromObject;
+                std::optional<double> iou, startIou;
+                if (labels[k]) {
+                    iou = silhouetteIoU(objectSilhouette(object, scene.cameras[0], threads), *labels[k]);
+                    startIou = silhouetteIoU(
+                        objectSilhouette({object.name, object.model, startPoses[k], true}, scene.cameras[0], threads),
+                        *labels[k]);
+                }
+                const AnswerCheck check = checkAnswer(object, r.worldFromObject, {view}, scene.cameras, iou, threads);
+                const CameraPoseDifference d = cameraPoseDifference(scene.cameras[0], startPoses[k], r.worldFromObject,
+                                                                    defaultPivot(*object.model));
+                pb::dict a;
+                a["model"] = names[k];
+                a["pose"] = fromTransform(r.worldFromObject);
+                a["start"] = fromTransform(startPoses[k]);
+                a["jts_row"] = formatPoseSpec(r.worldFromObject);
+                a["similarity"] = r.similarity;
+                a["measure"] = toString(settings.similarity);
+                a["evaluations"] = r.evaluations;
+                a["seconds"] = r.seconds;
+                a["wall_seconds"] = wallSeconds;
+                a["stopped"] = r.stopped;
+                a["verdict"] = r.stopped && check.check != AnswerVerdict::Lost ? "unchecked" : toString(check.check);
+                a["verdict_text"] = r.stopped ? "stopped before the search ended; " + check.text : check.text;
+                a["iou"] = iou ? pb::cast(*iou) : pb::none();
+                a["start_iou"] = startIou ? pb::cast(*startIou) : pb::none();
+                pb::dict moved;
+                moved["in_plane_mm"] = d.inPlaneMm;
+                moved["depth_mm"] = d.depthMm;
+                moved["rotation_deg"] = d.rotationDeg;
+                a["moved"] = moved;
+                a["written"] = pb::none();
+                if (!outs.empty() && check.check != AnswerVerdict::Lost && !r.stopped) {
+                    const std::string& path = oneOutTra ? outs[0] : outs[k];
+                    writePoseSpec(path, frame, oneOutTra ? k : 0, r.worldFromObject);
+                    a["written"] = path;
+                }
+                answers.append(a);
+            }
+            return answers;
+        },
+        pb::arg("reference"), pb::arg("camera"), pb::arg("models"), pb::arg("start"), pb::kw_only(),
+        pb::arg("frame") = 0, pb::arg("out") = pb::none(), pb::arg("mask") = pb::none(), pb::arg("mu") = 0.0,
+        pb::arg("invert") = false, pb::arg("log") = false, pb::arg("i0") = pb::none(),
+        pb::arg("exclude_below") = pb::none(), pb::arg("erode") = 3, pb::arg("roi") = pb::none(),
+        pb::arg("page") = -1, pb::arg("bits") = 8, pb::arg("tra_form") = "auto", pb::arg("method") = "cmaes",
+        pb::arg("similarity") = "edge", pb::arg("seed") = 1, pb::arg("budget") = 0, pb::arg("polish_budget") = -1,
+        pb::arg("levels") = pb::none(), pb::arg("radius") = pb::none(), pb::arg("threads") = 0,
+        pb::arg("polish") = "nm", pb::arg("progress") = pb::none(),
+        R"doc(
+Registers implant or bone meshes in a real radiograph, as `fluoromatch register --reference IMG
+--camera CALIB --model M ... --start S` does, with its options as keyword arguments (--exclude-
+below is exclude_below, --polish-budget polish_budget, --tra-form tra_form; levels and radius
+as lists). The same pose as the CLI for the same arguments and seed.
+
+reference: a radiograph path or a (rows, cols) array (then bits= gives its full scale);
+camera: a calibration path or a Camera; models: path(s) or Mesh(es); start: per model a .jts /
+.tra path (row `frame`), six numbers as text, or a worldFromObject 4x4 array; one .tra for
+all models. mask: a label mask per model (path or boolean array): the silhouette IoU and the
+verdict use it. out: .jts per model or one .tra, written as the CLI does (not when lost).
+progress(dict) is called as the search goes; return False to stop it (Ctrl-C stops it too).
+
+Returns one dict per model: pose (worldFromObject 4x4), start, jts_row, similarity, measure,
+evaluations, seconds, wall_seconds, stopped, verdict ("checked", "doubtful", "lost" or
+"unchecked": no mask to check it against), verdict_text, iou, start_iou, moved, written.)doc");
+}
+
+}  // namespace fm::py

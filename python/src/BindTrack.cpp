@@ -1,0 +1,180 @@
+// `track` from Python: bones through a trial's frames in all its cameras, as `fluoromatch track
+// --trial T --bone B` does (track/Tracker.h, track/SegmentTracking.h): the same keyframes, segments,
+// settings and seed, so the same poses. The .tra is rewritten atomically after every frame.
+#include <cmath>
+#include <limits>
+#include <map>
+
+#include <pybind11/stl.h>
+
+#include "Arrays.h"
+#include "Bindings.h"
+#include "Progress.h"
+#include "core/Error.h"
+#include "pose/AutoscoperTra.h"
+#include "track/SegmentTracking.h"
+#include "track/TrackSegments.h"
+#include "track/TrialScene.h"
+#include "track/TrialTra.h"
+#include "trial/Trial.h"
+
+namespace fm::py {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+pb::dict recordDict(const FrameRecord& r, const TrialScene& scene, const std::string& bone) {
+    pb::dict d;
+    d["frame"] = r.frame;
+    d["status"] = toString(r.status);
+    d["note"] = r.note;
+    // Tracked frames are not yet checked against anything independent: said so.
+    d["verdict"] = r.status == FrameRecord::Status::Tracked ? "unchecked" : "lost";
+    d["pose"] = r.worldFromBone ? pb::object(fromTransform(traPoseFromObject(scene, bone, *r.worldFromBone)))
+                                : pb::none();
+    d["object_pose"] = r.worldFromBone ? pb::object(fromTransform(*r.worldFromBone)) : pb::none();
+    pb::list costs;
+    for (double c : r.viewCost) costs.append(c);
+    d["costs"] = costs;
+    d["cameras_used"] = r.camerasUsed;
+    d["evaluations"] = r.evaluations;
+    d["seconds"] = r.seconds;
+    return d;
+}
+
+}  // namespace
+
+void bindTrack(pb::module_& m) {
+    m.def(
+        "track",
+        [](const std::string& trialPath, const pb::object& boneArg, const std::string& frames, bool reverse,
+           const std::string& init, const std::string& start, const std::string& out, std::uint64_t seed,
+           int threads, std::optional<std::vector<int>> cameraList, const pb::object& progress) {
+            // 1. The trial, its bones, frames and keyframes, refused before any work.
+            std::vector<std::string> bones;
+            if (pb::isinstance<pb::str>(boneArg)) bones.push_back(boneArg.cast<std::string>());
+            else bones = boneArg.cast<std::vector<std::string>>();
+            if (bones.empty()) throw Error("bone: name at least one of the trial's bones");
+            if (!out.empty() && std::filesystem::path(out).extension() != ".tra")
+                throw Error("out: the result is an Autoscoper .tra; name it NAME.tra");
+            if (threads < 0) throw Error("threads must be 0 (all cores) or more");
+            const Trial trial = readTrial(trialPath);
+            for (const std::string& b : bones) trial.bone(b);
+            TrialScene scene;
+            {
+                pb::gil_scoped_release unlock;
+                scene = loadTrialScene(trial, bones, threads);
+            }
+            std::vector<std::size_t> cameras;
+            if (cameraList) {
+                for (int c : *cameraList) {
+                    if (c < 1 || c > static_cast<int>(scene.cameras.size()))
+                        throw Error("cameras: " + std::to_string(c) + " is not a camera of the trial (1.." +
+                                    std::to_string(scene.cameras.size()) + ")");
+                    cameras.push_back(static_cast<std::size_t>(c - 1));
+                }
+            }
+            const std::vector<int> order = parseFrameRange(
+                frames.empty() ? "0:" + std::to_string(scene.frameCount - 1) : frames, scene.frameCount, reverse);
+            TrackSettings settings;
+            settings.init = parseInitMode(init);
+            settings.registration.seed = seed;
+            settings.registration.threads = threads;
+            std::optional<TraFile> startTra;
+            if (!start.empty()) startTra = readTrialTra(start, scene);
+
+            ProgressRelay relay(progress);
+            pb::dict results;
+            for (const std::string& bone : bones) {
+                std::map<int, RigidTransform> keyframes = trialKeyframes(scene, bone);
+                if (startTra) {
+                    const std::size_t object = traObjectOfBone(*startTra, scene, bone, start);
+                    for (std::size_t f = 0; f < startTra->frames.size(); ++f)
+                        if (const auto& p = startTra->frames[f][object])
+                            keyframes[static_cast<int>(f)] = objectPoseFromTra(scene, bone, *p);
+                }
+                const std::string boneOut =
+                    out.empty() || bones.size() == 1
+                        ? out
+                        : (std::filesystem::path(out).parent_path() /
+                           (std::filesystem::path(out).stem().string() + "_" + bone + ".tra")).string();
+                const Tracker tracker(sceneOfBoneAlone(scene, bone), bone,
+                                      trialFrameViews(scene, defaultTrialPreparation(), cameras), settings);
+                TraFile tra;
+                tra.frames.assign(static_cast<std::size_t>(scene.frameCount), {std::nullopt});
+                std::vector<FrameRecord> records;
+                // 2. Each keyframe segment, frame by frame (the CLI's jobs, one after the other).
+                {
+                    pb::gil_scoped_release unlock;
+                    for (const TrackSegment& segment : splitAtKeyframes(order, keyframes)) {
+                        if (relay.stopped()) break;
+                        trackSegment(
+                            tracker, segment, {},
+                            [&](const RigidTransform& pose) { return storedObjectPose(scene, bone, pose); },
+                            [&](const FrameRecord& r) {
+                                records.push_back(r);
+                                if (r.worldFromBone)
+                                    tra.frames[static_cast<std::size_t>(r.frame)][0] =
+                                        asWrittenInTra(traPoseFromObject(scene, bone, *r.worldFromBone));
+                                if (!boneOut.empty()) writeTra(boneOut, tra);
+                                relay.report([&] {
+                                    pb::dict d = recordDict(r, scene, bone);
+                                    d["bone"] = bone;
+                                    d["done"] = static_cast<int>(records.size());
+                                    d["total"] = static_cast<int>(order.size());
+                                    return d;
+                                });
+                            },
+                            relay.stopFlag());
+                    }
+                }
+                relay.rethrowIfFailed();
+                // 3. The answer: every record in tracking order, and the poses as the .tra holds them.
+                pb::list rows;
+                std::map<int, int> position;
+                for (std::size_t i = 0; i < order.size(); ++i) position[order[i]] = static_cast<int>(i);
+                std::sort(records.begin(), records.end(), [&](const FrameRecord& a, const FrameRecord& b) {
+                    return position.at(a.frame) < position.at(b.frame);
+                });
+                for (const FrameRecord& r : records) rows.append(recordDict(r, scene, bone));
+                pb::array_t<double> poses(std::vector<pb::ssize_t>{scene.frameCount, 4, 4});
+                double* d = poses.mutable_data();
+                for (int f = 0; f < scene.frameCount; ++f) {
+                    const auto& p = tra.frames[static_cast<std::size_t>(f)][0];
+                    if (!p) {
+                        std::fill(d + 16 * f, d + 16 * f + 16, kNaN);
+                        continue;
+                    }
+                    const std::array<double, 16> r = p->toRowMajor4x4();
+                    std::copy(r.begin(), r.end(), d + 16 * f);
+                }
+                pb::dict result;
+                result["bone"] = bone;
+                result["frames"] = rows;
+                result["poses"] = poses;
+                result["written"] = boneOut.empty() ? pb::none() : pb::cast(boneOut);
+                result["stopped"] = relay.stopped();
+                results[pb::str(bone)] = result;
+            }
+            if (pb::isinstance<pb::str>(boneArg)) return pb::object(results[pb::str(bones[0])]);
+            return pb::object(results);
+        },
+        pb::arg("trial"), pb::arg("bone"), pb::kw_only(), pb::arg("frames") = "", pb::arg("reverse") = false,
+        pb::arg("init") = "extrapolate", pb::arg("start") = "", pb::arg("out") = "", pb::arg("seed") = 1,
+        pb::arg("threads") = 0, pb::arg("cameras") = pb::none(), pb::arg("progress") = pb::none(),
+        R"doc(
+Tracks a bone (or a list of bones) through a trial, as `fluoromatch track --trial T --bone B`
+does, with its options as keyword arguments: frames "A:B[:STEP]", reverse, init ("previous",
+"extrapolate", "keyframes"), start (a .tra of start poses / keyframes), out (a .tra, rewritten
+atomically after every frame; with several bones NAME_bone.tra), seed, threads, cameras
+(1-based list). The same poses as the CLI for the same arguments.
+
+Returns (for one bone) a dict: poses (frames, 4, 4) as the .tra holds them (Autoscoper's
+worldFromVolume; NaN where not tracked), frames (one dict per tracked frame: frame, status,
+note, verdict, pose, object_pose, costs per camera, cameras_used, evaluations, seconds),
+written, stopped; for a list of bones a dict of those by bone. progress(dict) is called after
+every frame; return False to stop after it (Ctrl-C stops too).)doc");
+}
+
+}  // namespace fm::py

@@ -1,0 +1,71 @@
+"""Pose files and parameterizations: .jts rows and Autoscoper xyzypr against rotation matrices
+computed here, the JTML .jts files read, .tra and .jts written and read back (NaN frames too),
+files the CLI wrote read, and bad files refused by name and line."""
+import numpy as np
+import pytest
+
+import fluoromatch as fm
+from conftest import pose, rotation
+
+
+def test_jts_rows_are_rz_rx_ry_and_back():
+    row = [12.0, -7.5, -980.0, 30.0, -20.0, 65.0]  # x, y, z, z_rot, x_rot, y_rot
+    m = fm.jts_to_matrix(row)
+    r = rotation("z", 30) @ rotation("x", -20) @ rotation("y", 65)
+    np.testing.assert_allclose(m, pose(r, row[:3]), atol=1e-12)
+    np.testing.assert_allclose(fm.matrix_to_jts(m), row, atol=1e-9)
+
+
+def test_xyzypr_is_rz_ry_rx_and_back():
+    v = [1.0, 2.0, 3.0, 40.0, -25.0, 70.0]  # x, y, z, yaw, pitch, roll
+    m = fm.xyzypr_to_matrix(v)
+    np.testing.assert_allclose(m, pose(rotation("z", 40) @ rotation("y", -25) @ rotation("x", 70), v[:3]), atol=1e-12)
+    np.testing.assert_allclose(fm.matrix_to_xyzypr(m), v, atol=1e-9)
+    with pytest.raises(fm.Error, match="6 numbers"):
+        fm.xyzypr_to_matrix([1, 2, 3])
+
+
+def test_the_jtml_jts_files(jtml):
+    fem = fm.read_jts(jtml / "fem.jts")
+    assert fem.shape == (3, 4, 4)
+    assert np.all(np.isfinite(fem))
+    text = (jtml / "fem.jts").read_text().splitlines()
+    first = [float(x) for x in text[2].split(",")]
+    np.testing.assert_allclose(fm.matrix_to_jts(fem[0]), first, atol=1e-6)
+
+
+def test_written_pose_files_read_back(tmp_path):
+    rng = np.random.default_rng(7)
+    poses = np.stack([fm.xyzypr_to_matrix(np.r_[rng.uniform(-50, 50, 3), rng.uniform(-80, 80, 3)]) for _ in range(4)])
+    poses[2] = np.nan  # a frame without a pose
+    fm.write_jts(tmp_path / "p.jts", poses)
+    back = fm.read_jts(tmp_path / "p.jts")
+    assert np.all(np.isnan(back[2]))
+    np.testing.assert_allclose(back[[0, 1, 3]], poses[[0, 1, 3]], atol=1e-8)
+    two = np.stack([poses, poses[::-1]], axis=1)  # (frames, objects, 4, 4)
+    for form in ("matrix", "xyzypr"):
+        fm.write_tra(tmp_path / f"p_{form}.tra", two, form=form)
+        back = fm.read_tra(tmp_path / f"p_{form}.tra", form=form, objects=2)
+        assert back.shape == (4, 2, 4, 4)
+        assert np.all(np.isnan(back[2, 0])) and np.all(np.isnan(back[1, 1]))
+        ok = np.isfinite(two)
+        np.testing.assert_allclose(back[ok], two[ok], atol=1e-10)
+    one = fm.read_tra(tmp_path / "p_matrix.tra")  # 32 numbers a row: two matrices, decided
+    assert one.shape == (4, 2, 4, 4)
+
+
+def test_bad_pose_files_name_the_file_and_line(tmp_path):
+    (tmp_path / "bad.jts").write_text("JT_EULER_312\nx,y,z,zr,xr,yr\n1,2,3,4,5\n")
+    with pytest.raises(fm.Error, match=r"bad.jts.*line 3"):
+        fm.read_jts(tmp_path / "bad.jts")
+    (tmp_path / "bad.tra").write_text("1,0,0,0,0,1,0,0,0,0,1,0,0,0,0,2\n")
+    with pytest.raises(fm.Error, match="bad.tra"):
+        fm.read_tra(tmp_path / "bad.tra")
+    with pytest.raises(fm.Error, match="partly NaN"):
+        p = np.eye(4)[None].copy()
+        p[0, 0, 1] = np.nan
+        fm.write_tra(tmp_path / "x.tra", p)
+    with pytest.raises(fm.Error, match="rotation|orthonormal|determinant"):
+        m = 2 * np.eye(4)
+        m[3, 3] = 1
+        fm.write_tra(tmp_path / "x.tra", m[None])

@@ -1,0 +1,71 @@
+"""`register` from Python against the CLI on the JTML knee: the same pose for the same arguments
+and seed, the mask's verdict, progress and stopping, refusals before any search."""
+import numpy as np
+import pytest
+
+import fluoromatch as fm
+
+START = "20,18,-1017,-24,-5,2"  # 2-3 mm, 10 mm deep and 4 deg off fem.jts at frame 0160
+
+
+def test_the_femoral_component_as_the_cli_finds_it(jtml, cli, tmp_path):
+    ref, cal, fem = jtml / "AT_K1_V1_0160.tif", jtml / "calibration.txt", jtml / "KR_right_7_fem.stl"
+    mask = jtml / "Labels" / "fem" / "AT_K1_V1_0160_label_fem.tif"
+    cli("register", "--reference", ref, "--camera", cal, "--model", fem, "--invert", "--start", START,
+        "--mask", mask, "--out", tmp_path / "cli.jts", "--threads", "2", "--seed", "3")
+    seen = []
+    [answer] = fm.register(str(ref), str(cal), str(fem), START, invert=True, mask=str(mask),
+                           out=str(tmp_path / "py.jts"), threads=2, seed=3, progress=seen.append)
+    # The same pose, to the last digit the .jts holds, and the same bytes written.
+    assert (tmp_path / "py.jts").read_bytes() == (tmp_path / "cli.jts").read_bytes()
+    np.testing.assert_allclose(answer["pose"], fm.read_jts(tmp_path / "cli.jts")[0], atol=1e-8)
+    # Near the published pose, and confirmed by the mask.
+    truth = fm.read_jts(jtml / "fem.jts")[0]
+    assert np.linalg.norm(answer["pose"][:2, 3] - truth[:2, 3]) < 1.0
+    assert answer["verdict"] == "checked" and answer["iou"] >= 0.95 > answer["start_iou"]
+    assert answer["evaluations"] > 100 and answer["seconds"] > 0 and not answer["stopped"]
+    assert seen and seen[-1]["evaluations"] <= answer["evaluations"] and seen[0]["model"] == "KR_right_7_fem"
+
+
+def test_both_implants_from_the_jts_files_and_one_tra(jtml, cli, tmp_path):
+    ref, cal = jtml / "AT_K1_V1_0170.tif", jtml / "calibration.txt"
+    models = [str(jtml / "KR_right_7_fem.stl"), str(jtml / "KR_right_6_tib.stl")]
+    starts = [str(jtml / "fem.jts"), str(jtml / "tib.jts")]
+    cli("register", "--reference", ref, "--camera", cal, "--model", models[0], "--model", models[1], "--invert",
+        "--start", starts[0], "--start", starts[1], "--frame", "1", "--out", tmp_path / "cli.tra")
+    answers = fm.register(ref, fm.read_camera(cal, image_size=(1024, 1024)),
+                          [fm.read_mesh(m) for m in models], starts, frame=1, invert=True,
+                          out=str(tmp_path / "py.tra"))
+    assert [a["model"] for a in answers] == ["KR_right_7_fem", "KR_right_6_tib"]
+    assert (tmp_path / "py.tra").read_bytes() == (tmp_path / "cli.tra").read_bytes()
+    assert all(a["verdict"] == "unchecked" for a in answers)  # no mask: never shown as right
+
+
+def test_a_progress_callback_that_returns_false_stops_the_search(jtml):
+    calls = []
+
+    def stop_soon(p):
+        calls.append(p)
+        return len(calls) < 3
+
+    [answer] = fm.register(jtml / "AT_K1_V1_0160.tif", jtml / "calibration.txt", jtml / "KR_right_7_fem.stl",
+                           START, invert=True, progress=stop_soon)
+    assert answer["stopped"] and len(calls) == 3
+    assert answer["verdict"] != "checked" and "stopped" in answer["verdict_text"]
+
+
+def test_refusals_name_the_argument_before_any_search(jtml, tmp_path):
+    args = (jtml / "AT_K1_V1_0160.tif", jtml / "calibration.txt", jtml / "KR_right_7_fem.stl")
+    with pytest.raises(fm.Error, match="method"):
+        fm.register(*args, START, method="nm")
+    with pytest.raises(fm.Error, match="out"):
+        fm.register(*args, START, out=str(tmp_path / "x.txt"))
+    with pytest.raises(fm.Error, match="start"):
+        fm.register(*args, [START, START])
+    with pytest.raises(fm.Error, match="radius"):
+        fm.register(*args, START, radius=[1, 2])
+    with pytest.raises(fm.Error, match="nothere.tif"):
+        fm.register(jtml / "nothere.tif", *args[1:], START)
+    with pytest.raises(fm.Error, match="valid pixels|covers"):
+        far = fm.jts_to_matrix([0, 0, -1e6, 0, 0, 0])
+        fm.register(*args, far, invert=True)
