@@ -77,6 +77,44 @@ PinholeCamera cameraFromKrt(const pb::handle& K, const pb::handle& R, const pb::
     return c;
 }
 
+Pose pose2011(const pb::handle& params) {
+    Doubles p = Doubles::ensure(params);
+    if (!p || p.size() != 6) {
+        PyErr_Clear();
+        throw Error("params: expected the six numbers x, y, z (mm), az, el, rot (deg)");
+    }
+    std::array<double, 6> a{};
+    std::copy(p.data(), p.data() + 6, a.begin());
+    const Pose pose = Pose::fromArray(a);
+    validatePose(pose);
+    return pose;
+}
+
+// The CLI's scene set-up with --size, --distance and --film as given (None: the default).
+SceneSetup sceneSetup(const pb::object& size, const pb::object& distance, const pb::object& film) {
+    SceneSetup setup = defaultSceneSetup();
+    if (!size.is_none()) setup.filmPixels = toSize(size, "size");
+    if (!distance.is_none()) {
+        const Doubles d = Doubles::ensure(distance);
+        if (!d || (d.size() != 1 && d.size() != 2)) {
+            PyErr_Clear();
+            throw Error("distance: expected D (both) or (source-isocenter, isocenter-film) mm");
+        }
+        setup.sourceToIsocenterMm = d.data()[0];
+        setup.isocenterToFilmMm = d.data()[d.size() - 1];
+    }
+    if (!film.is_none()) {
+        const Doubles f = Doubles::ensure(film);
+        if (!f || f.size() != 2) {
+            PyErr_Clear();
+            throw Error("film: expected 2 numbers (width, height) in mm");
+        }
+        setup.filmSizeMm = {f.data()[0], f.data()[1]};
+    }
+    validateSceneSetup(setup);
+    return setup;
+}
+
 }  // namespace
 
 void bindGeometry(pb::module_& m) {
@@ -174,38 +212,9 @@ A calibration as `--camera` reads it: MayaCam 2.0 (.txt), MayaCam 1.0 (.csv), Jo
 JT_INTCALIB (needs image_size=(width, height)) or geometry JSON.)doc");
 
     m.def("scene_geometry",
-          [](const pb::handle& params, const pb::handle& center, const pb::object& film,
-             const pb::object& distance, const pb::object& filmMm) {
-              Doubles p = Doubles::ensure(params);
-              if (!p || p.size() != 6) {
-                  PyErr_Clear();
-                  throw Error("params: expected the six numbers x, y, z (mm), az, el, rot (deg)");
-              }
-              std::array<double, 6> a{};
-              std::copy(p.data(), p.data() + 6, a.begin());
-              const Pose pose = Pose::fromArray(a);
-              validatePose(pose);
-              SceneSetup setup = defaultSceneSetup();
-              if (!film.is_none()) setup.filmPixels = toSize(film, "size");
-              if (!distance.is_none()) {
-                  const Doubles d = Doubles::ensure(distance);
-                  if (!d || (d.size() != 1 && d.size() != 2)) {
-                      PyErr_Clear();
-                      throw Error("distance: expected D (both) or (source-isocenter, isocenter-film) mm");
-                  }
-                  setup.sourceToIsocenterMm = d.data()[0];
-                  setup.isocenterToFilmMm = d.data()[d.size() - 1];
-              }
-              if (!filmMm.is_none()) {
-                  const Doubles f = Doubles::ensure(filmMm);
-                  if (!f || f.size() != 2) {
-                      PyErr_Clear();
-                      throw Error("film: expected 2 numbers (width, height) in mm");
-                  }
-                  setup.filmSizeMm = {f.data()[0], f.data()[1]};
-              }
-              validateSceneSetup(setup);
-              return sceneGeometry(pose, setup, toVec3(center, "center"));
+          [](const pb::handle& params, const pb::handle& center, const pb::object& size,
+             const pb::object& distance, const pb::object& film) {
+              return sceneGeometry(pose2011(params), sceneSetup(size, distance, film), toVec3(center, "center"));
           },
           pb::arg("params"), pb::arg("center"), pb::arg("size") = pb::none(), pb::arg("distance") = pb::none(),
           pb::arg("film") = pb::none(), R"doc(
@@ -214,6 +223,26 @@ centre offset (mm) and the source's azimuth, elevation and the film's rotation (
 the volume's centre (Volume.center). size=(cols, rows), distance=D (source-isocenter and
 isocenter-film, mm) or (D1, D2), film=(width, height) mm, as `drr --size/--distance/--film`;
 the defaults are the CLI's.)doc");
+
+    m.def("pose_from_2011",
+          [](const pb::handle& params, const pb::handle& center, const pb::object& distance) {
+              const SceneSetup setup = sceneSetup(pb::none(), distance, pb::none());
+              const glm::dvec3 c = toVec3(center, "center");
+              // The camera frames (source, u, v, normal) of the zero pose and of `params`: the
+              // object moved by worldFromZero * (worldFromParams)^-1 is seen by the zero camera
+              // as the unmoved object is seen by the camera of `params`.
+              const auto frame = [](const ProjectionGeometry& g) {
+                  return RigidTransform{glm::dmat3(g.detector.u, g.detector.v, g.detector.normal()), g.source};
+              };
+              const RigidTransform zero = frame(sceneGeometry(Pose{}, setup, c));
+              const RigidTransform moved = frame(sceneGeometry(pose2011(params), setup, c));
+              return fromTransform(zero * moved.inverse());
+          },
+          pb::arg("params"), pb::arg("center"), pb::arg("distance") = pb::none(), R"doc(
+The 2011 six parameters as an object pose: the worldFromObject 4x4 at which the zero-pose camera
+(scene_geometry([0] * 6, center)) sees the volume as scene_geometry(params, center) sees it
+unmoved. `distance` as in scene_geometry.)doc");
 }
 
 }  // namespace fm::py
+

@@ -69,3 +69,17 @@ def test_bad_pose_files_name_the_file_and_line(tmp_path):
         m = 2 * np.eye(4)
         m[3, 3] = 1
         fm.write_tra(tmp_path / "x.tra", m[None])
+
+
+def test_the_2011_parameters_as_an_object_pose_give_the_same_image():
+    knee = fm.read_volume("phantom:knee")
+    prepared = fm.prepare(knee)
+    params = [6.0, -4.0, 3.0, 35.0, -20.0, 15.0]
+    zero = fm.scene_geometry([0] * 6, knee.center, size=(96, 96))
+    moved_camera = prepared.render(fm.scene_geometry(params, knee.center, size=(96, 96)))
+    moved_object = prepared.render(zero, pose=fm.pose_from_2011(params, knee.center))
+    assert moved_camera.max() > 1
+    np.testing.assert_allclose(moved_object, moved_camera, rtol=1e-4, atol=1e-4)
+    np.testing.assert_allclose(fm.pose_from_2011([0] * 6, knee.center), np.eye(4), atol=1e-12)
+    with pytest.raises(fm.Error, match="elevation"):
+        fm.pose_from_2011([0, 0, 0, 0, 95, 0], knee.center)

@@ -69,3 +69,35 @@ def test_refusals_name_the_argument_before_any_search(jtml, tmp_path):
     with pytest.raises(fm.Error, match="valid pixels|covers"):
         far = fm.jts_to_matrix([0, 0, -1e6, 0, 0, 0])
         fm.register(*args, far, invert=True)
+
+
+def test_an_error_in_the_callback_stops_the_search_and_is_raised(jtml):
+    def broken(p):
+        raise ValueError("from the callback")
+
+    with pytest.raises(ValueError, match="from the callback"):
+        fm.register(jtml / "AT_K1_V1_0160.tif", jtml / "calibration.txt", jtml / "KR_right_7_fem.stl", START,
+                    invert=True, progress=broken)
+
+
+def test_the_gil_is_released_while_the_engine_works():
+    import threading
+    import time
+
+    knee = fm.prepare(fm.read_volume("phantom:knee"))
+    views = [fm.scene_geometry([0, 0, 0, az, 0, 0], (0, 0, 0), size=(256, 256)) for az in range(-180, 180, 5)]
+
+    def turns_while(worker):  # loop turns of this thread while `worker` runs, and the time
+        start = time.perf_counter()
+        worker.start()
+        count = 0
+        while worker.is_alive():
+            count += 1
+        return count, time.perf_counter() - start
+
+    # The same loop beside a thread that only sleeps (holds no GIL): the rate of a free loop.
+    free, free_seconds = turns_while(threading.Thread(target=time.sleep, args=(0.2,)))
+    count, seconds = turns_while(threading.Thread(target=knee.render_batch, args=(views,), kwargs={"threads": 1}))
+    # Held, the loop would turn only until the worker enters the engine (one switch interval:
+    # about 1 % of the free rate here).
+    assert seconds > 0.1 and count / seconds > 0.3 * free / free_seconds, (count, seconds, free, free_seconds)
