@@ -29,7 +29,11 @@
 #include "drr/DrrBatch.h"
 #include "io/ImageFileWriter.h"
 #include "io/OutputPath.h"
+#include "io/AtomicFile.h"
 #include "source/VolumeSource.h"
+#include "spectral/MaterialDecomposition.h"
+#include "spectral/SpectralScene.h"
+#include "volume/ValueUnitGuess.h"
 
 namespace {
 
@@ -52,7 +56,33 @@ struct DrrArgs {
     std::string center = "ct";  // the pose's isocenter: the whole CT's centre, or the bone's
     std::string out;
     std::string raw;
+    // Realistic radiographs (spectral/): a tube spectrum through the CT's materials, the detector.
+    std::string spectrum;  // "80[,filter=2.5][,bin=2]" or "mono=60"
+    std::string detector = "integrating";
+    double photons = 0.0;
+    double electronicNoise = 0.0;
+    double blur = 0.0;
+    double scatter = 0.0;
+    double scatterSigma = 30.0;
+    std::uint64_t seed = 1;
 };
+
+// The options that only a realistic radiograph takes, and those it does not (refused, not ignored).
+void checkSpectrumArgs(const DrrArgs& a, bool batch, const CLI::App& cmd) {
+    const char* realistic[] = {"--detector", "--photons", "--electronic-noise", "--blur", "--scatter",
+                               "--scatter-sigma", "--seed"};
+    if (a.spectrum.empty()) {
+        for (const char* o : realistic)
+            if (cmd.count(o) > 0)
+                throw CLI::ValidationError(std::string(o) + " applies to a realistic radiograph: add --spectrum KVP");
+        return;
+    }
+    if (batch) throw CLI::ValidationError("--spectrum renders one view (--pose or --geometry); not --poses or --angles yet");
+    if (a.thresholdHU) throw CLI::ValidationError("--threshold does not apply to --spectrum: materials come from HU");
+    if (a.values != "auto") throw CLI::ValidationError("--values does not apply to --spectrum: it needs HU");
+    if (a.walk != "auto" || a.voxels != "auto" || a.noSkip || a.repeat != 1)
+        throw CLI::ValidationError("--walk, --voxels, --no-skip and --repeat are for the one-material DRR, not --spectrum");
+}
 
 double processCpuMs() {
     timespec t;
@@ -216,6 +246,73 @@ void renderBatch(const DrrArgs& a, const std::vector<fm::DrrJob>& jobs,
             fm::distributed::describeFailures(failures));
 }
 
+// A realistic radiograph (spectral/): the CT's soft tissue and bone by HU, the tube spectrum
+// through them, then scatter, blur and noise. --out .tif is 16-bit (intensity: 65535 I/I0; the
+// default -ln(I/I0): 4096 counts per unit); other outputs as for any DRR.
+void renderRealistic(const DrrArgs& a, const fm::Volume& volume, const fm::ProjectionGeometry& geometry, int threads) {
+    const fm::UnitGuess hu = fm::guessHounsfield(volume);
+    if (!hu.hounsfield)
+        throw fm::Error("--spectrum needs a CT in HU (materials and densities come from HU): " + a.volume + " is not (" +
+                        hu.reason + ")");
+    const fm::SpectrumSpec spec = fm::parseSpectrumSpec(a.spectrum);
+    const fm::Spectrum spectrum = fm::makeSpectrum(spec);
+    fm::DetectorSettings detector;
+    detector.photonsPerPixel = a.photons;
+    detector.electronicNoise = a.electronicNoise;
+    detector.blurSigmaPixels = a.blur;
+    detector.scatterToPrimary = a.scatter;
+    detector.scatterSigmaMm = a.scatterSigma;
+    detector.logOutput = !a.intensity;
+    detector.seed = a.seed;
+    detector.threads = threads;
+    fm::validateDetectorSettings(detector);
+    auto start = std::chrono::steady_clock::now();
+    fm::SpectralScene scene;
+    fm::addCtLayers(scene, volume, nullptr, "ct", fm::RigidTransform::identity(), threads);
+    const double prepareMs = msSince(start);
+    std::printf("spectrum  %s, %s detector\n", fm::describeSpectrum(spec, spectrum).c_str(), a.detector.c_str());
+    std::printf("materials soft tissue (HU <= %.0f) and cortical bone (above), density from HU; prepared in %.1f ms\n",
+                fm::kBoneThresholdHU, prepareMs);
+    std::printf("detector  scatter-to-primary %g (spread %g mm), blur %g px, ", a.scatter, a.scatterSigma, a.blur);
+    if (a.photons > 0.0)
+        std::printf("%g photons per pixel, electronic noise %g, seed %llu\n", a.photons, a.electronicNoise,
+                    static_cast<unsigned long long>(a.seed));
+    else
+        std::printf("no noise\n");
+    start = std::chrono::steady_clock::now();
+    const fm::MassImages masses = fm::renderMassImages(scene, geometry, threads);
+    const double massMs = msSince(start);
+    start = std::chrono::steady_clock::now();
+    const fm::Image primary = fm::transmissionImage(
+        masses, spectrum, a.detector == "counting" ? fm::DetectorResponse::Counting : fm::DetectorResponse::Integrating,
+        threads);
+    const double spectralMs = msSince(start);
+    start = std::chrono::steady_clock::now();
+    const fm::Image image = fm::detectedImage(primary, detector);
+    std::printf("render    %.2f ms (material masses %.2f, spectrum %.2f, detector %.2f)\n",
+                massMs + spectralMs + msSince(start), massMs, spectralMs, msSince(start));
+    float lo = INFINITY, hi = -INFINITY;
+    for (float v : image.pixels) lo = std::min(lo, v), hi = std::max(hi, v);
+    std::printf("image     %d x %d pixels, %s, values %.6g .. %.6g\n", image.width, image.height,
+                a.intensity ? "I/I0" : "-ln(I/I0)", lo, hi);
+    if (!a.out.empty()) {
+        if (fm::imageFileFormat(a.out, "--out") == fm::ImageFileFormat::Tiff) {
+            const double scale = a.intensity ? 65535.0 : 4096.0;
+            fm::io::writeFileAtomically(a.out, fm::encodeTiffGrey16(image, scale));
+            std::printf("wrote     %s (16-bit, %g counts per unit of %s)\n", a.out.c_str(), scale,
+                        a.intensity ? "I/I0" : "-ln(I/I0)");
+        } else {
+            const Window w = writeOutputs(image, a.out, {}, a.intensity);
+            std::printf("wrote     %s (window %.6g .. %.6g%s)\n", a.out.c_str(), w.low, w.high,
+                        a.intensity ? " of 1 - intensity" : "");
+        }
+    }
+    if (!a.raw.empty()) {
+        writeOutputs(image, {}, a.raw, a.intensity);
+        std::printf("wrote     %s (exact values, row 0 first)\n", a.raw.c_str());
+    }
+}
+
 void runDrr(const DrrArgs& a) {
     const bool batch = !a.posesFile.empty() || a.angles > 0;
     checkArgs(a, batch);
@@ -263,6 +360,13 @@ void runDrr(const DrrArgs& a) {
                         ? "the bone's (--center bone): the film is centred on it"
                         : "the whole CT's (poses are the CT's; --center bone centres the film on "
                           "the bone)");
+
+    if (!a.spectrum.empty()) {
+        const fm::ProjectionGeometry geometry = fm::cli::geometryFrom(a.scene, isocenter);
+        geometry.validate(a.scene.usesGeometryFile() ? a.scene.geometry : "scene geometry");
+        std::printf("geometry  %s\n", fm::cli::describeGeometrySource(a.scene).c_str());
+        return renderRealistic(a, volume, geometry, threads);
+    }
 
     fm::DrrValueOptions valueOptions;
     valueOptions.values = fm::cli::reportValues(volume, a.values);
@@ -406,7 +510,36 @@ FM_REGISTER_COMMAND("drr", 20, [](CLI::App& app) {
                     ".tif (8-bit), or .mha/.nii (the exact values)");
     cmd->add_option("--raw", a->raw,
                     "The exact values as float32: .mha/.nii (with the detector spacing) or .tif");
-    cmd->callback([a] { runDrr(*a); });
+    cmd->add_option("--spectrum", a->spectrum,
+                    "A realistic radiograph: tube voltage in kVp (TASMIP, 30-140) with filter=MM "
+                    "aluminium (default 2.5) and bin=KEV (default 2), or mono=KEV for one energy; "
+                    "materials and densities from HU; output -ln(I/I0), or I/I0 with --intensity; "
+                    ".tif outputs are 16-bit (docs/drr.md)");
+    cmd->add_option("--detector", a->detector,
+                    "With --spectrum: integrating (weights photons by energy, as a flat panel or image "
+                    "intensifier) or counting")
+        ->check(fm::cli::oneOf({"integrating", "counting"}, "detector"))
+        ->capture_default_str();
+    cmd->add_option("--photons", a->photons,
+                    "With --spectrum: photons per pixel of the unattenuated beam (Poisson noise); 0 = none")
+        ->check(CLI::Range(0.0, 1e9));
+    cmd->add_option("--electronic-noise", a->electronicNoise,
+                    "With --spectrum and --photons: Gaussian noise SD in counts")
+        ->check(CLI::Range(0.0, 1e6));
+    cmd->add_option("--blur", a->blur, "With --spectrum: detector blur, Gaussian SD in pixels")
+        ->check(CLI::Range(0.0, 100.0));
+    cmd->add_option("--scatter", a->scatter,
+                    "With --spectrum: scatter-to-primary ratio (a broad convolution model; 0 = none)")
+        ->check(CLI::Range(0.0, 20.0));
+    cmd->add_option("--scatter-sigma", a->scatterSigma, "With --scatter: its spread, Gaussian SD in mm at the detector")
+        ->check(CLI::Range(0.1, 1000.0))
+        ->capture_default_str();
+    cmd->add_option("--seed", a->seed, "With --photons: the noise's seed (the same image for the same seed)")
+        ->capture_default_str();
+    cmd->callback([a, cmd] {
+        checkSpectrumArgs(*a, !a->posesFile.empty() || a->angles > 0, *cmd);
+        runDrr(*a);
+    });
     return cmd;
 });
 

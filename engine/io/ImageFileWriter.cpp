@@ -2,6 +2,7 @@
 
 #include <stb/stb_image_write.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <string>
@@ -136,6 +137,18 @@ std::vector<std::uint8_t> encodeTiffFloat(const Image& image) {
             std::swap(bytes[n + 1], bytes[n + 2]);
         }
     return encodeTiff(bytes.data(), bytes.size(), image.width, image.height, 32, 3);
+}
+
+std::vector<std::uint8_t> encodeTiffGrey16(const Image& image, double scale) {
+    checkImage(image, "TIFF encoding");
+    std::vector<std::uint8_t> bytes(image.pixels.size() * 2);
+    for (std::size_t n = 0; n < image.pixels.size(); ++n) {
+        const double v = std::isnan(image.pixels[n]) ? 0.0 : std::round(double(image.pixels[n]) * scale);
+        const auto sample = static_cast<std::uint16_t>(std::clamp(v, 0.0, 65535.0));
+        bytes[2 * n] = static_cast<std::uint8_t>(sample & 0xFF);  // "II": little-endian samples
+        bytes[2 * n + 1] = static_cast<std::uint8_t>(sample >> 8);
+    }
+    return encodeTiff(bytes.data(), bytes.size(), image.width, image.height, 16, 1);
 }
 
 std::vector<std::uint8_t> encodeJpegGrey8(const std::vector<std::uint8_t>& pixels, int width,

@@ -39,8 +39,11 @@ void checkExactImagePath(const std::filesystem::path& path, const std::string& o
 // File bytes, for tests and other writers: baseline TIFF of 8-bit grey (rows top first) ...
 std::vector<std::uint8_t> encodeTiffGrey8(const std::vector<std::uint8_t>& pixels, int width,
                                           int height);
-// ... and of float32 grey.
+// ... of float32 grey ...
 std::vector<std::uint8_t> encodeTiffFloat(const Image& image);
+// ... and of 16-bit grey: each value times `scale`, rounded and clamped to 0..65535 (a detector's
+// counts: realistic radiographs, `drr --spectrum --out x.tif`).
+std::vector<std::uint8_t> encodeTiffGrey16(const Image& image, double scale);
 // Baseline JPEG of 8-bit grey at `quality` 1..100.
 std::vector<std::uint8_t> encodeJpegGrey8(const std::vector<std::uint8_t>& pixels, int width,
                                           int height, int quality = 95);

@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "core/Error.h"
 #include "pose/PoseComparison.h"
 
 namespace fm::test {
@@ -80,7 +81,9 @@ TEST(PoseComparison, TheRotationVectorIsExactUpTo180Degrees) {
     for (double deg : {0.0, 1e-7, 0.5, 45.0, 171.0, 179.9, 180.0}) {
         const glm::dvec3 v = rotationVectorDeg(rotationAbout(axis, deg, glm::dvec3(0.0)).rotation);
         EXPECT_NEAR(glm::length(v), deg, 1e-9) << deg;
-        if (deg > 0.0) EXPECT_NEAR(glm::dot(glm::normalize(v), axis), 1.0, 1e-9) << deg;
+        if (deg > 0.0) {
+            EXPECT_NEAR(glm::dot(glm::normalize(v), axis), 1.0, 1e-9) << deg;
+        }
     }
 }
 

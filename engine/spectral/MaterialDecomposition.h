@@ -1,0 +1,32 @@
+#pragma once
+// A CT as materials: each voxel's material (soft tissue or cortical bone; air is soft tissue of
+// almost no density) from its HU, or from a label map (labelled voxels are bone), and its density
+// from its HU. The result is one volume per material holding density in mg/cm^3 (whole numbers:
+// the DRR walk stores them as int16), so that the exact Siddon walk of each gives that material's
+// mass along every ray (mg/cm^3 x mm).
+//
+// Density from HU: the piecewise-linear map DeepDRR uses (deepdrr/vol/volume.py):
+//   rho = max(min(0.001029 HU + 1.030, 0.0005886 HU + 1.030), 0) g/cm^3
+// (air -1000 HU -> 0.001, water 0 HU -> 1.03, cortical bone 1500 HU -> 1.91).
+#include <optional>
+
+#include "volume/Volume.h"
+
+namespace fm {
+
+// Voxels above this HU are bone (DeepDRR's threshold; soft tissue and fat lie below).
+inline constexpr double kBoneThresholdHU = 350.0;
+
+double densityFromHU(double hu);  // g/cm^3
+
+struct MaterialVolumes {
+    Volume softTissue;  // mg/cm^3 where the voxel is soft tissue (or air), else 0
+    Volume bone;        // mg/cm^3 where it is bone, else 0
+};
+
+// `boneMask` (same grid, > 0 = bone) replaces the HU threshold when given. NaN voxels hold
+// nothing. Throws fm::Error for a mask of another grid.
+MaterialVolumes decomposeMaterials(const Volume& ctHU, const Volume* boneMask = nullptr,
+                                   double boneThresholdHU = kBoneThresholdHU);
+
+}  // namespace fm

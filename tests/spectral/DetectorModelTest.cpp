@@ -1,0 +1,89 @@
+// The detector (spectral/DetectorModel.h): quantum noise whose mean and variance are the photon
+// count's (Poisson, both below and above the normal approximation's switch at 30), the same image
+// for a seed whatever the threads, blur that keeps the total and spreads a point by its sigma,
+// scatter that leaves an open field at 1, and -ln output.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/Random.h"
+#include "core/Error.h"
+#include "spectral/DetectorModel.h"
+
+namespace fm::test {
+namespace {
+
+void meanAndVariance(const Image& image, double& mean, double& variance) {
+    mean = variance = 0.0;
+    for (float v : image.pixels) mean += v;
+    mean /= image.pixels.size();
+    for (float v : image.pixels) variance += (v - mean) * (v - mean);
+    variance /= image.pixels.size() - 1;
+}
+
+TEST(DetectorModel, QuantumNoiseHasThePhotonCountsMeanAndVariance) {
+    for (const auto& [photons, level] : {std::pair{1000.0, 0.3}, std::pair{20.0, 0.5}, std::pair{4.0, 1.0}}) {
+        const Image flat(256, 256, static_cast<float>(level));
+        DetectorSettings s;
+        s.photonsPerPixel = photons;
+        s.logOutput = false;
+        s.seed = 7;
+        double mean = 0.0, variance = 0.0;
+        meanAndVariance(detectedImage(flat, s), mean, variance);
+        // n = 65536 pixels: the mean within 4 standard errors, the variance within 3 %.
+        const double expectedVariance = level / photons;  // (N T) / N^2
+        EXPECT_NEAR(mean, level, 4.0 * std::sqrt(expectedVariance / 65536.0)) << photons;
+        EXPECT_NEAR(variance, expectedVariance, 0.03 * expectedVariance) << photons;
+    }
+}
+
+TEST(DetectorModel, TheSameImageForASeedWhateverTheThreads) {
+    Image ramp(64, 48);
+    for (std::size_t i = 0; i < ramp.pixels.size(); ++i) ramp.pixels[i] = static_cast<float>(i % 97) / 97.0f;
+    DetectorSettings s;
+    s.photonsPerPixel = 300.0;
+    s.electronicNoise = 2.0;
+    s.blurSigmaPixels = 1.2;
+    s.scatterToPrimary = 0.3;
+    s.threads = 1;
+    const Image one = detectedImage(ramp, s);
+    s.threads = 2;
+    EXPECT_EQ(one.pixels, detectedImage(ramp, s).pixels);
+    s.seed = 2;
+    EXPECT_NE(one.pixels, detectedImage(ramp, s).pixels);
+}
+
+TEST(DetectorModel, BlurKeepsTheTotalAndSpreadsAPointBySigma) {
+    Image point(41, 41, 0.0f);
+    point.at(20, 20) = 1.0f;
+    const Image b = gaussianBlur(point, 2.5, 1);
+    double total = 0.0, second = 0.0;
+    for (int r = 0; r < 41; ++r)
+        for (int c = 0; c < 41; ++c) {
+            total += b.at(c, r);
+            second += b.at(c, r) * (c - 20) * (c - 20);
+        }
+    EXPECT_NEAR(total, 1.0, 1e-5);
+    EXPECT_NEAR(std::sqrt(second / total), 2.5, 0.02);  // the kernel is cut at 3 sigma
+}
+
+TEST(DetectorModel, ScatterLeavesAnOpenFieldAtOneAndFillsShadows) {
+    Image step(80, 20, 1.0f);
+    for (int r = 0; r < 20; ++r)
+        for (int c = 40; c < 80; ++c) step.at(c, r) = 0.1f;
+    DetectorSettings s;
+    s.scatterToPrimary = 0.5;
+    s.scatterSigmaMm = 5.0;
+    s.logOutput = false;
+    const Image out = detectedImage(step, s);
+    EXPECT_NEAR(out.at(2, 10), 1.0, 1e-3);    // far inside the open field
+    EXPECT_GT(out.at(45, 10), 0.1f);          // the shadow's edge gets scatter
+    EXPECT_NEAR(out.at(78, 10), 0.1, 2e-3);   // far inside the shadow: its own scatter only
+    s.logOutput = true;
+    EXPECT_NEAR(detectedImage(step, s).at(78, 10), -std::log(out.at(78, 10)), 1e-5);
+    s.electronicNoise = 1.0;
+    EXPECT_THROW(detectedImage(step, s), Error);  // counts without photons
+}
+
+}  // namespace
+}  // namespace fm::test
