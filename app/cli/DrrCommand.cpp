@@ -247,7 +247,7 @@ void renderBatch(const DrrArgs& a, const std::vector<fm::DrrJob>& jobs,
 }
 
 // A realistic radiograph (spectral/): the CT's soft tissue and bone by HU, the tube spectrum
-// through them, then scatter, blur and noise. --out .tif is 16-bit (intensity: 65535 I/I0; the
+// through them, then scatter, blur and noise. --out .tif is 16-bit (intensity: 50000 I/I0; the
 // default -ln(I/I0): 4096 counts per unit); other outputs as for any DRR.
 void renderRealistic(const DrrArgs& a, const fm::Volume& volume, const fm::ProjectionGeometry& geometry, int threads) {
     const fm::UnitGuess hu = fm::guessHounsfield(volume);
@@ -297,7 +297,8 @@ void renderRealistic(const DrrArgs& a, const fm::Volume& volume, const fm::Proje
                 a.intensity ? "I/I0" : "-ln(I/I0)", lo, hi);
     if (!a.out.empty()) {
         if (fm::imageFileFormat(a.out, "--out") == fm::ImageFileFormat::Tiff) {
-            const double scale = a.intensity ? 65535.0 : 4096.0;
+            // An open field at 50000 of 65535: room above it for noise and scatter.
+            const double scale = a.intensity ? 50000.0 : 4096.0;
             fm::io::writeFileAtomically(a.out, fm::encodeTiffGrey16(image, scale));
             std::printf("wrote     %s (16-bit, %g counts per unit of %s)\n", a.out.c_str(), scale,
                         a.intensity ? "I/I0" : "-ln(I/I0)");
@@ -512,7 +513,7 @@ FM_REGISTER_COMMAND("drr", 20, [](CLI::App& app) {
                     "The exact values as float32: .mha/.nii (with the detector spacing) or .tif");
     cmd->add_option("--spectrum", a->spectrum,
                     "A realistic radiograph: tube voltage in kVp (TASMIP, 30-140) with filter=MM "
-                    "aluminium (default 2.5) and bin=KEV (default 2), or mono=KEV for one energy; "
+                    "aluminium (default 2.5) and bin=KEV (default 3), or mono=KEV for one energy; "
                     "materials and densities from HU; output -ln(I/I0), or I/I0 with --intensity; "
                     ".tif outputs are 16-bit (docs/drr.md)");
     cmd->add_option("--detector", a->detector,

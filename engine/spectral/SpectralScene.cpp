@@ -61,43 +61,6 @@ MassImages renderMassImages(const SpectralScene& scene, const ProjectionGeometry
     return out;
 }
 
-Image transmissionImage(const MassImages& masses, const Spectrum& spectrum, DetectorResponse detector, int threads) {
-    const std::size_t bins = spectrum.energyKeV.size(), materials = masses.materials.size();
-    if (bins == 0) throw Error("an empty spectrum");
-    // Per bin: its weight and each material's mu/rho (cm^2/g).
-    // Float exponentials: the per-pixel sum is most of the cost, and float carries 7 digits.
-    std::vector<float> weight(bins), muRho(bins * materials);
-    double total = 0.0;
-    for (std::size_t b = 0; b < bins; ++b) {
-        weight[b] = static_cast<float>(spectrum.photons[b] *
-                                       (detector == DetectorResponse::Integrating ? spectrum.energyKeV[b] : 1.0));
-        total += weight[b];
-        for (std::size_t m = 0; m < materials; ++m)
-            muRho[b * materials + m] = static_cast<float>(masses.materials[m]->muRhoAt(spectrum.energyKeV[b]));
-    }
-    if (!(total > 0.0)) throw Error("a spectrum without photons");
-    for (float& w : weight) w = static_cast<float>(w / total);
-    const Image& first = masses.mass.front();
-    Image out(first.width, first.height);
-    out.spacing = first.spacing;
-    parallelFor(first.height, threads, [&](int begin, int end) {
-        std::vector<float> a(materials);
-        for (int row = begin; row < end; ++row)
-            for (int col = 0; col < first.width; ++col) {
-                const std::size_t i = static_cast<std::size_t>(row) * first.width + col;
-                for (std::size_t m = 0; m < materials; ++m) a[m] = std::max(0.0f, masses.mass[m].pixels[i]);
-                float t = 0.0f;
-                for (std::size_t b = 0; b < bins; ++b) {
-                    float exponent = 0.0f;
-                    for (std::size_t m = 0; m < materials; ++m) exponent += muRho[b * materials + m] * a[m];
-                    t += weight[b] * std::exp(-exponent);
-                }
-                out.pixels[i] = static_cast<float>(t);
-            }
-    });
-    return out;
-}
-
 Image simulateRadiograph(const SpectralScene& scene, const ProjectionGeometry& camera, const Spectrum& spectrum,
                          DetectorResponse detector, const DetectorSettings& settings) {
     const MassImages masses = renderMassImages(scene, camera, settings.threads);

@@ -29,11 +29,11 @@ Spectrum rebinned(const Spectrum& spectrum, double keV);
 Spectrum monoenergetic(double keV);
 
 // What `--spectrum` says: "80" (kVp), options after commas: filter=MM (aluminium, default 2.5,
-// the usual minimum total filtration of a diagnostic tube), bin=KEV (default 2).
+// the usual minimum total filtration of a diagnostic tube), bin=KEV (default 3: within 0.004 of 1 keV bins in -ln(I/I0) through a pelvis, docs/drr.md).
 struct SpectrumSpec {
     double kVp = 80.0;
     double filterMmAl = 2.5;
-    double binKeV = 2.0;
+    double binKeV = 3.0;
     bool mono = false;  // "mono=KEV": one energy instead of a tube spectrum
     double monoKeV = 0.0;
 };
