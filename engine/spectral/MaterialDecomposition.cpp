@@ -23,7 +23,7 @@ MaterialVolumes decomposeMaterials(const Volume& ct, const Volume* mask, double 
     }
     for (std::size_t i = 0; i < ct.values.size(); ++i) {
         const double hu = ct.values[i];
-        if (std::isnan(hu) || hu < kAirHU) continue;
+        if (std::isnan(hu) || hu < kAirBelowHU) continue;
         const float mgPerCm3 = static_cast<float>(std::round(1000.0 * densityFromHU(hu)));
         const bool bone = mask ? mask->values[i] > 0.0f : hu > threshold;
         (bone ? m.bone : m.softTissue).values[i] = mgPerCm3;

@@ -17,7 +17,7 @@ namespace fm {
 // Voxels below this HU are air and weigh nothing: 300 mm of air attenuate 0.6 % at 60 keV, and
 // leaving them out lets the walk skip the air around the patient (as the mu DRR does, where air
 // is 0).
-inline constexpr double kAirHU = -900.0;
+inline constexpr double kAirBelowHU = -900.0;
 
 // Voxels above this HU are bone (DeepDRR's threshold; soft tissue and fat lie below).
 inline constexpr double kBoneThresholdHU = 350.0;

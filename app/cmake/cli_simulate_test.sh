@@ -1,0 +1,49 @@
+#!/usr/bin/env bash
+# `fluoromatch simulate` end to end on the knee phantom (its femur flexing over the rest):
+#  1. the trial it writes is tracked by `track` from the first frame's truth, and `compare`
+#     finds every frame within 0.5 mm and 0.5 deg of the truth it wrote (the truth, the frames
+#     and the trial agree on every frame convention);
+#  2. the same seed gives the same bytes on 1 and 2 threads, another seed other frames;
+#  3. refusals: camera placement options with --cameras, a volume not in HU, an unknown bone,
+#     a motion it cannot read.
+set -uo pipefail
+FM=$1
+T=$(mktemp -d)
+trap 'rm -rf "$T"' EXIT
+fail() { echo "FAIL: $*"; exit 1; }
+sim() {  # sim OUT args...
+    local out=$1; shift
+    "$FM" simulate --volume phantom:knee --labels phantom:knee --bone femur --motion "rotate:axis=x,angle=0:20" \
+        --frames 5 --size 256x256 --out "$out" "$@"
+}
+
+out=$(sim "$T/a" --threads 2 2>/dev/null) || fail "simulate exited $?: $out"
+for f in trial.json cam1.txt cam2.txt femur.mha femur_truth.tra femur_start.tra cam1/frame_0004.tif cam2/frame_0000.tif; do
+    [ -s "$T/a/$f" ] || fail "$f not written: $(ls -R "$T/a")"
+done
+[ "$(wc -l < "$T/a/femur_truth.tra")" -eq 5 ] || fail "the truth must have 5 rows"
+"$FM" radiograph "$T/a/cam1/frame_0002.tif" --out "$T/f.png" | grep -q "16-bit" || fail "frames are 16-bit TIFFs"
+"$FM" track --trial "$T/a/trial.json" --bone femur --start "$T/a/femur_start.tra" --out "$T/a/tracked.tra" \
+    >/dev/null 2>&1 || fail "track on the simulated trial failed"
+out=$("$FM" compare --truth "$T/a/femur_truth.tra" --tra "$T/a/tracked.tra" --trial "$T/a/trial.json" --bone femur) ||
+    fail "compare exited $?: $out"
+grep -q "0.5 mm and 0.5 deg: 100.0 % (5 of 5)" <<<"$out" || fail "not every frame within 0.5 mm / 0.5 deg: $out"
+
+sim "$T/b" --threads 1 >/dev/null 2>&1 || fail "1 thread"
+sim "$T/c" --threads 2 --seed 2 >/dev/null 2>&1 || fail "seed 2"
+for f in cam1/frame_0003.tif cam2/frame_0001.tif femur_truth.tra; do
+    cmp -s "$T/a/$f" "$T/b/$f" || fail "$f differs between 2 threads and 1"
+done
+cmp -s "$T/a/cam1/frame_0003.tif" "$T/c/cam1/frame_0003.tif" && fail "another seed gave the same frame"
+
+expect_error() {  # expect_error TEXT args...
+    local text=$1; shift
+    if "$FM" simulate "$@" >"$T/out" 2>&1; then fail "'simulate $*' succeeded"; fi
+    grep -q -- "$text" "$T/out" || { cat "$T/out"; fail "'simulate $*' did not say '$text'"; }
+}
+common=(--labels phantom:knee --frames 2 --out "$T/x")
+expect_error "--separation places cameras" --volume phantom:knee "${common[@]}" --bone femur --motion "rotate:axis=x,angle=0:2" --cameras "$T/a/cam1.txt" --separation 50
+expect_error "needs a CT in HU" --volume phantom:sphere --labels components --bone "component 1" --frames 2 --out "$T/x" --motion "rotate:axis=x,angle=0:2"
+expect_error "humerus" --volume phantom:knee "${common[@]}" --bone humerus --motion "rotate:axis=x,angle=0:2"
+expect_error "--motion" --volume phantom:knee "${common[@]}" --bone femur --motion "spin:fast"
+echo "simulate: ok"

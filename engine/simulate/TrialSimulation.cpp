@@ -1,0 +1,188 @@
+#include "simulate/TrialSimulation.h"
+
+#include <chrono>
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+
+#include "bones/BoneVolume.h"
+#include "bones/LabelTable.h"
+#include "camera/MayaCam.h"
+#include "core/Error.h"
+#include "drr/Drr.h"
+#include "io/AtomicFile.h"
+#include "io/ImageFileWriter.h"
+#include "io/VolumeWriter.h"
+#include "pose/AutoscoperTra.h"
+#include "simulate/JointMotion.h"
+#include "spectral/MaterialDecomposition.h"
+#include "spectral/SpectralScene.h"
+#include "track/TrialScene.h"
+#include "trial/Trial.h"
+
+namespace fm {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// The exposure: as a fluoroscope's automatic exposure control sets it, the anatomy's median
+// transmission (over the pixels the body attenuates, I/I0 < 0.9, in frame 0) reads this many
+// counts of the 16-bit range; the open field saturates. Kept for the whole trial per camera.
+constexpr double kCountsAtReference = 20000.0;
+
+// A log-compressed signal (video fluoroscopy, most flat-panel outputs): the open field at
+// kLogTop, each unit of -ln(I/I0) kCountsPerLogUnit darker (14 units fit: beyond any body).
+constexpr double kLogTop = 60000.0;
+constexpr double kCountsPerLogUnit = 4096.0;
+
+// The median of I/I0 over attenuated pixels: the exposure's reference level.
+double referenceLevel(const Image& transmission) {
+    std::vector<float> body;
+    for (float v : transmission.pixels)
+        if (v < 0.9f) body.push_back(v);
+    if (body.empty()) return 1.0;
+    std::nth_element(body.begin(), body.begin() + body.size() / 2, body.end());
+    return std::max(1e-6, double(body[body.size() / 2]));
+}
+
+XrayModelPtr densityModel(const Volume& mgPerCm3) {
+    DrrValueOptions options;
+    options.values = DrrValues::Raw;
+    return std::make_shared<VolumeXrayModel>(prepareDrrVolume(mgPerCm3, options));
+}
+
+std::string frameName(int f) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "frame_%04d.tif", f);
+    return buf;
+}
+
+}  // namespace
+
+std::vector<PinholeCamera> camerasAround(const glm::dvec3& centre, double extentMm, int count, double separationDeg,
+                                         double distanceMm, glm::ivec2 imageSize) {
+    if (count < 1 || count > 8) throw Error("cameras: 1 to 8");
+    if (!(distanceMm > extentMm)) throw Error("the source must lie outside the bone (distance > its size)");
+    std::vector<PinholeCamera> cameras;
+    const double f = 0.8 * std::min(imageSize.x, imageSize.y) * distanceMm / std::max(extentMm, 1.0);
+    for (int k = 0; k < count; ++k) {
+        const glm::dvec3 view = rotationAbout({0, 0, 1}, k * separationDeg, glm::dvec3(0.0)).rotation * glm::dvec3(0, 1, 0);
+        const glm::dvec3 down{0, 0, -1};             // image rows go inferior
+        const glm::dvec3 right = glm::cross(down, view);  // x = y x z (right-handed camera)
+        PinholeCamera c;
+        c.fx = c.fy = f;
+        c.cx = (imageSize.x - 1) / 2.0;
+        c.cy = (imageSize.y - 1) / 2.0;
+        c.imageSize = imageSize;
+        for (int col = 0; col < 3; ++col) {
+            c.setR(0, col, right[col]);
+            c.setR(1, col, down[col]);
+            c.setR(2, col, view[col]);
+        }
+        const glm::dvec3 source = centre - distanceMm * view;
+        c.translation = -(c.rotation * source);
+        c.validate("simulated camera " + std::to_string(k + 1));
+        cameras.push_back(c);
+    }
+    return cameras;
+}
+
+TrialSimulationResult simulateTrial(const TrialSimulationSpec& s, const std::function<void(int, int)>& progress) {
+    // 1. The bone, the background, the displaced tissue, and where everything sits.
+    BoneSelection bone;
+    bone.name = s.boneName;
+    bone.labels = s.boneLabels;
+    requireVoxels(bone, s.labels, "the label map");
+    const Volume boneCt = boneVolume(s.ct, s.labels, bone);
+    const Volume background = volumeWithout(s.ct, s.labels, bone, static_cast<float>(s.fillHU));
+    Volume displaced = boneMask(s.labels, bone);
+    const float fill = static_cast<float>(-std::round(1000.0 * densityFromHU(s.fillHU)));
+    for (float& v : displaced.values) v = v > 0.0f ? fill : 0.0f;
+    const glm::dvec3 centre = boneCentroid(s.labels, bone);
+    const JointMotion motion = parseJointMotion(s.motion, s.frames, centre);
+    std::vector<PinholeCamera> cameras = s.cameras;
+    if (cameras.empty())
+        cameras = camerasAround(centre, glm::length(boneCt.extent()), s.cameraCount, s.separationDeg,
+                                s.sourceDistanceMm, s.imageSize);
+    const Spectrum spectrum = makeSpectrum(s.spectrum);
+    validateDetectorSettings(s.detector);
+
+    // 2. The spectral scene: the background at the identity, the bone and the displaced tissue
+    //    at the bone's pose (layers 2..4, moved each frame).
+    SpectralScene scene;
+    addCtLayers(scene, background, nullptr, "background", RigidTransform::identity(), s.detector.threads);
+    addCtLayers(scene, boneCt, nullptr, s.boneName, RigidTransform::identity(), s.detector.threads);
+    scene.layers.push_back({&materialTable("soft_tissue"),
+                            {"displaced tissue", densityModel(displaced), RigidTransform::identity(), true}});
+
+    // 3. The files that do not change over the frames.
+    fs::create_directories(s.out);
+    Trial trial;
+    trial.name = s.out.filename().string();
+    trial.source = s.out / "trial.json";
+    trial.renderResolution = s.imageSize;
+    for (std::size_t c = 0; c < cameras.size(); ++c) {
+        const std::string name = "cam" + std::to_string(c + 1);
+        fs::create_directories(s.out / name);
+        writeMayaCam2(s.out / (name + ".txt"), cameras[c]);
+        trial.cameras.push_back({name, s.out / (name + ".txt"), s.out / name});
+    }
+    TrialBone trialBone;
+    trialBone.name = s.boneName;
+    trialBone.volume = s.out / (s.boneName + ".mha");
+    writeVolume(boneCt, trialBone.volume);
+    trial.bones.push_back(trialBone);
+
+    // 4. The frames; each camera's exposure set on frame 0 (photonsPerPixel is then the photons
+    //    at the reference level: the noise the anatomy has, whatever its thickness).
+    const auto started = std::chrono::steady_clock::now();
+    std::vector<double> reference(cameras.size(), 0.0);
+    for (int f = 0; f < s.frames; ++f) {
+        for (std::size_t layer = 2; layer < scene.layers.size(); ++layer)
+            scene.layers[layer].object.worldFromObject = motion.poses[static_cast<std::size_t>(f)];
+        for (std::size_t c = 0; c < cameras.size(); ++c) {
+            const Image primary = transmissionImage(renderMassImages(scene, toProjectionGeometry(cameras[c]), s.detector.threads),
+                                                    spectrum, DetectorResponse::Integrating, s.detector.threads);
+            if (f == 0) reference[c] = referenceLevel(primary);
+            DetectorSettings detector = s.detector;
+            detector.logOutput = s.logSignal;
+            detector.photonsPerPixel = s.detector.photonsPerPixel / reference[c];
+            detector.seed = s.detector.seed * 1000003ull + static_cast<std::uint64_t>(f) * 101ull + c;
+            Image image = detectedImage(primary, detector);
+            if (s.logSignal) {
+                // Log-compressed, dense matter dark: kLogTop - kCountsPerLogUnit (-ln I/I0).
+                for (float& v : image.pixels) v = static_cast<float>(kLogTop - kCountsPerLogUnit * v);
+            }
+            io::writeFileAtomically(s.out / trial.cameras[c].name / frameName(f),
+                                    encodeTiffGrey16(image, s.logSignal ? 1.0 : kCountsAtReference / reference[c]));
+        }
+        if (progress) progress(f + 1, s.frames);
+    }
+    TrialSimulationResult r;
+    r.frames = s.frames;
+    r.referenceLevels = reference;
+    r.cameras = cameras.size();
+    r.secondsPerImage = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() /
+                        (s.frames * static_cast<double>(cameras.size()));
+
+    // 5. The trial as `track` reads it, and the truth in its .tra convention.
+    r.trial = s.out / "trial.json";
+    writeTrialJson(r.trial, trial);
+    const TrialScene loaded = loadTrialScene(readTrial(r.trial), {s.boneName}, s.detector.threads);
+    TraFile truth, start;
+    truth.frames.assign(static_cast<std::size_t>(s.frames), {std::nullopt});
+    start.frames = truth.frames;
+    for (int f = 0; f < s.frames; ++f)
+        truth.frames[static_cast<std::size_t>(f)][0] =
+            traPoseFromObject(loaded, s.boneName, motion.poses[static_cast<std::size_t>(f)]);
+    start.frames[0][0] = truth.frames[0][0];
+    r.truth = s.out / (s.boneName + "_truth.tra");
+    r.start = s.out / (s.boneName + "_start.tra");
+    writeTra(r.truth, truth);
+    writeTra(r.start, start);
+    return r;
+}
+
+}  // namespace fm

@@ -1,0 +1,72 @@
+#pragma once
+// `fluoromatch simulate`: a whole synthetic trial with its truth, as a tracking study records
+// one, from a CT and a bone of its label map moving over the rest of it:
+//   1. the cameras: the given calibrations, or two (or more) placed around the bone, `separation`
+//      degrees apart about the CT's superior axis, looking at the bone's centre
+//   2. the scene: the CT with the bone's voxels turned to soft tissue (fillHU), the bone at its
+//      pose of each frame, and, at the same pose, the soft tissue it displaces taken away (so the
+//      bone shows its attenuation in excess of that tissue, as in a body)
+//   3. per frame and camera a realistic radiograph (spectral/: the spectrum, scatter, blur,
+//      Poisson noise seeded by (seed, frame, camera)), a 16-bit TIFF of the detector's counts,
+//      exposed as automatic exposure control does: each camera's median attenuated transmission
+//      in frame 0 reads 20000 counts (the open field saturates), and detector.photonsPerPixel is
+//      the photons at that level
+//   4. the files: each camera's MayaCam 2.0 calibration and frames, the bone volume (.mha, HU, in
+//      the CT's frame), trial.json (what `track` reads), the truth (BONE_truth.tra, Autoscoper's
+//      volume frame as the trial's .tra files hold it) and the first frame's truth alone
+//      (BONE_start.tra, to start tracking from).
+// Deterministic for a seed, whatever the thread count.
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "camera/PinholeCamera.h"
+#include "spectral/DetectorModel.h"
+#include "spectral/Spectrum.h"
+#include "volume/Volume.h"
+
+namespace fm {
+
+struct TrialSimulationSpec {
+    Volume ct;                        // HU
+    Volume labels;                    // on the CT's grid
+    std::vector<int> boneLabels;      // the moving bone's labels
+    std::string boneName;
+    std::vector<PinholeCamera> cameras;  // empty: placed around the bone (below)
+    int cameraCount = 2;
+    double separationDeg = 80.0;
+    double sourceDistanceMm = 1000.0;    // source to the bone's centre
+    glm::ivec2 imageSize{512, 512};
+    std::string motion;               // simulate/JointMotion.h
+    int frames = 20;
+    double fillHU = 40.0;             // the soft tissue left where the bone was (muscle)
+    SpectrumSpec spectrum;
+    DetectorSettings detector;        // its seed is mixed with the frame and the camera
+    // The detector's signal: log-compressed (60000 - 4096 (-ln I/I0), dense matter dark, as
+    // video fluoroscopy gives it and a trial's frames are prepared: inverted) or linear (counts
+    // proportional to I, exposed as above: what a raw flat panel gives; a trial needs its frames
+    // log-converted then, which trial files cannot say yet).
+    bool logSignal = true;
+    std::filesystem::path out;
+};
+
+struct TrialSimulationResult {
+    std::filesystem::path trial, truth, start;
+    int frames = 0;
+    std::size_t cameras = 0;
+    double secondsPerImage = 0.0;
+    std::vector<double> referenceLevels;  // per camera: the I/I0 its exposure was set to
+};
+
+// Progress: (frame done, frames).
+TrialSimulationResult simulateTrial(const TrialSimulationSpec& spec,
+                                    const std::function<void(int, int)>& progress = {});
+
+// Cameras looking at `centre` from `distanceMm`, the first along the CT's +y (anterior to
+// posterior), the others turned `separationDeg` after each other about +z (superior), image up =
+// superior; the focal length frames `extentMm` in 80 % of the smaller image side.
+std::vector<PinholeCamera> camerasAround(const glm::dvec3& centre, double extentMm, int count,
+                                         double separationDeg, double distanceMm, glm::ivec2 imageSize);
+
+}  // namespace fm
