@@ -10,6 +10,7 @@
 #include "core/Error.h"
 #include "platform/RenderBackend.h"
 #include "source/VolumeSource.h"
+#include "spectral/Spectrum.h"
 #include "state/RecentFiles.h"
 #include "ui/App.h"
 #include "ui/AppShell.h"
@@ -27,6 +28,7 @@ struct AppArgs {
     std::string fallbackOut = "fluoromatch-screenshot.png";
     fm::cli::WorkspaceArgs workspace;
     int threads = 0;
+    std::string spectrum;  // the reference as a realistic radiograph
 };
 
 // The game's options in a window; the shell opens a CT asked from inside with them.
@@ -35,6 +37,7 @@ fm::app::AppOptions windowGameOptions(const AppArgs& args) {
     options.volumeSpec = args.volume;
     options.labelsSpec = args.labels;
     options.labelTable = args.labelTable;
+    options.spectrum = args.spectrum;
     options.userDrrOffThread = true;  // a window's frame never waits for the user's DRR
     options.seed =
         static_cast<std::uint64_t>(std::chrono::system_clock::now().time_since_epoch().count());
@@ -100,6 +103,7 @@ void runApp(const AppArgs& args) {
         headless.app.volumeSpec = args.volume;
         headless.app.labelsSpec = args.labels;
         headless.app.labelTable = args.labelTable;
+        headless.app.spectrum = args.spectrum;
         headless.app.showTimings = false;  // reproducible image
         fm::app::writeHeadlessScreenshot(headless, args.fallbackOut);
         return;
@@ -137,6 +141,17 @@ FM_REGISTER_COMMAND("app", 1, [](CLI::App& cli) {
                     "names of the labels to show as bones: JSON {\"name\": label} or CSV lines "
                     "label,name")
         ->needs(cmd->get_option("--labels"));
+    cmd->add_option("--spectrum", args->spectrum,
+                    "the reference as a realistic radiograph at this spectrum (as drr --spectrum: "
+                    "kVp[,filter=MM][,bin=KEV]); a CT in HU")
+        ->check([](const std::string& text) {
+            try {
+                fm::parseSpectrumSpec(text);
+            } catch (const fm::Error& e) {
+                return std::string(e.what());
+            }
+            return std::string();
+        });
     cmd->add_option("--frames", args->frames,
                     "exit after N frames (smoke tests); 0 = run until "
                     "the window is closed")
@@ -155,7 +170,7 @@ FM_REGISTER_COMMAND("app", 1, [](CLI::App& cli) {
             fm::cli::WorkspaceArgs scratch;
             return std::vector<fm::cli::CommandMode>{
                 {"app", "the matching game on a CT",
-                 {"volume", "labels", "label-table", "frames", "require-window", "headless-out",
+                 {"volume", "labels", "label-table", "spectrum", "frames", "require-window", "headless-out",
                   "threads"}},
                 {"app --trial/--reference", "the real X-ray workspace",
                  fm::cli::optionNames([&](CLI::App* c) { fm::cli::addWorkspaceOptions(c, scratch); },

@@ -12,6 +12,7 @@
 #include "geometry/Pose.h"
 #include "source/VolumeSource.h"
 #include "ui/DragMeasurement.h"
+#include "spectral/Spectrum.h"
 #include "ui/HeadlessScreenshot.h"
 #include "workspace/WorkspaceHeadless.h"
 
@@ -23,6 +24,7 @@ struct ScreenshotArgs {
     std::string volume = fm::kDefaultVolumeSpec;
     std::string pose, referencePose, view, compare = "difference";
     std::string labels, labelTable;
+    std::string spectrum;  // the reference as a realistic radiograph
     std::uint64_t seed = 1;
     bool match = false, help = false, timings = false;
     int threads = 0;
@@ -90,6 +92,10 @@ void runScreenshot(const ScreenshotArgs& args) {
     if (!args.pose.empty()) options.app.userPose = fm::parsePose(args.pose);
     if (!args.referencePose.empty()) options.app.referencePose = fm::parsePose(args.referencePose);
     if (!args.view.empty()) options.app.view = parseView(args.view);
+    if (!args.spectrum.empty()) {
+        fm::parseSpectrumSpec(args.spectrum);  // refused now, not after loading
+        options.app.spectrum = args.spectrum;
+    }
     options.compare = parseCompare(args.compare);
     options.pressMatch = args.match;
     options.showHelp = args.help;
@@ -151,6 +157,9 @@ FM_REGISTER_COMMAND("screenshot", 2, [](CLI::App& cli) {
                     "the hidden reference pose x,y,z,az,el,rot; default: picked by --seed")
         ->check(fm::cli::kPoseText);
     cmd->add_option("--view", a->view, "3D view camera az,el,zoom (deg, deg, factor)");
+    cmd->add_option("--spectrum", a->spectrum,
+                    "the reference as a realistic radiograph at this spectrum (as drr --spectrum: "
+                    "kVp[,filter=MM][,bin=KEV]); a CT in HU");
     cmd->add_option("--seed", a->seed, "seed of the reference choice")
         ->capture_default_str()
         ->check(fm::cli::kSeedNumber);
@@ -180,7 +189,7 @@ FM_REGISTER_COMMAND("screenshot", 2, [](CLI::App& cli) {
             fm::cli::WorkspaceArgs scratch;
             return std::vector<fm::cli::CommandMode>{
                 {"screenshot", "the matching game on a CT",
-                 {"out", "size", "volume", "labels", "label-table", "pose", "reference-pose", "view",
+                 {"out", "size", "volume", "labels", "label-table", "pose", "reference-pose", "view", "spectrum",
                   "seed", "compare", "match", "help-window", "timings", "threads", "measure-drag",
                   "drag-modes"}},
                 {"screenshot --trial/--reference", "the real X-ray workspace",

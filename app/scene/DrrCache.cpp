@@ -12,6 +12,17 @@ ProjectionGeometry appGeometry(const LoadedScene& scene, const Pose& pose, int d
     return downsample > 1 ? g.downsampled(downsample) : g;
 }
 
+Image realisticAppImage(const SpectralScene& scene, const ProjectionGeometry& geometry, const std::string& spectrum,
+                        int threads) {
+    DetectorSettings detector;
+    detector.photonsPerPixel = kRealisticPhotons;
+    detector.blurSigmaPixels = kRealisticBlurPixels;
+    detector.scatterToPrimary = kRealisticScatter;
+    detector.threads = threads;
+    return simulateRadiograph(scene, geometry, makeSpectrum(parseSpectrumSpec(spectrum)), DetectorResponse::Integrating,
+                              detector);
+}
+
 DrrRender renderAppImage(const LoadedScene& scene, const DrrKey& key, int threads) {
     const Pose pose = Pose::fromArray(key.pose);
     DrrRenderOptions options;
@@ -22,6 +33,8 @@ DrrRender renderAppImage(const LoadedScene& scene, const DrrKey& key, int thread
         SampledSlice slice = renderAppSlice(scene, pose, key.downsample, threads);
         out.image = std::move(slice.image);
         out.dataMask = std::move(slice.mask);
+    } else if (!key.spectrum.empty() && scene.spectral && key.objects.empty()) {
+        out.image = realisticAppImage(*scene.spectral, appGeometry(scene, pose, key.downsample), key.spectrum, threads);
     } else if (key.objects.empty() || !scene.bones) {
         out.image = renderDrr(*scene.drrVolume, appGeometry(scene, pose, key.downsample), options);
     } else {
@@ -51,8 +64,8 @@ void DrrCache::insert(const DrrKey& key, const DrrRender& render) {
 }
 
 DrrRender DrrCache::get(const LoadedScene& scene, const Pose& pose, int downsample, int threads,
-                        ImagingMode mode, const ObjectStates& objects) {
-    const DrrKey key{scene.generation, pose.toArray(), downsample, mode, objects};
+                        ImagingMode mode, const ObjectStates& objects, const std::string& spectrum) {
+    const DrrKey key{scene.generation, pose.toArray(), downsample, mode, objects, spectrum};
     if (auto hit = find(key)) return std::move(*hit);
     DrrRender out = renderAppImage(scene, key, threads);
     insert(key, out);

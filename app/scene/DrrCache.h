@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <deque>
 #include <optional>
+#include <string>
 
 #include "core/Image.h"
 #include "drr/Drr.h"
@@ -21,6 +22,9 @@ struct DrrKey {
     int downsample = 1;  // detector factor (coarse preview > 1)
     ImagingMode mode = ImagingMode::Xray;  // a DRR, or a slice (scene/SliceImages.h)
     ObjectStates objects;                  // empty: the CT as loaded
+    // Not empty: a realistic radiograph at this spectrum (`drr --spectrum` text; X-ray mode, the
+    // whole CT): the reference image's option (AppState::realistic).
+    std::string spectrum;
     bool operator==(const DrrKey&) const = default;
 };
 
@@ -41,7 +45,7 @@ class DrrCache {
     // `objects` (objectStates of scene.bones, X-ray mode): the bones shown and where; empty:
     // the whole CT.
     DrrRender get(const LoadedScene& scene, const Pose& pose, int downsample, int threads = 0, ImagingMode mode = ImagingMode::Xray,
-                  const ObjectStates& objects = {});
+                  const ObjectStates& objects = {}, const std::string& spectrum = {});
     // The cached image of `key` (made most recent), if any.
     std::optional<DrrRender> find(const DrrKey& key);
     // Keeps an image rendered elsewhere (the user's DRR worker); counts as a render.
@@ -64,6 +68,15 @@ class DrrCache {
 // Renders the image `key` names (no cache): a DRR, the bones' DRR or a slice. Safe on any
 // thread (reads the scene only).
 DrrRender renderAppImage(const LoadedScene& scene, const DrrKey& key, int threads);
+
+// The reference as a realistic radiograph (engine/spectral): -ln(I/I0) through the CT's soft
+// tissue and bone at `spectrum` (`drr --spectrum` text), with a fluoroscope's scatter, blur and
+// noise (the noise seeded: the same image for the same pose).
+inline constexpr double kRealisticPhotons = 1e4;
+inline constexpr double kRealisticBlurPixels = 0.5;
+inline constexpr double kRealisticScatter = 0.1;
+Image realisticAppImage(const SpectralScene& scene, const ProjectionGeometry& geometry, const std::string& spectrum,
+                        int threads);
 
 // The exact geometry the app renders for a pose in a scene (downsample 1 = full film).
 ProjectionGeometry appGeometry(const LoadedScene& scene, const Pose& pose, int downsample = 1);

@@ -85,6 +85,11 @@ std::shared_ptr<LoadedScene> buildScene(const std::string& spec, const SceneProg
     start = std::chrono::steady_clock::now();
     progress("preparing the DRR volume", 0.35f);
     scene->drrVolume = prepareDrrVolume(*volume, appDrrValueOptions(*volume));
+    if (looksLikeHounsfield(*volume)) {
+        auto spectral = std::make_shared<SpectralScene>();
+        addCtLayers(*spectral, *volume, nullptr, "ct", RigidTransform::identity());
+        scene->spectral = std::move(spectral);
+    }
     scene->prepareSeconds = secondsSince(start);
 
     start = std::chrono::steady_clock::now();

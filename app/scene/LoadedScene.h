@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "drr/Drr.h"
+#include "spectral/SpectralScene.h"
 #include "geometry/Pose.h"
 #include "mesh/Mesh.h"
 #include "slice/SliceGeometry.h"
@@ -34,6 +35,8 @@ struct LoadedScene {
     double translationRangeMm = 100.0;       // slider range for the offsets
     std::vector<glm::dvec3> bonePoints;      // mTRE targets (engine/match); empty if no bone
     std::shared_ptr<const SceneBones> bones;  // its bones as objects (the knee phantom), or null
+    // The CT as materials for a realistic reference radiograph (engine/spectral), when in HU.
+    std::shared_ptr<const SpectralScene> spectral;
     double loadSeconds = 0.0, prepareSeconds = 0.0, meshSeconds = 0.0;
     std::string summary;  // one line for the UI: size and spacing
     // The MRI slice mode (scene/SliceImages.h): the volume for trilinear slicing, the slice

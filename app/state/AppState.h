@@ -260,6 +260,14 @@ std::array<ParameterSpec, kParameterCount> boneMotionSpecs();
 // Bone-only DRRs for real CTs, whose DRRs otherwise show mostly soft tissue: voxels whose
 // stored value (HU for CTs) is below `level` are left out of the DRR volume, so of both images,
 // Match and Solve. Off by default; the level starts at the scene's bone level on every load.
+// The reference image as a realistic radiograph (engine/spectral: a tube spectrum through the
+// CT's materials, scatter, blur, noise) instead of a DRR; X-ray mode on a CT in HU, the whole CT.
+struct RealisticReference {
+    bool enabled = false;
+    bool available = false;      // the scene has HU (and no bones are shown)
+    std::string spectrum = "80";  // `drr --spectrum` text
+};
+
 struct DrrThreshold {
     bool enabled = false;
     float level = 300.0f;
@@ -313,6 +321,7 @@ struct AppState {
     View3d view;
     BoneSurface bone;
     DrrThreshold drrThreshold;
+    RealisticReference realistic;
     bool showHelp = false;
     // The parameter the arrow keys nudge (KeyboardNudge): Up/Down or a click select it.
     int selectedParameter = kOffsetX;

@@ -44,6 +44,10 @@ App::App(RenderBackend& backend, AppOptions options)
     backend_.initImGui();
     ImGui_ImplOpenGL3_Init("#version 330 core");
 
+    if (!options_.spectrum.empty()) {
+        state_.realistic.enabled = true;
+        state_.realistic.spectrum = options_.spectrum;
+    }
     referenceTexture_ = std::make_unique<render::Texture>();
     userTexture_ = std::make_unique<render::Texture>();
     compareTexture_ = std::make_unique<render::Texture>();
@@ -280,7 +284,8 @@ void App::startSolve() {
 
 void App::startXraySolve(int method) {
     const Image reference =
-        referenceCache_.get(*scene_, state_.referencePose, 1, options_.drrThreads)
+        referenceCache_.get(*scene_, state_.referencePose, 1, options_.drrThreads, ImagingMode::Xray,
+                            {}, referenceSpectrum())
             .image;
     solver_.start(scene_, reference, state_.userPose,
                   appSolveSettings(parseSearchMethod(kSolveMethods[method]), options_.drrThreads));
@@ -397,7 +402,7 @@ void App::processRequests() {
         const Image reference = referenceCache_
                                     .get(*scene_, state_.referencePose, 1,
                                          options_.drrThreads, ImagingMode::Xray,
-                                         referenceObjects())
+                                         shownReferenceObjects(), referenceSpectrum())
                                     .image;
         ++state_.attempts;
         MatchOutcome outcome =
@@ -449,12 +454,14 @@ void App::updateImages() {
     const int threads = options_.drrThreads;
     const ImagingMode mode = state_.mode;
     const Pose& referencePose = referenceCamera();
-    const ObjectStates referenceObjectStates = referenceObjects();
+    state_.realistic.available = realisticReferenceAvailable();
+    const ObjectStates referenceObjectStates = shownReferenceObjects();
+    const std::string spectrum = referenceSpectrum();
     const DrrKey referenceKey{scene_->generation, referencePose.toArray(), 1,
-                              mode, referenceObjectStates};
+                              mode, referenceObjectStates, spectrum};
     if (referenceKey_ != referenceKey) {
         DrrRender r = referenceCache_.get(*scene_, referencePose, 1, threads,
-                                          mode, referenceObjectStates);
+                                          mode, referenceObjectStates, spectrum);
         referenceDrr_ = std::move(r.image);
         referenceDataMask_ = std::move(r.dataMask);
         state_.timings.referenceDrrMs = r.milliseconds;

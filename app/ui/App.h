@@ -45,6 +45,8 @@ struct AppOptions {
     // (the window). Off: each frame waits for the DRR of its own state, so headless screenshots
     // and scripted tests do not depend on timing.
     bool userDrrOffThread = false;
+    // Not empty: the reference as a realistic radiograph at this spectrum (`--spectrum`).
+    std::string spectrum;
     // Bones of the first scene from this label map (and table), built once it is loaded.
     std::string labelsSpec, labelTable;
 };
@@ -116,6 +118,11 @@ class App : public ScriptableApp {
     void installBones();
     ObjectStates userObjects() const;       // the user's DRR: the list's visibility and motions
     ObjectStates referenceObjects() const;  // the reference: unmoved, or the hidden flexion
+    // The realistic reference (AppState::realistic): whether the scene allows it, its spectrum
+    // when shown (empty: a DRR), and the objects the reference image is made of then.
+    bool realisticReferenceAvailable() const;
+    std::string referenceSpectrum() const;
+    ObjectStates shownReferenceObjects() const;
     const Pose& referenceCamera() const;    // the flex game's reference follows the user's camera
     void updateBones();                     // live joint angles, once per frame
     void newFlex();

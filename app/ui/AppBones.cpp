@@ -52,6 +52,23 @@ ObjectStates App::referenceObjects() const {
                                     : std::nullopt);
 }
 
+bool App::realisticReferenceAvailable() const {
+    // The whole CT as loaded: no bone hidden or moved in the reference.
+    if (!scene_ || !scene_->spectral || state_.mode != ImagingMode::Xray || state_.bones.flex.active) return false;
+    if (!state_.bones.restVisible) return false;
+    for (const auto& b : state_.bones.list)
+        if (!b.visible) return false;
+    return true;
+}
+
+std::string App::referenceSpectrum() const {
+    return state_.realistic.enabled && realisticReferenceAvailable() ? state_.realistic.spectrum : std::string();
+}
+
+ObjectStates App::shownReferenceObjects() const {
+    return referenceSpectrum().empty() ? referenceObjects() : ObjectStates{};
+}
+
 const Pose& App::referenceCamera() const {
     // In the flex game the camera is no part of the puzzle: the reference is seen as the user
     // looks, so that any view (lateral for flexion, AP for varus) can help.

@@ -394,7 +394,22 @@ void Ui::comparePane(AppState& state, const Pane& pane, unsigned texture) {
                           "on an image", units);
     if (ImGui::SmallButton("Enlarge")) state.compareEnlarged = true;
     record("button:enlarge-compare");
-    if (state.mode == ImagingMode::Xray) drrThresholdControl(state, controlsWidth);
+    if (state.mode == ImagingMode::Xray) {
+        drrThresholdControl(state, controlsWidth);
+        ImGui::BeginDisabled(!state.realistic.available);
+        ImGui::Checkbox("Realistic", &state.realistic.enabled);
+        record("checkbox:realistic-reference");
+        if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
+            if (state.realistic.available)
+                tooltip("The reference as a real radiograph: %s kVp through the CT's soft tissue and bone "
+                        "(materials and density from HU), scatter, blur and quantum noise (docs/drr.md). "
+                        "Your image stays a DRR; Match and Solve compare the two.",
+                        state.realistic.spectrum.c_str());
+            else
+                tooltip("Needs a CT in HU, shown whole (no bone hidden or moved)");
+        }
+        ImGui::EndDisabled();
+    }
     const Timings& t = state.timings;
     ImGui::Spacing();
     if (!state.showTimings) {

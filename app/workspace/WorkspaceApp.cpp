@@ -247,7 +247,10 @@ void WorkspaceApp::save() {
     try {
         const auto files = model_->save(state_.savePath, state_.poses);
         std::string text = "Saved";
-        for (const auto& f : files) text += " " + f.string();
+        for (const auto& f : files) {  // appended piecewise: " " + string trips GCC 12's -Wrestrict
+            text += ' ';
+            text += f.string();
+        }
         state_.saveMessage = files.empty() ? "Nothing to save: no object has a pose" : text;
         state_.saveFailed = false;
     } catch (const std::exception& e) {

@@ -38,7 +38,9 @@ TEST_F(LabelsUi, ComponentsSplitTheKneePhantomIntoItsFourBones) {
     // Built on the worker: the request returns at once, the progress shows meanwhile.
     if (app->state().labels.loading) {
         script->idle(1);
-        if (app->state().labels.loading) EXPECT_NO_THROW(script->widget("progress:labels"));
+        if (app->state().labels.loading) {
+            EXPECT_NO_THROW(script->widget("progress:labels"));
+        }
     }
     app->waitForLoad();
     script->idle(1);

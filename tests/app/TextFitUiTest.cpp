@@ -154,7 +154,9 @@ TEST_F(TextFitUi, TooltipsNeverCoverTheProgressBar) {
             << "-" << tip.max.x << "," << tip.max.y << " covers the bar at " << bar->min.x << ","
             << bar->min.y << "-" << bar->max.x << "," << bar->max.y;
         ++checked;
-        if (below) EXPECT_EQ(app->ui().shownTooltip(), "Loading " + path + " ...");
+        if (below) {
+            EXPECT_EQ(app->ui().shownTooltip(), "Loading " + path + " ...");
+        }
     }
     EXPECT_GE(checked, 2) << "the load ended before a tooltip could be checked";
     app->waitForLoad();
