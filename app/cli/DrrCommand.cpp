@@ -249,7 +249,8 @@ void renderBatch(const DrrArgs& a, const std::vector<fm::DrrJob>& jobs,
 // A realistic radiograph (spectral/): the CT's soft tissue and bone by HU, the tube spectrum
 // through them, then scatter, blur and noise. --out .tif is 16-bit (intensity: 50000 I/I0; the
 // default -ln(I/I0): 4096 counts per unit); other outputs as for any DRR.
-void renderRealistic(const DrrArgs& a, const fm::Volume& volume, const fm::ProjectionGeometry& geometry, int threads) {
+void renderRealistic(const DrrArgs& a, const fm::Volume& volume, const fm::ProjectionGeometry& geometry, int threads,
+                     const fm::Volume* boneMask) {
     const fm::UnitGuess hu = fm::guessHounsfield(volume);
     if (!hu.hounsfield)
         throw fm::Error("--spectrum needs a CT in HU (materials and densities come from HU): " + a.volume + " is not (" +
@@ -268,11 +269,16 @@ void renderRealistic(const DrrArgs& a, const fm::Volume& volume, const fm::Proje
     fm::validateDetectorSettings(detector);
     auto start = std::chrono::steady_clock::now();
     fm::SpectralScene scene;
-    fm::addCtLayers(scene, volume, nullptr, "ct", fm::RigidTransform::identity(), threads);
+    fm::addCtLayers(scene, volume, boneMask, "ct", fm::RigidTransform::identity(), threads);
     const double prepareMs = msSince(start);
     std::printf("spectrum  %s, %s detector\n", fm::describeSpectrum(spec, spectrum).c_str(), a.detector.c_str());
-    std::printf("materials soft tissue (HU <= %.0f) and cortical bone (above), density from HU; prepared in %.1f ms\n",
-                fm::kBoneThresholdHU, prepareMs);
+    if (boneMask)
+        std::printf("materials cortical bone where %s labels a voxel, soft tissue elsewhere (air below %.0f HU "
+                    "weighs nothing), density from HU; prepared in %.1f ms\n",
+                    a.bones.labels.c_str(), fm::kAirBelowHU, prepareMs);
+    else
+        std::printf("materials soft tissue (HU <= %.0f) and cortical bone (above), density from HU; prepared in %.1f ms\n",
+                    fm::kBoneThresholdHU, prepareMs);
     std::printf("detector  scatter-to-primary %g (spread %g mm), blur %g px, ", a.scatter, a.scatterSigma, a.blur);
     if (a.photons > 0.0)
         std::printf("%g photons per pixel, electronic noise %g, seed %llu\n", a.photons, a.electronicNoise,
@@ -366,7 +372,10 @@ void runDrr(const DrrArgs& a) {
         const fm::ProjectionGeometry geometry = fm::cli::geometryFrom(a.scene, isocenter);
         geometry.validate(a.scene.usesGeometryFile() ? a.scene.geometry : "scene geometry");
         std::printf("geometry  %s\n", fm::cli::describeGeometrySource(a.scene).c_str());
-        return renderRealistic(a, volume, geometry, threads);
+        // --labels without --bone/--without: the labelled voxels are the bone material.
+        const fm::Volume* boneMask =
+            choice.labels && !choice.bone ? &choice.labels->labels : nullptr;
+        return renderRealistic(a, volume, geometry, threads, boneMask);
     }
 
     fm::DrrValueOptions valueOptions;
@@ -514,7 +523,7 @@ FM_REGISTER_COMMAND("drr", 20, [](CLI::App& app) {
     cmd->add_option("--spectrum", a->spectrum,
                     "A realistic radiograph: tube voltage in kVp (TASMIP, 30-140) with filter=MM "
                     "aluminium (default 2.5) and bin=KEV (default 3), or mono=KEV for one energy; "
-                    "materials and densities from HU; output -ln(I/I0), or I/I0 with --intensity; "
+                    "materials from HU (or bone where --labels labels a voxel), densities from HU; output -ln(I/I0), or I/I0 with --intensity; "
                     ".tif outputs are 16-bit (docs/drr.md)");
     cmd->add_option("--detector", a->detector,
                     "With --spectrum: integrating (weights photons by energy, as a flat panel or image "

@@ -2,6 +2,7 @@
 # `drr --spectrum` (realistic radiographs) from the command line:
 #  1. a 16-bit TIFF of I/I0 that `radiograph` reads back as 16-bit, open field near 50000;
 #  2. the same bytes for the same seed (any thread count), other bytes for another seed;
+#     materials from a label map (--labels) give another image than by HU;
 #  3. refusals: the detector options without --spectrum, --spectrum with a batch, --threshold or
 #     --values with it, a volume not in HU, a bad spectrum, a tube voltage outside TASMIP.
 set -uo pipefail
@@ -25,6 +26,10 @@ run --photons 500 --seed 5 --out "$T/b3.tif" --threads 2 >/dev/null || fail "see
 cmp -s "$T/b1.tif" "$T/b2.tif" || fail "the same seed gave other bytes on 2 threads"
 cmp -s "$T/b1.tif" "$T/b3.tif" && fail "another seed gave the same bytes"
 run --raw "$T/c.mha" >/dev/null || fail "--raw"
+# Materials from a label map: the labelled voxels are bone (another image than by HU).
+out=$(run --labels phantom:knee --raw "$T/d.mha") || fail "--labels: $out"
+grep -q "^materials cortical bone where phantom:knee labels a voxel" <<<"$out" || fail "materials line: $out"
+cmp -s "$T/c.mha" "$T/d.mha" && fail "materials from the labels gave the image of materials from HU"
 
 expect_error() {  # expect_error TEXT args...
     local text=$1; shift
