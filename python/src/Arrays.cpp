@@ -11,21 +11,9 @@ namespace {
 
 using Doubles = pb::array_t<double, pb::array::c_style | pb::array::forcecast>;
 
-Doubles doublesOf(const pb::handle& value) {
-    try {
-        return Doubles::ensure(value);  // nullptr handle on failure, with a Python error set
-    } catch (const pb::error_already_set&) {
-    }
-    return Doubles();
-}
-
 Doubles shaped(const pb::handle& value, std::initializer_list<pb::ssize_t> shape,
                const std::string& what, const std::string& expected) {
-    Doubles a = doublesOf(value);
-    if (!a) {
-        PyErr_Clear();
-        throw Error(what + ": expected " + expected + " numbers");
-    }
+    Doubles a = arrayOf<double>(value, what, expected + " numbers");
     bool same = a.ndim() == static_cast<pb::ssize_t>(shape.size());
     for (std::size_t i = 0; same && i < shape.size(); ++i)
         same = a.shape(static_cast<pb::ssize_t>(i)) == shape.begin()[i];
@@ -49,16 +37,7 @@ pb::array_t<float> imageToArray(Image&& image) {
 }
 
 Image arrayToImage(const pb::handle& value, const std::string& what) {
-    using Floats = pb::array_t<float, pb::array::c_style | pb::array::forcecast>;
-    Floats a;
-    try {
-        a = Floats::ensure(value);
-    } catch (const pb::error_already_set&) {
-    }
-    if (!a) {
-        PyErr_Clear();
-        throw Error(what + ": expected a 2-D array of numbers (rows, cols)");
-    }
+    const auto a = arrayOf<float>(value, what, "a 2-D array of numbers (rows, cols)");
     if (a.ndim() != 2 || a.shape(0) < 1 || a.shape(1) < 1)
         throw Error(what + ": expected a 2-D array (rows, cols), got " + std::to_string(a.ndim()) +
                     " dimensions");
@@ -75,16 +54,7 @@ pb::array_t<bool> maskToArray(const Mask& mask) {
 }
 
 Mask arrayToMask(const pb::handle& value, const std::string& what) {
-    using Bools = pb::array_t<bool, pb::array::c_style | pb::array::forcecast>;
-    Bools a;
-    try {
-        a = Bools::ensure(value);
-    } catch (const pb::error_already_set&) {
-    }
-    if (!a) {
-        PyErr_Clear();
-        throw Error(what + ": expected a 2-D boolean array (rows, cols)");
-    }
+    const auto a = arrayOf<bool>(value, what, "a 2-D boolean array (rows, cols)");
     if (a.ndim() != 2) throw Error(what + ": expected a 2-D boolean array (rows, cols)");
     Mask mask(static_cast<int>(a.shape(1)), static_cast<int>(a.shape(0)), false);
     for (pb::ssize_t i = 0; i < a.size(); ++i) mask.inside[static_cast<std::size_t>(i)] = a.data()[i] ? 1 : 0;

@@ -15,6 +15,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
+#include "core/Error.h"
 #include "core/Image.h"
 #include "scene/RigidTransform.h"
 #include "similarity/Mask.h"
@@ -22,6 +23,24 @@
 namespace fm::py {
 
 namespace pb = pybind11;
+
+// `value` as a C-ordered array of T (converted if it must be); fm::Error "<what>: expected
+// <expected>" when numpy cannot make one of it.
+template <class T>
+pb::array_t<T, pb::array::c_style | pb::array::forcecast> arrayOf(const pb::handle& value, const std::string& what,
+                                                                   const std::string& expected) {
+    using Array = pb::array_t<T, pb::array::c_style | pb::array::forcecast>;
+    Array a;
+    try {
+        a = Array::ensure(value);
+    } catch (const pb::error_already_set&) {
+    }
+    if (!a) {
+        PyErr_Clear();
+        throw Error(what + ": expected " + expected);
+    }
+    return a;
+}
 
 // float32 (rows, cols) owning the image's pixels (moved, not copied).
 pb::array_t<float> imageToArray(Image&& image);

@@ -38,16 +38,7 @@ const char* unitsName(ValueUnit u) {
 
 VolumePtr volumeFromArray(const pb::handle& value, const pb::handle& spacing, const pb::handle& origin,
                           const pb::handle& direction, const std::string& units) {
-    using Floats = pb::array_t<float, pb::array::c_style | pb::array::forcecast>;
-    Floats a;
-    try {
-        a = Floats::ensure(value);
-    } catch (const pb::error_already_set&) {
-    }
-    if (!a) {
-        PyErr_Clear();
-        throw Error("Volume: expected a 3-D array of numbers (z, y, x)");
-    }
+    const auto a = arrayOf<float>(value, "Volume", "a 3-D array of numbers (z, y, x)");
     if (a.ndim() != 3)
         throw Error("Volume: expected a 3-D array (z, y, x), got " + std::to_string(a.ndim()) +
                     " dimensions");
