@@ -93,7 +93,8 @@ void runSimulate(const SimulateArgs& a, const CLI::App& cmd) {
     std::printf("images    %d frames x %zu cameras, %.3f s per image\n", r.frames, r.cameras, r.secondsPerImage);
     for (std::size_t c = 0; c < r.referenceLevels.size(); ++c)
         std::printf("exposure  camera %zu: the anatomy's median I/I0 %.4g reads 20000 counts\n", c + 1, r.referenceLevels[c]);
-    std::printf("wrote     %s (track --trial; the cameras, frames and bone beside it)\n", r.trial.string().c_str());
+    std::printf("wrote     %s (track --trial; the cameras, frames and bone beside it) and %s (Autoscoper)\n",
+                r.trial.string().c_str(), r.config.string().c_str());
     std::printf("wrote     %s (the truth, Autoscoper's volume frame) and %s (frame 0 only: --start)\n",
                 r.truth.string().c_str(), r.start.string().c_str());
 }

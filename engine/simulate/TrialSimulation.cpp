@@ -1,7 +1,7 @@
 #include "simulate/TrialSimulation.h"
 
-#include <chrono>
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -13,12 +13,13 @@
 #include "drr/Drr.h"
 #include "io/AtomicFile.h"
 #include "io/ImageFileWriter.h"
-#include "io/VolumeWriter.h"
+#include "io/TiffVolume.h"
 #include "pose/AutoscoperTra.h"
 #include "simulate/JointMotion.h"
 #include "spectral/MaterialDecomposition.h"
 #include "spectral/SpectralScene.h"
 #include "track/TrialScene.h"
+#include "trial/AutoscoperConfig.h"
 #include "trial/Trial.h"
 
 namespace fm {
@@ -60,6 +61,24 @@ std::string frameName(int f) {
 }
 
 }  // namespace
+
+StackedBone stackedBone(const Volume& bone) {
+    StackedBone out{bone, {}};
+    glm::dmat3 axes = bone.direction;
+    glm::dvec3 origin = bone.origin;
+    if (glm::determinant(axes) < 0.0) {
+        for (int k = 0; k < bone.dims.z; ++k)
+            for (int j = 0; j < bone.dims.y; ++j)
+                for (int i = 0; i < bone.dims.x; ++i) out.volume.at(i, j, k) = bone.at(i, j, bone.dims.z - 1 - k);
+        origin = bone.indexToWorld(glm::dvec3(0.0, 0.0, bone.dims.z - 1));
+        axes[2] = -axes[2];
+    }
+    out.volume.direction = glm::dmat3(1.0);
+    out.volume.origin = glm::dvec3(0.0);
+    out.worldFromStack = {axes, origin};
+    out.worldFromStack.validate("the bone's stack frame");
+    return out;
+}
 
 std::vector<PinholeCamera> camerasAround(const glm::dvec3& centre, double extentMm, int count, double separationDeg,
                                          double distanceMm, glm::ivec2 imageSize) {
@@ -129,10 +148,16 @@ TrialSimulationResult simulateTrial(const TrialSimulationSpec& s, const std::fun
         writeMayaCam2(s.out / (name + ".txt"), cameras[c]);
         trial.cameras.push_back({name, s.out / (name + ".txt"), s.out / name});
     }
+    // The bone as Autoscoper keeps one: a 16-bit TIFF stack of HU + 1000 (air 0: raw integers
+    // whose line integrals are mu's, times a constant) in its own frame, voxel (i, j, k) at
+    // (sx i, sy j, sz k) mm; the CT places that frame by worldFromStack (pages reversed first
+    // when the CT's axes are left-handed, so that it is a rotation).
+    const StackedBone stacked = stackedBone(boneCt);
     TrialBone trialBone;
     trialBone.name = s.boneName;
-    trialBone.volume = s.out / (s.boneName + ".mha");
-    writeVolume(boneCt, trialBone.volume);
+    trialBone.volume = s.out / (s.boneName + ".tif");
+    trialBone.voxelSize = boneCt.spacing;
+    io::writeFileAtomically(trialBone.volume, io::encodeTiffStack16(stacked.volume, 1000.0));
     trial.bones.push_back(trialBone);
 
     // 4. The frames; each camera's exposure set on frame 0 (photonsPerPixel is then the photons
@@ -170,13 +195,23 @@ TrialSimulationResult simulateTrial(const TrialSimulationSpec& s, const std::fun
     // 5. The trial as `track` reads it, and the truth in its .tra convention.
     r.trial = s.out / "trial.json";
     writeTrialJson(r.trial, trial);
+    // The same trial for Autoscoper (its bone names come from the volume files' names).
+    AutoscoperConfig cfg;
+    for (const TrialCamera& c : trial.cameras) {
+        cfg.calibrations.push_back(c.calibration);
+        cfg.cameraRootDirs.push_back(c.frames);
+    }
+    cfg.volumes.push_back({trialBone.volume, glm::ivec3(0), trialBone.voxelSize});
+    cfg.renderResolution = trial.renderResolution;
+    r.config = s.out / "trial.cfg";
+    writeAutoscoperConfig(r.config, cfg);
     const TrialScene loaded = loadTrialScene(readTrial(r.trial), {s.boneName}, s.detector.threads);
     TraFile truth, start;
     truth.frames.assign(static_cast<std::size_t>(s.frames), {std::nullopt});
     start.frames = truth.frames;
     for (int f = 0; f < s.frames; ++f)
         truth.frames[static_cast<std::size_t>(f)][0] =
-            traPoseFromObject(loaded, s.boneName, motion.poses[static_cast<std::size_t>(f)]);
+            traPoseFromObject(loaded, s.boneName, motion.poses[static_cast<std::size_t>(f)] * stacked.worldFromStack);
     start.frames[0][0] = truth.frames[0][0];
     r.truth = s.out / (s.boneName + "_truth.tra");
     r.start = s.out / (s.boneName + "_start.tra");

@@ -11,10 +11,11 @@
 //      exposed as automatic exposure control does: each camera's median attenuated transmission
 //      in frame 0 reads 20000 counts (the open field saturates), and detector.photonsPerPixel is
 //      the photons at that level
-//   4. the files: each camera's MayaCam 2.0 calibration and frames, the bone volume (.mha, HU, in
-//      the CT's frame), trial.json (what `track` reads), the truth (BONE_truth.tra, Autoscoper's
-//      volume frame as the trial's .tra files hold it) and the first frame's truth alone
-//      (BONE_start.tra, to start tracking from).
+//   4. the files: each camera's MayaCam 2.0 calibration and frames, the bone as Autoscoper keeps
+//      one (BONE.tif: a 16-bit TIFF stack of HU + 1000, its voxel size in the trial), trial.json
+//      (what `track` reads) and trial.cfg (the same trial for Autoscoper), the truth
+//      (BONE_truth.tra, Autoscoper's volume frame as the trial's .tra files hold it) and the first
+//      frame's truth alone (BONE_start.tra, to start tracking from).
 // Deterministic for a seed, whatever the thread count.
 #include <filesystem>
 #include <functional>
@@ -52,7 +53,7 @@ struct TrialSimulationSpec {
 };
 
 struct TrialSimulationResult {
-    std::filesystem::path trial, truth, start;
+    std::filesystem::path trial, config, truth, start;  // trial.json, trial.cfg (Autoscoper)
     int frames = 0;
     std::size_t cameras = 0;
     double secondsPerImage = 0.0;
@@ -62,6 +63,15 @@ struct TrialSimulationResult {
 // Progress: (frame done, frames).
 TrialSimulationResult simulateTrial(const TrialSimulationSpec& spec,
                                     const std::function<void(int, int)>& progress = {});
+
+// A bone volume as a TIFF stack holds it: the voxels in stack order (pages reversed when the
+// volume's axes are left-handed) and the rigid placement of the stack's frame (voxel (i, j, k) at
+// (sx i, sy j, sz k) mm) in the volume's world.
+struct StackedBone {
+    Volume volume;                  // identity direction, origin 0
+    RigidTransform worldFromStack;
+};
+StackedBone stackedBone(const Volume& bone);
 
 // Cameras looking at `centre` from `distanceMm`, the first along the CT's +y (anterior to
 // posterior), the others turned `separationDeg` after each other about +z (superior), image up =

@@ -66,3 +66,30 @@ TEST(TrialSimulation, CamerasAroundABoneLookAtItsCentreWithSuperiorUp) {
 
 }  // namespace
 }  // namespace fm::test
+
+namespace fm::test {
+namespace {
+
+TEST(TrialSimulation, ABoneStackPlacesEveryVoxelWhereTheVolumeHadIt) {
+    for (const double zSign : {1.0, -1.0}) {  // right- and left-handed axes
+        Volume v = Volume::allocate({3, 4, 5});
+        for (std::size_t i = 0; i < v.values.size(); ++i) v.values[i] = static_cast<float>(i);
+        v.spacing = {0.5, 0.75, 2.0};
+        v.origin = {10.0, -4.0, 7.0};
+        v.direction = glm::dmat3(glm::dvec3(0, 1, 0), glm::dvec3(-1, 0, 0), glm::dvec3(0, 0, zSign));
+        const StackedBone s = stackedBone(v);
+        EXPECT_NEAR(glm::determinant(s.worldFromStack.rotation), 1.0, 1e-12);
+        for (int k = 0; k < 5; ++k)
+            for (int j = 0; j < 4; ++j)
+                for (int i = 0; i < 3; ++i) {
+                    const glm::dvec3 world = s.worldFromStack.applyToPoint(glm::dvec3(i, j, k) * v.spacing);
+                    const glm::dvec3 ijk = v.worldToIndex(world);
+                    const glm::ivec3 at(glm::round(ijk));
+                    EXPECT_NEAR(glm::length(ijk - glm::dvec3(at)), 0.0, 1e-9);
+                    EXPECT_EQ(s.volume.at(i, j, k), v.at(at.x, at.y, at.z)) << zSign;
+                }
+    }
+}
+
+}  // namespace
+}  // namespace fm::test
