@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # `fluoromatch simulate` end to end on the knee phantom (its femur flexing over the rest):
-#  1. the trial it writes is tracked by `track` from the first frame's truth, and `compare`
-#     finds every frame within 0.5 mm and 0.5 deg of the truth it wrote (the truth, the frames
-#     and the trial agree on every frame convention);
+#  1. the trial it writes (trial.json, and trial.cfg for Autoscoper) is tracked by `track` from
+#     the first frame's truth, and `compare` finds every frame within 0.5 mm and 0.5 deg of the
+#     truth it wrote (the truth, the frames and the trial agree on every frame convention);
 #  2. the same seed gives the same bytes on 1 and 2 threads, another seed other frames;
 #  3. refusals: camera placement options with --cameras, a volume not in HU, an unknown bone,
 #     a motion it cannot read.
@@ -18,7 +18,7 @@ sim() {  # sim OUT args...
 }
 
 out=$(sim "$T/a" --threads 2 2>/dev/null) || fail "simulate exited $?: $out"
-for f in trial.json cam1.txt cam2.txt femur.mha femur_truth.tra femur_start.tra cam1/frame_0004.tif cam2/frame_0000.tif; do
+for f in trial.json trial.cfg cam1.txt cam2.txt femur.tif femur_truth.tra femur_start.tra cam1/frame_0004.tif cam2/frame_0000.tif; do
     [ -s "$T/a/$f" ] || fail "$f not written: $(ls -R "$T/a")"
 done
 [ "$(wc -l < "$T/a/femur_truth.tra")" -eq 5 ] || fail "the truth must have 5 rows"
@@ -28,6 +28,12 @@ done
 out=$("$FM" compare --truth "$T/a/femur_truth.tra" --tra "$T/a/tracked.tra" --trial "$T/a/trial.json" --bone femur) ||
     fail "compare exited $?: $out"
 grep -q "0.5 mm and 0.5 deg: 100.0 % (5 of 5)" <<<"$out" || fail "not every frame within 0.5 mm / 0.5 deg: $out"
+# The same trial through Autoscoper's .cfg (its bone named by its TIFF stack's file name).
+"$FM" track --trial "$T/a/trial.cfg" --bone femur --start "$T/a/femur_start.tra" --out "$T/a/tracked_cfg.tra" \
+    >/dev/null 2>&1 || fail "track on the simulated trial.cfg failed"
+out=$("$FM" compare --truth "$T/a/femur_truth.tra" --tra "$T/a/tracked_cfg.tra" --trial "$T/a/trial.cfg" --bone femur) ||
+    fail "compare (cfg) exited $?: $out"
+grep -q "0.5 mm and 0.5 deg: 100.0 % (5 of 5)" <<<"$out" || fail "trial.cfg: not every frame within 0.5 mm / 0.5 deg: $out"
 
 sim "$T/b" --threads 1 >/dev/null 2>&1 || fail "1 thread"
 sim "$T/c" --threads 2 --seed 2 >/dev/null 2>&1 || fail "seed 2"
