@@ -249,6 +249,13 @@ void runEvaluate(const EvaluateArgs& a, bool similarityGiven) {
         "(capture range: largest initial mTRE up to which every bin reaches %.0f%% "
         "success)\n",
         100.0 * settings.captureSuccessRate);
+    for (const fm::SearchMethod method : settings.methods) {
+        fm::EvaluationProfile profile;
+        for (const fm::EvaluationTrial& t : trials)
+            if (t.method == method) profile += t.profile;
+        std::printf("speed %-6s %s\n", fm::toString(method),
+                    fm::describeEvaluations(profile, settings.registration.threads).c_str());
+    }
     if (!failures.empty())
         throw fm::distributed::JobsFailed(
             std::to_string(failures.size()) + " of " + std::to_string(total) +

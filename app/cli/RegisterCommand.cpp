@@ -313,6 +313,7 @@ void runRegister(const RegisterArgs& a, bool similarityGiven, int frame) {
     std::printf("time        %.3f s (%d evaluations, %.2f ms each)%s\n", result.seconds,
                 result.evaluations, 1000.0 * result.seconds / std::max(1, result.evaluations),
                 result.stopped ? " (stopped)" : "");
+    std::printf("speed       %s\n", fm::describeEvaluations(result.profile, settings.threads).c_str());
 }
 
 FM_REGISTER_COMMAND("register", 40, [](CLI::App& app) {

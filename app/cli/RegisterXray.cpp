@@ -181,6 +181,7 @@ void runXrayRegister(const std::string& reference, const XrayRegisterArgs& a,
         }
         std::printf("time        %.3f s (%d evaluations)%s\n", r.seconds, r.evaluations,
                     r.stopped ? " (stopped)" : "");
+        std::printf("speed       %s\n", describeEvaluations(r.profile, sideBySide ? 1 : settings.threads).c_str());
         // The search may have walked off the image: a pose with nothing under it is not an
         // answer and is not written.
         const std::string blind =

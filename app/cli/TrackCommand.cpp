@@ -333,6 +333,10 @@ void runTrack(const TrackArgs& a) {
         std::printf("%s: %d of %d frames tracked, %s %s\n", b.name.c_str(), tracked,
                     scene.frameCount, b.out.string().c_str(),
                     failed ? "NOT complete (failed jobs below)" : "written");
+        fm::EvaluationProfile profile;
+        for (const auto& [pos, r] : b.rows) profile += r.profile;
+        if (profile.evaluations > 0)
+            std::printf("%s: speed %s\n", b.name.c_str(), fm::describeEvaluations(profile, threads).c_str());
         if (b.todo > 0 && newlyTracked == 0 && !b.rows.empty())
             problems.push_back("no frame of " + b.name + " could be tracked (" + lastFailure + ")");
     }

@@ -74,6 +74,7 @@ void runTrialRegister(const TrialRegisterArgs& a) {
     const glm::dvec3 moved = r.worldFromBone->translation - start->translation;
     std::printf("moved       %.3f mm from the start\n", glm::length(moved));
     std::printf("time        %.3f s (%d evaluations)\n", r.seconds, r.evaluations);
+    std::printf("speed       %s\n", describeEvaluations(r.profile, a.threads).c_str());
     if (!a.out.empty()) {
         TraFile out;
         out.frames.assign(static_cast<std::size_t>(scene.frameCount), {std::nullopt});

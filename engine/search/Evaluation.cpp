@@ -105,6 +105,7 @@ EvaluationTrial runEvaluationTrial(const Registration& registration, const Evalu
     const RegistrationResult r = registration.run(start.params, {}, stop);
     const double cpu = double(std::clock() - cpu0) / CLOCKS_PER_SEC;
     EvaluationTrial t;
+    t.profile = r.profile;
     t.method = start.method;
     t.bin = start.bin;
     t.start = start.start;

@@ -68,6 +68,7 @@ struct EvaluationTrial {
     double cpuSeconds = 0.0;  // processor time of the whole process (all threads)
     int evaluations = 0;
     bool success = false;
+    EvaluationProfile profile;  // where the evaluations' time went
 };
 
 struct EvaluationBinSummary {

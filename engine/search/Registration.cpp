@@ -226,8 +226,29 @@ int Registration::totalBudget() const {
            depth + tilt + hypotheses;
 }
 
+namespace {
+
+std::int64_t nanosecondsSince(std::chrono::steady_clock::time_point& mark) {
+    const auto now = std::chrono::steady_clock::now();
+    const std::int64_t ns = std::chrono::duration_cast<std::chrono::nanoseconds>(now - mark).count();
+    mark = now;
+    return ns;
+}
+
+}  // namespace
+
+EvaluationProfile Registration::clockReading() const {
+    EvaluationProfile p;
+    p.setupSeconds = clock_->setup.load(std::memory_order_relaxed) * 1e-9;
+    p.renderSeconds = clock_->render.load(std::memory_order_relaxed) * 1e-9;
+    p.footprintSeconds = clock_->footprint.load(std::memory_order_relaxed) * 1e-9;
+    p.similaritySeconds = clock_->similarity.load(std::memory_order_relaxed) * 1e-9;
+    return p;
+}
+
 double Registration::viewCost(const Scene& scene, const View& view, int levelIndex,
                               int threads) const {
+    auto mark = std::chrono::steady_clock::now();
     const ViewLevel& level = view.levels[levelIndex];
     const ProjectionGeometry& camera = scene.cameras[view.camera];
     ProjectionGeometry g = cropDetector(camera, 0, 0, view.usableSize.x, view.usableSize.y);
@@ -262,16 +283,21 @@ double Registration::viewCost(const Scene& scene, const View& view, int levelInd
     render.threads = threads;
     // The edge measure looks only at the footprint's outline.
     render.footprintOnly = settings_.similarity == SimilarityMeasure::EdgeDistance;
+    clock_->setup.fetch_add(nanosecondsSince(mark), std::memory_order_relaxed);
     const Image drr = renderView(scene, g, render);
+    clock_->render.fetch_add(nanosecondsSince(mark), std::memory_order_relaxed);
     Mask mask = footprintMask(drr, 0.0f, settings_.footprintDilation);
     const bool cropped = rect.col0 != level.roi.col0 || rect.row0 != level.roi.row0 ||
                          rect.cols != level.roi.cols || rect.rows != level.roi.rows;
     const PixelRect inRoi{rect.col0 - level.roi.col0, rect.row0 - level.roi.row0, rect.cols,
                           rect.rows};
     if (level.valid) mask = intersect(mask, cropped ? cropMask(*level.valid, inRoi) : *level.valid);
+    clock_->footprint.fetch_add(nanosecondsSince(mark), std::memory_order_relaxed);
     if (mask.count() < kMinMaskPixels) return 0.0;  // nothing in view: no evidence either way
-    if (!cropped) return -similarity(settings_.similarity, level.reference, drr, &mask);
-    return -similarity(settings_.similarity, cropReference(level.reference, inRoi), drr, &mask);
+    const double cost = cropped ? -similarity(settings_.similarity, cropReference(level.reference, inRoi), drr, &mask)
+                                : -similarity(settings_.similarity, level.reference, drr, &mask);
+    clock_->similarity.fetch_add(nanosecondsSince(mark), std::memory_order_relaxed);
+    return cost;
 }
 
 std::vector<double> Registration::viewCosts(const SceneParams& params, int level) const {
@@ -288,8 +314,10 @@ double Registration::levelCost(const SceneParams& params, int level, int threads
     const int views = static_cast<int>(views_.size());
     std::vector<double> costs(views_.size(), 0.0);
     auto costOf = [&](int v, int renderThreads) {
-        costs[static_cast<std::size_t>(v)] =
-            viewCost(sceneAt(levelScenes_[level][v], *parameterization_, params), views_[v], level, renderThreads);
+        auto mark = std::chrono::steady_clock::now();
+        const Scene moved = sceneAt(levelScenes_[level][v], *parameterization_, params);
+        clock_->setup.fetch_add(nanosecondsSince(mark), std::memory_order_relaxed);
+        costs[static_cast<std::size_t>(v)] = viewCost(moved, views_[v], level, renderThreads);
     };
     const int cores = threads > 0 ? threads : defaultThreadCount();
     if (views >= cores && cores > 1) {
@@ -318,6 +346,7 @@ RegistrationResult Registration::run(const SceneParams& start,
                                      const RegistrationCallback& progress,
                                      const std::atomic<bool>* stop) const {
     const auto t0 = std::chrono::steady_clock::now();
+    const EvaluationProfile clockAtStart = clockReading();
     // The search coordinates of a stage are taken around its anchor: the registration's start
     // for the global search, the best pose so far for every refinement. So a refinement's
     // depth is along the viewing direction of the camera as found, not as it started: with
@@ -508,6 +537,14 @@ RegistrationResult Registration::run(const SceneParams& start,
     result.params = toParams(current);
     result.evaluations = evaluationsBefore;
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    // This run's part of the stage clock (a Registration may run several times, also at once).
+    const EvaluationProfile clockAtEnd = clockReading();
+    result.profile.evaluations = result.evaluations;
+    result.profile.wallSeconds = result.seconds;
+    result.profile.setupSeconds = clockAtEnd.setupSeconds - clockAtStart.setupSeconds;
+    result.profile.renderSeconds = clockAtEnd.renderSeconds - clockAtStart.renderSeconds;
+    result.profile.footprintSeconds = clockAtEnd.footprintSeconds - clockAtStart.footprintSeconds;
+    result.profile.similaritySeconds = clockAtEnd.similaritySeconds - clockAtStart.similaritySeconds;
     return result;
 }
 

@@ -27,6 +27,7 @@
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <vector>
 
 #include "core/Image.h"
@@ -37,6 +38,7 @@
 #include "scene/MassCentre.h"
 #include "scene/Scene.h"
 #include "scene/SceneParameterization.h"
+#include "search/EvaluationProfile.h"
 #include "search/Optimizer.h"
 #include "similarity/Mask.h"
 #include "similarity/Similarity.h"
@@ -143,6 +145,7 @@ struct RegistrationResult {
     double similarity = 0.0;  // at the finest level, summed over the views
     int evaluations = 0;
     double seconds = 0.0;
+    EvaluationProfile profile;  // where the evaluations' time went (search/EvaluationProfile.h)
     bool stopped = false;
     std::vector<double> costHistory;  // best cost after every batch, all levels in order
     Pose pose() const { return Pose::fromArray(params); }  // for the 2011 parameterizations
@@ -195,6 +198,13 @@ class Registration {
     RegistrationSettings settings_;
     std::vector<View> views_;
     std::vector<std::optional<MassCentre>> massCentres_;  // per object of scene_; empty = off
+    // Thread time of the evaluations by stage, nanoseconds (shared by copies; run() reports the
+    // part of its own run).
+    struct StageClock {
+        std::atomic<std::int64_t> setup{0}, render{0}, footprint{0}, similarity{0};
+    };
+    std::shared_ptr<StageClock> clock_ = std::make_shared<StageClock>();
+    EvaluationProfile clockReading() const;
 };
 
 // The detector pixels of `camera` that `box` (in `object`'s frame, moved by its pose) can

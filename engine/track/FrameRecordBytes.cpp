@@ -20,6 +20,10 @@ struct Fixed {  // the part every record has, whatever the camera count
     std::int32_t noteLength = 0;
     double seconds = 0.0;
     double pose[12] = {};  // rotation column by column, then translation
+    double profile[4] = {};  // thread seconds: set-up, render, footprint, similarity
+    double profileWall = 0.0;
+    std::int32_t profileEvaluations = 0;
+    std::int32_t padding = 0;
 };
 
 constexpr int kLastStatus = static_cast<int>(FrameRecord::Status::Stopped);
@@ -41,6 +45,12 @@ void encodeFrameRecord(const FrameRecord& r, std::span<std::byte> out) {
     f.evaluations = r.evaluations;
     f.hasPose = r.worldFromBone ? 1 : 0;
     f.seconds = r.seconds;
+    f.profile[0] = r.profile.setupSeconds;
+    f.profile[1] = r.profile.renderSeconds;
+    f.profile[2] = r.profile.footprintSeconds;
+    f.profile[3] = r.profile.similaritySeconds;
+    f.profileWall = r.profile.wallSeconds;
+    f.profileEvaluations = r.profile.evaluations;
     if (r.worldFromBone) {
         for (int c = 0; c < 3; ++c)
             for (int row = 0; row < 3; ++row)
@@ -75,6 +85,12 @@ FrameRecord decodeFrameRecord(std::span<const std::byte> in, std::size_t cameras
     r.camerasUsed = f.camerasUsed;
     r.evaluations = f.evaluations;
     r.seconds = f.seconds;
+    r.profile.setupSeconds = f.profile[0];
+    r.profile.renderSeconds = f.profile[1];
+    r.profile.footprintSeconds = f.profile[2];
+    r.profile.similaritySeconds = f.profile[3];
+    r.profile.wallSeconds = f.profileWall;
+    r.profile.evaluations = f.profileEvaluations;
     if (f.hasPose) {
         RigidTransform p;
         for (int c = 0; c < 3; ++c)

@@ -138,6 +138,7 @@ FrameRecord Tracker::trackFrame(int frame, const RigidTransform& start,
     };
     RegistrationResult r = coarse.run(param->referenceParams(), reporter(0, 0), stop);
     int evaluations = r.evaluations;
+    record.profile = r.profile;
     const Registration* answeredBy = &coarse;
     std::optional<Registration> fine;
     if (refine && !r.stopped) {
@@ -155,6 +156,7 @@ FrameRecord Tracker::trackFrame(int frame, const RigidTransform& start,
         fine.emplace(scene_, param, std::move(views), full);
         r = fine->run(r.params, reporter(evaluations, coarse.levelCount()), stop);
         evaluations += r.evaluations;
+        record.profile += r.profile;
         answeredBy = &*fine;
     }
 

@@ -73,6 +73,7 @@ struct FrameRecord {
     int camerasUsed = 0;
     int evaluations = 0;
     double seconds = 0.0;
+    EvaluationProfile profile;  // where its searches' evaluations spent their time
 };
 const char* toString(FrameRecord::Status status);
 

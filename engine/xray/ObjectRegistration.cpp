@@ -79,6 +79,7 @@ ObjectRegistrationResult registerObject(const Scene& scene, std::size_t object,
     out.evaluations = r.evaluations;
     out.seconds = r.seconds;
     out.stopped = r.stopped;
+    out.profile = r.profile;
     return out;
 }
 

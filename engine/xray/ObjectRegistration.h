@@ -30,6 +30,7 @@ struct ObjectRegistrationResult {
     int evaluations = 0;
     double seconds = 0.0;
     bool stopped = false;
+    EvaluationProfile profile;
 };
 
 // Throws fm::Error if the object or the view's camera does not exist (and as Registration).

@@ -104,6 +104,17 @@ RigidTransform toTransform(const pb::handle& value, const std::string& what) {
     return RigidTransform::fromRowMajor4x4(m, what);
 }
 
+pb::dict profileDict(const EvaluationProfile& p) {
+    pb::dict d;
+    d["evaluations"] = p.evaluations;
+    d["wall_seconds"] = p.wallSeconds;
+    d["set_up"] = p.setupSeconds;
+    d["render"] = p.renderSeconds;
+    d["footprint"] = p.footprintSeconds;
+    d["similarity"] = p.similaritySeconds;
+    return d;
+}
+
 pb::array_t<double> fromTransform(const RigidTransform& t) {
     pb::array_t<double> a({4, 4});
     const std::array<double, 16> m = t.toRowMajor4x4();

@@ -18,6 +18,7 @@
 #include "core/Error.h"
 #include "core/Image.h"
 #include "scene/RigidTransform.h"
+#include "search/EvaluationProfile.h"
 #include "similarity/Mask.h"
 
 namespace fm::py {
@@ -56,6 +57,10 @@ pb::array_t<double> fromVec3(const glm::dvec3& v);
 // 3x3 numpy (row-major, m[row][col]) <-> glm (column-major).
 glm::dmat3 toMat3(const pb::handle& value, const std::string& what);
 pb::array_t<double> fromMat3(const glm::dmat3& m);
+
+// A search's profile (search/EvaluationProfile.h) as a dict: evaluations, wall_seconds and the
+// thread seconds of set_up, render, footprint and similarity.
+pb::dict profileDict(const EvaluationProfile& profile);
 
 // 4x4 pose array <-> RigidTransform (validated: a rotation, last row 0 0 0 1).
 RigidTransform toTransform(const pb::handle& value, const std::string& what);

@@ -263,6 +263,7 @@ void bindRegister(pb::module_& m) {
                 a["seconds"] = r.seconds;
                 a["wall_seconds"] = wallSeconds;
                 a["stopped"] = r.stopped;
+                a["profile"] = profileDict(r.profile);
                 a["verdict"] = r.stopped && check.check != AnswerVerdict::Lost ? "unchecked" : toString(check.check);
                 a["verdict_text"] = r.stopped ? "stopped before the search ended; " + check.text : check.text;
                 a["iou"] = iou ? pb::cast(*iou) : pb::none();
@@ -304,7 +305,8 @@ verdict use it. out: .jts per model or one .tra, written as the CLI does (not wh
 progress(dict) is called as the search goes; return False to stop it (Ctrl-C stops it too).
 
 Returns one dict per model: pose (worldFromObject 4x4), start, jts_row, similarity, measure,
-evaluations, seconds, wall_seconds, stopped, verdict ("checked", "doubtful", "lost" or
+evaluations, seconds, wall_seconds, stopped, profile (where the evaluations' time went: thread
+seconds of set_up, render, footprint, similarity), verdict ("checked", "doubtful", "lost" or
 "unchecked": no mask to check it against), verdict_text, iou, start_iou, moved, written.)doc");
 }
 

@@ -40,6 +40,7 @@ pb::dict recordDict(const FrameRecord& r, const TrialScene& scene, const std::st
     d["cameras_used"] = r.camerasUsed;
     d["evaluations"] = r.evaluations;
     d["seconds"] = r.seconds;
+    d["profile"] = profileDict(r.profile);
     return d;
 }
 

@@ -24,6 +24,9 @@ def test_the_femoral_component_as_the_cli_finds_it(jtml, cli, tmp_path):
     assert np.linalg.norm(answer["pose"][:2, 3] - truth[:2, 3]) < 1.0
     assert answer["verdict"] == "checked" and answer["iou"] >= 0.95 > answer["start_iou"]
     assert answer["evaluations"] > 100 and answer["seconds"] > 0 and not answer["stopped"]
+    profile = answer["profile"]  # where the evaluations' time went (thread seconds per stage)
+    assert profile["evaluations"] == answer["evaluations"]
+    assert all(profile[k] > 0 for k in ("render", "footprint", "similarity", "set_up"))
     assert seen and seen[-1]["evaluations"] <= answer["evaluations"] and seen[0]["model"] == "KR_right_7_fem"
 
 

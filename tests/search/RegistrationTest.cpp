@@ -361,3 +361,42 @@ TEST(Evaluation, SummariesFollowTheDefinitions) {
 
 }  // namespace
 }  // namespace fm
+
+namespace fm {
+namespace {
+
+TEST(Registration, ItsProfileAccountsForItsOwnEvaluations) {
+    // search/EvaluationProfile.h: the run's evaluations and wall time, and thread time in each
+    // stage (all measured, none zero), adding up to no more than its threads could give.
+    const Pose truth = parsePose("0,0,0,10,5,0");
+    const Image reference = render(knee().model(truth));
+    RegistrationSettings s;
+    s.levelFactors = {4, 2};
+    s.globalEvaluations = 100;
+    s.polishEvaluations = 40;
+    s.threads = 2;
+    const Registration reg = knee().registration(reference, s);
+    const RegistrationResult first = reg.run(parsePose("2,-2,1,12,4,1").toArray());
+    const RegistrationResult second = reg.run(parsePose("2,-2,1,12,4,1").toArray());
+    for (const RegistrationResult* r : {&first, &second}) {
+        const EvaluationProfile& p = r->profile;
+        EXPECT_EQ(p.evaluations, r->evaluations);
+        EXPECT_EQ(p.wallSeconds, r->seconds);
+        EXPECT_GT(p.setupSeconds, 0.0);
+        EXPECT_GT(p.renderSeconds, 0.0);
+        EXPECT_GT(p.footprintSeconds, 0.0);
+        EXPECT_GT(p.similaritySeconds, 0.0);
+        EXPECT_LE(p.threadSeconds(), 2.0 * p.wallSeconds * 1.05 + 1e-3);
+    }
+    // The second run reports its own time, not the first's too.
+    EXPECT_LT(second.profile.threadSeconds(), 1.5 * first.profile.threadSeconds() + 0.05);
+    const std::string line = describeEvaluations(first.profile, 2);
+    EXPECT_NE(line.find(std::to_string(first.evaluations) + " evaluations in"), std::string::npos) << line;
+    EXPECT_NE(line.find("per core-second"), std::string::npos) << line;
+    EvaluationProfile sum = first.profile;
+    sum += second.profile;
+    EXPECT_EQ(sum.evaluations, first.evaluations + second.evaluations);
+}
+
+}  // namespace
+}  // namespace fm

@@ -26,6 +26,7 @@ FrameRecord sample() {
     r.camerasUsed = 1;
     r.evaluations = 990;
     r.seconds = 0.731;
+    r.profile = {990, 0.73, 0.01, 1.0 / 3.0, 0.2, 0.15};
     return r;
 }
 
@@ -40,6 +41,12 @@ TEST(FrameRecordBytes, RoundTripIsExact) {
     EXPECT_EQ(d.camerasUsed, 1);
     EXPECT_EQ(d.evaluations, 990);
     EXPECT_EQ(d.seconds, r.seconds);
+    EXPECT_EQ(d.profile.evaluations, 990);
+    EXPECT_EQ(d.profile.wallSeconds, r.profile.wallSeconds);
+    EXPECT_EQ(d.profile.setupSeconds, r.profile.setupSeconds);
+    EXPECT_EQ(d.profile.renderSeconds, r.profile.renderSeconds);
+    EXPECT_EQ(d.profile.footprintSeconds, r.profile.footprintSeconds);
+    EXPECT_EQ(d.profile.similaritySeconds, r.profile.similaritySeconds);
     ASSERT_TRUE(d.worldFromBone);
     EXPECT_EQ(
         std::memcmp(&d.worldFromBone->rotation, &r.worldFromBone->rotation, sizeof(glm::dmat3)), 0);
