@@ -23,7 +23,7 @@ for photons in 0 100000 10000 3000 1000 300 100; do
     start=$(date +%s.%N)
     "$FM" track --trial "$T/s$photons/trial.json" --bone "$BONE" --start "$T/s$photons/${BONE}_start.tra" \
         --out "$T/s$photons/t.tra" >/dev/null 2>&1
-    seconds=$(echo "($(date +%s.%N) - $start) / 20" | bc -l)
+    seconds=$(awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN { print (b - a) / 20 }')
     out=$("$FM" compare --truth "$T/s$photons/${BONE}_truth.tra" --tra "$T/s$photons/t.tra" \
         --trial "$T/s$photons/trial.json" --bone "$BONE")
     c=($(sed -n 's/^  centre *\(.*\)$/\1/p' <<<"$out"))

@@ -117,7 +117,9 @@ FM_REGISTER_COMMAND("simulate", 48, [](CLI::App& app) {
                     "rotate:axis=x|y|z|AX,AY,AZ,angle=A0:A1[,center=X,Y,Z] (eased; centre default: the bone's) "
                     "or a .tra of worldFromObject poses in the CT's world")->required();
     cmd->add_option("--frames", a->frames, "Frames")->check(CLI::Range(1, 100000))->capture_default_str();
-    cmd->add_option("--fill", a->fill, "HU of the soft tissue left where the bone was")->check(CLI::Range(-200.0, 200.0))->capture_default_str();
+    cmd->add_option("--fill", a->fill, "HU of the soft tissue left where the bone was (-1000: air, a bone in air)")
+        ->check(CLI::Range(-1000.0, 200.0))
+        ->capture_default_str();
     cmd->add_option("--spectrum", a->spectrum, "Tube spectrum as drr --spectrum (kVp[,filter=MM][,bin=KEV])")->capture_default_str();
     cmd->add_option("--photons", a->photons, "Photons per pixel at the exposure's reference level, the anatomy's median (Poisson noise; 0 = none)")
         ->check(CLI::Range(0.0, 1e9))->capture_default_str();
