@@ -1,7 +1,6 @@
 #include "cli/RegisterXray.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <memory>
 #include <vector>
@@ -9,7 +8,6 @@
 #include "camera/CameraFile.h"
 #include "cli/ValueChecks.h"
 #include "core/Error.h"
-#include "core/Parallel.h"
 #include "meshdrr/MeshDrr.h"
 #include "model/MeshModel.h"
 #include "radiograph/LabelMask.h"
@@ -125,35 +123,15 @@ void runXrayRegister(const std::string& reference, const XrayRegisterArgs& a,
                 file.format.c_str(), size.x, size.y, prepared.valid.count(),
                 prepared.valid.inside.size());
     std::printf("camera      %s (%s)\n", a.camera.c_str(), cam.format.c_str());
-    // Each model is registered alone (the others hidden: registerObject), so several run side
-    // by side, one per core, each search single-threaded: the same answers as one after the
-    // other (results do not depend on the thread count), in less wall time (a search keeps
-    // about 1.1 of 2 cores busy).
-    const int cores = settings.threads > 0 ? settings.threads : defaultThreadCount();
-    const bool sideBySide = n > 1 && cores > 1;
+    const bool sideBySide = registersSideBySide(n, settings);
     std::printf("search      %s, %s, seed %llu, %s, %s\n",
                 toString(settings.method), toString(settings.similarity),
                 static_cast<unsigned long long>(settings.seed), describeLevels(settings).c_str(),
                 sideBySide ? "the models side by side, one per core" : "one model at a time");
     const RegistrationView view{0, prepared.image, prepared.valid};
-    const auto started = std::chrono::steady_clock::now();
-    std::vector<ObjectRegistrationResult> results(n);
-    if (sideBySide) {
-        RegistrationSettings single = settings;
-        single.threads = 1;
-        parallelFor(
-            static_cast<int>(n), cores,
-            [&](int begin, int end) {
-                for (int k = begin; k < end; ++k)
-                    results[static_cast<std::size_t>(k)] =
-                        registerObject(scene, static_cast<std::size_t>(k), view, startPoses[k], single);
-            },
-            static_cast<int>(n));
-    } else {
-        for (std::size_t k = 0; k < n; ++k) results[k] = registerObject(scene, k, view, startPoses[k], settings);
-    }
-    const double wallSeconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    const ObjectsRegistration all = registerObjects(scene, view, settings);
+    const std::vector<ObjectRegistrationResult>& results = all.results;
+    const double wallSeconds = all.wallSeconds;
     std::vector<std::string> lost;
     for (std::size_t k = 0; k < n; ++k) {
         SceneObject& object = scene.objects[k];

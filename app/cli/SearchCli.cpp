@@ -1,9 +1,5 @@
 #include "cli/SearchCli.h"
 
-#include "cli/ValueChecks.h"
-
-#include "cli/ValuesChoice.h"
-
 #include <cmath>
 #include <cstdio>
 #include <ostream>
@@ -11,11 +7,13 @@
 
 #include "cli/NumberChecks.h"
 #include "cli/ValueChecks.h"
+#include "cli/ValuesChoice.h"
 #include "core/Error.h"
 #include "io/AtomicFile.h"
 #include "io/ReadVolume.h"
 #include "radiograph/Radiograph.h"
 #include "radiograph/RadiographPreparation.h"
+#include "search/SearchOptions.h"
 
 namespace fm::cli {
 
@@ -75,37 +73,23 @@ void addSearchOptions(CLI::App* cmd, SearchArgs& a, bool withMethod) {
 }
 
 RegistrationSettings registrationSettings(const SearchArgs& a, RegistrationSettings s) {
-    s.method = parseSearchMethod(a.method);
-    if (s.method == SearchMethod::NelderMead)
-        throw Error(
-            "--method: nm is the local polish, not a global search (use mc, pso, bees "
-            "or cmaes)");
-    s.similarity = parseSimilarityMeasure(a.similarity);
-    s.polishMethod = parseSearchMethod(a.polish);
-    s.seed = a.seed;
-    if (a.budget < 0) throw Error("--budget must be positive");
-    if (a.budget > 0) s.globalEvaluations = a.budget;
-    if (a.polishBudget >= 0) s.polishEvaluations = s.finestPolishEvaluations = a.polishBudget;
-    if (a.threads < 0) throw Error("--threads must be 0 (all cores) or more");
-    s.threads = a.threads;
+    SearchOptions o;
+    o.method = a.method;
+    o.similarity = a.similarity;
+    o.polish = a.polish;
+    o.seed = a.seed;
+    o.budget = a.budget;
+    o.polishBudget = a.polishBudget;
+    o.threads = a.threads;
     if (!a.levels.empty()) {
-        s.levelFactors.clear();
         for (double f : parseNumbers(a.levels, "--levels")) {
             if (f != std::floor(f) || f < 1 || f > 64)
                 throw Error("--levels: factors must be whole numbers 1..64");
-            s.levelFactors.push_back(static_cast<int>(f));
+            o.levels.push_back(static_cast<int>(f));
         }
     }
-    if (!a.radius.empty()) {
-        const std::vector<double> r = parseNumbers(a.radius, "--radius");
-        if (r.size() != 1 && r.size() != 6)
-            throw Error("--radius: give one number or six (u,v,depth,az,el,rot)");
-        for (int i = 0; i < 6; ++i) {
-            s.searchRadius[i] = r.size() == 1 ? r[0] : r[i];
-            if (!(s.searchRadius[i] > 0.0)) throw Error("--radius: values must be positive");
-        }
-    }
-    return s;
+    if (!a.radius.empty()) o.radius = parseNumbers(a.radius, "--radius");
+    return applySearchOptions(o, std::move(s));
 }
 
 void useWholeCtSpeedups(RegistrationSettings& settings, const SearchArgs& args) {

@@ -77,21 +77,6 @@ struct TrackJob {
     std::size_t segment = 0;
 };
 
-std::map<int, fm::RigidTransform> keyframesOf(const fm::TrialScene& scene, const std::string& bone,
-                                              const std::optional<fm::TraFile>& startTra,
-                                              const std::string& startPath) {
-    // The trial's own keyframes, then the --start file's poses (Autoscoper frame): the file
-    // holds this bone alone, or every bone of the trial in its order (track/TrialTra.h).
-    std::map<int, fm::RigidTransform> keyframes = fm::trialKeyframes(scene, bone);
-    if (startTra) {
-        const std::size_t object = fm::traObjectOfBone(*startTra, scene, bone, startPath);
-        for (std::size_t f = 0; f < startTra->frames.size(); ++f)
-            if (const auto& p = startTra->frames[f][object])
-                keyframes[static_cast<int>(f)] = fm::objectPoseFromTra(scene, bone, *p);
-    }
-    return keyframes;
-}
-
 // --resume: the frames of `out` already tracked (object poses), after checking its shape.
 std::map<int, fm::RigidTransform> resumedFrames(const fm::TrialScene& scene,
                                                 const std::string& bone, const fs::path& out,
@@ -188,7 +173,7 @@ void runTrack(const TrackArgs& a) {
             b.keptRows = fm::cli::keptTrackCsvRows(a.csv, scene.cameras.size(), b.name, kept);
         }
         b.segments =
-            fm::splitAtKeyframes(frames, keyframesOf(scene, b.name, startTra, a.start));
+            fm::splitAtKeyframes(frames, fm::boneKeyframes(scene, b.name, startTra, a.start));
         for (std::size_t s = 0; s < b.segments.size(); ++s) {
             jobs.push_back({bi, s});
             longest = std::max(longest, b.segments[s].frames.size());

@@ -4,13 +4,11 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <memory>
 
 #include "bones/BoneVolume.h"
 #include "bones/LabelTable.h"
 #include "camera/MayaCam.h"
 #include "core/Error.h"
-#include "drr/Drr.h"
 #include "io/AtomicFile.h"
 #include "io/ImageFileWriter.h"
 #include "io/TiffVolume.h"
@@ -46,12 +44,6 @@ double referenceLevel(const Image& transmission) {
     if (body.empty()) return 1.0;
     std::nth_element(body.begin(), body.begin() + body.size() / 2, body.end());
     return std::max(1e-6, double(body[body.size() / 2]));
-}
-
-XrayModelPtr densityModel(const Volume& mgPerCm3) {
-    DrrValueOptions options;
-    options.values = DrrValues::Raw;
-    return std::make_shared<VolumeXrayModel>(prepareDrrVolume(mgPerCm3, options));
 }
 
 std::string frameName(int f) {
@@ -115,7 +107,7 @@ TrialSimulationResult simulateTrial(const TrialSimulationSpec& s, const std::fun
     bone.labels = s.boneLabels;
     requireVoxels(bone, s.labels, "the label map");
     const Volume boneCt = boneVolume(s.ct, s.labels, bone);
-    const Volume background = volumeWithout(s.ct, s.labels, bone, static_cast<float>(s.fillHU));
+    const Volume backgroundCt = volumeWithout(s.ct, s.labels, bone, static_cast<float>(s.fillHU));
     Volume displaced = boneMask(s.labels, bone);
     const float fill = static_cast<float>(-std::round(1000.0 * densityFromHU(s.fillHU)));
     for (float& v : displaced.values) v = v > 0.0f ? fill : 0.0f;
@@ -128,13 +120,14 @@ TrialSimulationResult simulateTrial(const TrialSimulationSpec& s, const std::fun
     const Spectrum spectrum = makeSpectrum(s.spectrum);
     validateDetectorSettings(s.detector);
 
-    // 2. The spectral scene: the background at the identity, the bone and the displaced tissue
-    //    at the bone's pose (layers 2..4, moved each frame).
-    SpectralScene scene;
-    addCtLayers(scene, background, nullptr, "background", RigidTransform::identity(), s.detector.threads);
-    addCtLayers(scene, boneCt, nullptr, s.boneName, RigidTransform::identity(), s.detector.threads);
-    scene.layers.push_back({&materialTable("soft_tissue"),
-                            {"displaced tissue", densityModel(displaced), RigidTransform::identity(), true}});
+    // 2. The spectral scenes: the background, which stays (its masses rendered once per camera:
+    //    the whole CT's walk, most of the work), and the bone with the tissue it displaces, moved
+    //    to the bone's pose every frame.
+    SpectralScene background, moving;
+    addCtLayers(background, backgroundCt, nullptr, "background", RigidTransform::identity(), s.detector.threads);
+    addCtLayers(moving, boneCt, nullptr, s.boneName, RigidTransform::identity(), s.detector.threads);
+    addDensityLayer(moving, displaced, materialTable("soft_tissue"), "displaced tissue", RigidTransform::identity(),
+                    s.detector.threads);
 
     // 3. The files that do not change over the frames.
     fs::create_directories(s.out);
@@ -164,12 +157,17 @@ TrialSimulationResult simulateTrial(const TrialSimulationSpec& s, const std::fun
     //    at the reference level: the noise the anatomy has, whatever its thickness).
     const auto started = std::chrono::steady_clock::now();
     std::vector<double> reference(cameras.size(), 0.0);
+    std::vector<MassImages> still;
+    for (const PinholeCamera& c : cameras)
+        still.push_back(renderMassImages(background, toProjectionGeometry(c), s.detector.threads));
     for (int f = 0; f < s.frames; ++f) {
-        for (std::size_t layer = 2; layer < scene.layers.size(); ++layer)
-            scene.layers[layer].object.worldFromObject = motion.poses[static_cast<std::size_t>(f)];
+        for (MaterialLayer& layer : moving.layers)
+            layer.object.worldFromObject = motion.poses[static_cast<std::size_t>(f)];
         for (std::size_t c = 0; c < cameras.size(); ++c) {
-            const Image primary = transmissionImage(renderMassImages(scene, toProjectionGeometry(cameras[c]), s.detector.threads),
-                                                    spectrum, DetectorResponse::Integrating, s.detector.threads);
+            MassImages masses = still[c];
+            addMassImages(masses, renderMassImages(moving, toProjectionGeometry(cameras[c]), s.detector.threads));
+            const Image primary =
+                transmissionImage(masses, spectrum, DetectorResponse::Integrating, s.detector.threads);
             if (f == 0) reference[c] = referenceLevel(primary);
             DetectorSettings detector = s.detector;
             detector.logOutput = s.logSignal;

@@ -1,5 +1,6 @@
 #include "spectral/SpectralScene.h"
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 
@@ -16,20 +17,22 @@ namespace {
 // Mass per area (g/cm^2) from a line integral of mg/cm^3 over mm.
 constexpr double kGramsPerCm2 = 1e-3 * 0.1;
 
-XrayModelPtr densityModel(const Volume& mgPerCm3, int threads) {
+}  // namespace
+
+void addDensityLayer(SpectralScene& scene, const Volume& mgPerCm3, const MaterialTable& material,
+                     const std::string& name, const RigidTransform& worldFromObject, int threads) {
     DrrValueOptions options;
     options.values = DrrValues::Raw;
     options.threads = threads;
-    return std::make_shared<VolumeXrayModel>(prepareDrrVolume(mgPerCm3, options));
+    auto model = std::make_shared<VolumeXrayModel>(prepareDrrVolume(mgPerCm3, options));
+    scene.layers.push_back({&material, {name, std::move(model), worldFromObject, true}});
 }
-
-}  // namespace
 
 void addCtLayers(SpectralScene& scene, const Volume& ctHU, const Volume* boneMask, const std::string& name,
                  const RigidTransform& worldFromObject, int threads) {
     const MaterialVolumes m = decomposeMaterials(ctHU, boneMask);
-    scene.layers.push_back({&materialTable("soft_tissue"), {name + " soft tissue", densityModel(m.softTissue, threads), worldFromObject, true}});
-    scene.layers.push_back({&materialTable("cortical_bone"), {name + " bone", densityModel(m.bone, threads), worldFromObject, true}});
+    addDensityLayer(scene, m.softTissue, materialTable("soft_tissue"), name + " soft tissue", worldFromObject, threads);
+    addDensityLayer(scene, m.bone, materialTable("cortical_bone"), name + " bone", worldFromObject, threads);
 }
 
 void addMeshLayer(SpectralScene& scene, MeshDrrModelPtr mesh, const MaterialTable& material, const std::string& name,
@@ -39,26 +42,43 @@ void addMeshLayer(SpectralScene& scene, MeshDrrModelPtr mesh, const MaterialTabl
 }
 
 MassImages renderMassImages(const SpectralScene& scene, const ProjectionGeometry& camera, int threads) {
-    MassImages out;
+    // One scene per material (renderView sums its objects' line integrals), in first-layer order.
+    std::vector<const MaterialTable*> materials;
+    std::vector<Scene> scenes;
     for (const MaterialLayer& layer : scene.layers) {
         if (!layer.material) throw Error("a spectral layer without a material");
-        std::size_t m = 0;
-        while (m < out.materials.size() && out.materials[m] != layer.material) ++m;
-        Scene one;
-        one.objects.push_back(layer.object);
-        XrayRenderSettings settings;
-        settings.threads = threads;
+        const auto m = std::find(materials.begin(), materials.end(), layer.material) - materials.begin();
+        if (m == static_cast<std::ptrdiff_t>(materials.size())) {
+            materials.push_back(layer.material);
+            scenes.emplace_back();
+        }
+        scenes[static_cast<std::size_t>(m)].objects.push_back(layer.object);
+    }
+    if (materials.empty()) throw Error("a spectral scene without layers");
+    MassImages out;
+    out.materials = materials;
+    XrayRenderSettings settings;
+    settings.threads = threads;
+    for (const Scene& one : scenes) {
         Image image = renderView(one, camera, settings);
         for (float& v : image.pixels) v = static_cast<float>(v * kGramsPerCm2);
-        if (m == out.materials.size()) {
-            out.materials.push_back(layer.material);
-            out.mass.push_back(std::move(image));
-        } else {
-            for (std::size_t i = 0; i < image.pixels.size(); ++i) out.mass[m].pixels[i] += image.pixels[i];
-        }
+        out.mass.push_back(std::move(image));
     }
-    if (out.materials.empty()) throw Error("a spectral scene without layers");
     return out;
+}
+
+void addMassImages(MassImages& into, const MassImages& more) {
+    for (std::size_t k = 0; k < more.materials.size(); ++k) {
+        const auto m = std::find(into.materials.begin(), into.materials.end(), more.materials[k]) - into.materials.begin();
+        if (m == static_cast<std::ptrdiff_t>(into.materials.size())) {
+            into.materials.push_back(more.materials[k]);
+            into.mass.push_back(more.mass[k]);
+            continue;
+        }
+        Image& sum = into.mass[static_cast<std::size_t>(m)];
+        if (sum.pixels.size() != more.mass[k].pixels.size()) throw Error("mass images of different sizes");
+        for (std::size_t i = 0; i < sum.pixels.size(); ++i) sum.pixels[i] += more.mass[k].pixels[i];
+    }
 }
 
 Image simulateRadiograph(const SpectralScene& scene, const ProjectionGeometry& camera, const Spectrum& spectrum,

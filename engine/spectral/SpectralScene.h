@@ -35,6 +35,9 @@ struct SpectralScene {
 // threshold.
 void addCtLayers(SpectralScene& scene, const Volume& ctHU, const Volume* boneMask, const std::string& name,
                  const RigidTransform& worldFromObject, int threads = 0);
+// A volume of one material's density in mg/cm^3 (negative: taken away) as a layer.
+void addDensityLayer(SpectralScene& scene, const Volume& mgPerCm3, const MaterialTable& material,
+                     const std::string& name, const RigidTransform& worldFromObject, int threads = 0);
 // A closed mesh of `material` at its table density (implants: cobaltChromeTable()).
 void addMeshLayer(SpectralScene& scene, MeshDrrModelPtr mesh, const MaterialTable& material,
                   const std::string& name, const RigidTransform& worldFromObject);
@@ -48,6 +51,8 @@ struct MassImages {
     std::vector<Image> mass;
 };
 MassImages renderMassImages(const SpectralScene& scene, const ProjectionGeometry& camera, int threads = 0);
+// `more` added into `into`, material by material (a static part rendered once plus a moving one).
+void addMassImages(MassImages& into, const MassImages& more);
 
 // The primary transmission I / I0 of every pixel (same for any thread count).
 Image transmissionImage(const MassImages& masses, const Spectrum& spectrum, DetectorResponse detector,

@@ -21,9 +21,7 @@ struct Fixed {  // the part every record has, whatever the camera count
     double seconds = 0.0;
     double pose[12] = {};  // rotation column by column, then translation
     double profile[4] = {};  // thread seconds: set-up, render, footprint, similarity
-    double profileWall = 0.0;
-    std::int32_t profileEvaluations = 0;
-    std::int32_t padding = 0;
+    double profileWall = 0.0;  // (its evaluations are the record's)
 };
 
 constexpr int kLastStatus = static_cast<int>(FrameRecord::Status::Stopped);
@@ -50,7 +48,6 @@ void encodeFrameRecord(const FrameRecord& r, std::span<std::byte> out) {
     f.profile[2] = r.profile.footprintSeconds;
     f.profile[3] = r.profile.similaritySeconds;
     f.profileWall = r.profile.wallSeconds;
-    f.profileEvaluations = r.profile.evaluations;
     if (r.worldFromBone) {
         for (int c = 0; c < 3; ++c)
             for (int row = 0; row < 3; ++row)
@@ -90,7 +87,7 @@ FrameRecord decodeFrameRecord(std::span<const std::byte> in, std::size_t cameras
     r.profile.footprintSeconds = f.profile[2];
     r.profile.similaritySeconds = f.profile[3];
     r.profile.wallSeconds = f.profileWall;
-    r.profile.evaluations = f.profileEvaluations;
+    r.profile.evaluations = f.evaluations;
     if (f.hasPose) {
         RigidTransform p;
         for (int c = 0; c < 3; ++c)

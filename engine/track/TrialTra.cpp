@@ -23,4 +23,16 @@ std::size_t traObjectOfBone(const TraFile& tra, const TrialScene& trial, const s
                 std::to_string(bones.size()) + " bones in its order (" + names + ")");
 }
 
+std::map<int, RigidTransform> boneKeyframes(const TrialScene& trial, const std::string& bone,
+                                            const std::optional<TraFile>& start,
+                                            const std::filesystem::path& startPath) {
+    std::map<int, RigidTransform> keyframes = trialKeyframes(trial, bone);
+    if (start) {
+        const std::size_t object = traObjectOfBone(*start, trial, bone, startPath);
+        for (std::size_t f = 0; f < start->frames.size(); ++f)
+            if (const auto& p = start->frames[f][object]) keyframes[static_cast<int>(f)] = objectPoseFromTra(trial, bone, *p);
+    }
+    return keyframes;
+}
+
 }  // namespace fm

@@ -6,6 +6,8 @@
 // a trial of 3 bones are three matrices, not eight x, y, z, yaw, pitch, roll rows.
 #include <cstddef>
 #include <filesystem>
+#include <map>
+#include <optional>
 #include <string>
 
 #include "pose/AutoscoperTra.h"
@@ -20,5 +22,11 @@ TraFile readTrialTra(const std::filesystem::path& path, const TrialScene& trial)
 // fm::Error naming the file, its object count and the trial's bones otherwise.
 std::size_t traObjectOfBone(const TraFile& tra, const TrialScene& trial, const std::string& bone,
                             const std::filesystem::path& path);
+
+// The keyframes `bone` is tracked from: the trial's own, then the poses of a --start .tra
+// (`start`, read from `startPath`), as object poses by frame.
+std::map<int, RigidTransform> boneKeyframes(const TrialScene& trial, const std::string& bone,
+                                            const std::optional<TraFile>& start,
+                                            const std::filesystem::path& startPath);
 
 }  // namespace fm

@@ -1,8 +1,10 @@
 #include "xray/ObjectRegistration.h"
 
+#include <chrono>
 #include <memory>
 
 #include "core/Error.h"
+#include "core/Parallel.h"
 #include "scene/MeshXrayModel.h"
 #include "scene/ObjectPoseParameterization.h"
 
@@ -80,6 +82,40 @@ ObjectRegistrationResult registerObject(const Scene& scene, std::size_t object,
     out.seconds = r.seconds;
     out.stopped = r.stopped;
     out.profile = r.profile;
+    return out;
+}
+
+bool registersSideBySide(std::size_t objects, const RegistrationSettings& settings) {
+    return objects > 1 && (settings.threads > 0 ? settings.threads : defaultThreadCount()) > 1;
+}
+
+ObjectsRegistration registerObjects(const Scene& scene, const RegistrationView& view,
+                                    const RegistrationSettings& settings,
+                                    const std::function<RegistrationCallback(std::size_t)>& progressFor,
+                                    const std::atomic<bool>* stop) {
+    const std::size_t n = scene.objects.size();
+    ObjectsRegistration out;
+    out.results.resize(n);
+    out.sideBySide = registersSideBySide(n, settings);
+    const auto started = std::chrono::steady_clock::now();
+    const auto run = [&](std::size_t k, const RegistrationSettings& s) {
+        out.results[k] = registerObject(scene, k, view, scene.objects[k].worldFromObject, s,
+                                        progressFor ? progressFor(k) : RegistrationCallback{}, stop);
+    };
+    if (out.sideBySide) {
+        RegistrationSettings single = settings;
+        single.threads = 1;
+        const int cores = settings.threads > 0 ? settings.threads : defaultThreadCount();
+        parallelFor(
+            static_cast<int>(n), cores,
+            [&](int begin, int end) {
+                for (int k = begin; k < end; ++k) run(static_cast<std::size_t>(k), single);
+            },
+            static_cast<int>(n));
+    } else {
+        for (std::size_t k = 0; k < n; ++k) run(k, settings);
+    }
+    out.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     return out;
 }
 

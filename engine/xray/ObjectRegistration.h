@@ -3,6 +3,7 @@
 // in the camera's frame (ObjectPoseParameterization, pivot at the centre of its bounds) is
 // searched from a start pose; the other objects are hidden meanwhile (their outlines are not
 // this object's evidence). Several objects are registered one at a time (registerObjects).
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -40,6 +41,22 @@ ObjectRegistrationResult registerObject(const Scene& scene, std::size_t object,
                                         const RegistrationSettings& settings,
                                         const RegistrationCallback& progress = {},
                                         const std::atomic<bool>* stop = nullptr);
+
+// Every object of `scene` registered alone from its pose in `scene` (registerObject). With
+// several objects and cores they run side by side, one per core, each search single-threaded:
+// the same answers as one after the other (results do not depend on the thread count) in less
+// wall time (one search keeps about 1.1 of 2 cores busy). progressFor(k), if given, is object k's
+// progress callback.
+bool registersSideBySide(std::size_t objects, const RegistrationSettings& settings);
+struct ObjectsRegistration {
+    std::vector<ObjectRegistrationResult> results;  // per object of the scene
+    bool sideBySide = false;
+    double wallSeconds = 0.0;
+};
+ObjectsRegistration registerObjects(const Scene& scene, const RegistrationView& view,
+                                    const RegistrationSettings& settings,
+                                    const std::function<RegistrationCallback(std::size_t)>& progressFor = {},
+                                    const std::atomic<bool>* stop = nullptr);
 
 // The object's silhouette: pixels of `camera` whose ray crosses it (line integral > 0).
 Mask objectSilhouette(const SceneObject& object, const ProjectionGeometry& camera, int threads = 0);

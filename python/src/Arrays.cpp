@@ -1,5 +1,6 @@
 #include "Arrays.h"
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -28,6 +29,17 @@ Doubles shaped(const pb::handle& value, std::initializer_list<pb::ssize_t> shape
 }
 
 }  // namespace
+
+std::vector<double> numbersOf(const pb::handle& value, const std::string& what,
+                              std::initializer_list<std::size_t> counts, const std::string& expected) {
+    const Doubles a = arrayOf<double>(value, what, expected);
+    const auto n = static_cast<std::size_t>(a.size());
+    if (std::find(counts.begin(), counts.end(), n) == counts.end()) throw Error(what + ": expected " + expected);
+    std::vector<double> out(a.data(), a.data() + n);
+    for (double v : out)
+        if (!std::isfinite(v)) throw Error(what + ": the numbers must be finite");
+    return out;
+}
 
 pb::array_t<float> imageToArray(Image&& image) {
     auto* pixels = new std::vector<float>(std::move(image.pixels));
@@ -95,6 +107,34 @@ pb::array_t<double> fromMat3(const glm::dmat3& m) {
     for (int r = 0; r < 3; ++r)
         for (int c = 0; c < 3; ++c) d[r * 3 + c] = m[c][r];
     return a;
+}
+
+std::vector<std::optional<RigidTransform>> poseStack(const pb::handle& value, const std::string& what,
+                                                     int leadingDims, bool missingAllowed) {
+    const std::string shape = leadingDims == 1 ? "(n, 4, 4)" : "(frames, objects, 4, 4)";
+    const Doubles a = arrayOf<double>(value, what, "poses as an " + shape + " array");
+    if (a.ndim() != leadingDims + 2 || a.shape(leadingDims) != 4 || a.shape(leadingDims + 1) != 4)
+        throw Error(what + ": expected poses as an " + shape + " array");
+    std::vector<std::optional<RigidTransform>> poses;
+    for (pb::ssize_t n = 0; n < a.size() / 16; ++n) {
+        const double* m = a.data() + 16 * n;
+        std::size_t nans = 0;
+        for (int i = 0; i < 16; ++i) nans += std::isnan(m[i]) ? 1 : 0;
+        const std::string where = what + "[" +
+                                  (leadingDims == 1 ? std::to_string(n)
+                                                    : std::to_string(n / a.shape(1)) + ", " + std::to_string(n % a.shape(1))) +
+                                  "]";
+        if (nans == 16 && missingAllowed) {
+            poses.emplace_back();
+            continue;
+        }
+        if (nans == 16) throw Error(where + ": no pose (NaN) where one is needed");
+        if (nans > 0) throw Error(where + ": partly NaN (all 16 NaN = no pose)");
+        std::array<double, 16> r{};
+        std::copy(m, m + 16, r.begin());
+        poses.push_back(RigidTransform::fromRowMajor4x4(r, where));
+    }
+    return poses;
 }
 
 RigidTransform toTransform(const pb::handle& value, const std::string& what) {

@@ -9,7 +9,10 @@
 //   vectors  3 numbers in the engine's (x, y, z) order: world points, spacing, origin
 //   poses    4x4 float64 [R t; 0 0 0 1], named aFromB like the engine (scene/RigidTransform.h)
 #include <array>
+#include <initializer_list>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include <glm/glm.hpp>
 #include <pybind11/numpy.h>
@@ -43,6 +46,11 @@ pb::array_t<T, pb::array::c_style | pb::array::forcecast> arrayOf(const pb::hand
     return a;
 }
 
+// A few numbers (any sequence or array, flattened): exactly one of `counts` of them, all finite;
+// fm::Error "<what>: expected <expected>" otherwise.
+std::vector<double> numbersOf(const pb::handle& value, const std::string& what,
+                              std::initializer_list<std::size_t> counts, const std::string& expected);
+
 // float32 (rows, cols) owning the image's pixels (moved, not copied).
 pb::array_t<float> imageToArray(Image&& image);
 // A 2-D array of numbers -> fm::Image (copied; float32). `what` names the argument in errors.
@@ -61,6 +69,12 @@ pb::array_t<double> fromMat3(const glm::dmat3& m);
 // A search's profile (search/EvaluationProfile.h) as a dict: evaluations, wall_seconds and the
 // thread seconds of set_up, render, footprint and similarity.
 pb::dict profileDict(const EvaluationProfile& profile);
+
+// A stack of 4x4 poses, (..., 4, 4) with `leadingDims` leading dimensions (1: (n, 4, 4); 2:
+// (frames, objects, 4, 4)), flattened in C order. A pose of 16 NaN is "no pose" (nullopt) when
+// `missingAllowed`, else an error; partly NaN or not rigid is an error naming `what` and the index.
+std::vector<std::optional<RigidTransform>> poseStack(const pb::handle& value, const std::string& what,
+                                                     int leadingDims, bool missingAllowed);
 
 // 4x4 pose array <-> RigidTransform (validated: a rotation, last row 0 0 0 1).
 RigidTransform toTransform(const pb::handle& value, const std::string& what);

@@ -13,7 +13,7 @@
 #include "scene/MeshXrayModel.h"
 #include "scene/Scene.h"
 #include "scene/XrayModel.h"
-#include "volume/ValueUnitGuess.h"
+#include "drr/DrrValuesChoice.h"
 
 namespace fm::py {
 
@@ -25,23 +25,14 @@ using Doubles = pb::array_t<double, pb::array::c_style | pb::array::forcecast>;
 struct PreparedVolume {
     std::shared_ptr<const VolumeXrayModel> model;
     std::string values;  // "mu" or "raw"
-    std::string reason;  // why (auto)
+    std::string reason;  // what was decided and why (drr/DrrValuesChoice)
 };
-
-DrrValues chooseValues(const Volume& v, const std::string& option, std::string& reason) {
-    if (option != "auto" && option != "mu" && option != "raw")
-        throw Error("values: expected \"auto\", \"mu\" or \"raw\", got \"" + option + "\"");
-    const UnitGuess guess = guessHounsfield(v);
-    reason = option == "auto" ? guess.reason : "as asked";
-    if (option == "auto") return guess.hounsfield ? DrrValues::Mu : DrrValues::Raw;
-    return option == "mu" ? DrrValues::Mu : DrrValues::Raw;
-}
 
 PreparedVolume prepare(const Volume& volume, const std::string& values, std::optional<double> threshold,
                        int threads, bool compact) {
     DrrValueOptions options;
-    std::string reason;
-    options.values = chooseValues(volume, values, reason);
+    const DrrValuesChoice choice = chooseDrrValues(volume, values);
+    options.values = choice.values;
     options.thresholdHU = threshold;
     options.threads = threads;
     options.compactVoxels = compact;
@@ -50,7 +41,7 @@ PreparedVolume prepare(const Volume& volume, const std::string& values, std::opt
         pb::gil_scoped_release unlock;
         prepared = prepareDrrVolume(volume, options);
     }
-    return {std::make_shared<VolumeXrayModel>(prepared), options.values == DrrValues::Mu ? "mu" : "raw", reason};
+    return {std::make_shared<VolumeXrayModel>(prepared), options.values == DrrValues::Mu ? "mu" : "raw", choice.line};
 }
 
 DrrOutput parseOutput(const std::string& output) {
@@ -74,18 +65,9 @@ Image renderVolume(const PreparedVolume& p, const ProjectionGeometry& g, DrrOutp
 }
 
 // (n, 4, 4) poses -> transforms; fm::Error naming the pose that is not one.
-std::vector<RigidTransform> poseStack(const pb::handle& poses) {
-    Doubles a = Doubles::ensure(poses);
-    if (!a || a.ndim() != 3 || a.shape(1) != 4 || a.shape(2) != 4) {
-        PyErr_Clear();
-        throw Error("poses: expected an (n, 4, 4) array of worldFromObject poses");
-    }
+std::vector<RigidTransform> poseList(const pb::handle& poses) {
     std::vector<RigidTransform> out;
-    for (pb::ssize_t i = 0; i < a.shape(0); ++i) {
-        std::array<double, 16> m{};
-        std::copy(a.data() + 16 * i, a.data() + 16 * i + 16, m.begin());
-        out.push_back(RigidTransform::fromRowMajor4x4(m, "poses[" + std::to_string(i) + "]"));
-    }
+    for (const auto& p : poseStack(poses, "poses", 1, false)) out.push_back(*p);
     return out;
 }
 
@@ -135,7 +117,7 @@ render many views. render(geometry, pose=None) traces the volume at worldFromObj
                  if (pb::isinstance<ProjectionGeometry>(geometries)) {
                      const ProjectionGeometry& g = geometries.cast<const ProjectionGeometry&>();
                      if (poses.is_none()) throw Error("render_batch: one geometry needs poses=(n, 4, 4)");
-                     for (const RigidTransform& t : poseStack(poses))
+                     for (const RigidTransform& t : poseList(poses))
                          images.push_back(renderVolume(p, transformGeometry(t.inverse(), g), out, threads));
                  } else {
                      if (!poses.is_none()) throw Error("render_batch: give a list of geometries or one geometry and poses");

@@ -24,11 +24,9 @@ using Doubles = pb::array_t<double, pb::array::c_style | pb::array::forcecast>;
 // (n, 3) world points -> (n, 2) pixel (col, row); NaN where a point is behind the source.
 template <class Project>
 pb::array_t<double> projectPoints(const pb::handle& points, Project project) {
-    Doubles a = Doubles::ensure(points);
-    if (!a || !((a.ndim() == 2 && a.shape(1) == 3) || (a.ndim() == 1 && a.shape(0) == 3))) {
-        PyErr_Clear();
+    const Doubles a = arrayOf<double>(points, "points", "an (n, 3) array of world points (mm)");
+    if (!((a.ndim() == 2 && a.shape(1) == 3) || (a.ndim() == 1 && a.shape(0) == 3)))
         throw Error("points: expected an (n, 3) array of world points (mm)");
-    }
     const pb::ssize_t n = a.ndim() == 1 ? 1 : a.shape(0);
     pb::array_t<double> out(std::vector<pb::ssize_t>{n, 2});
     double* o = out.mutable_data();
@@ -47,12 +45,8 @@ ProjectionGeometry makeGeometry(const pb::handle& source, const pb::handle& size
     ProjectionGeometry g;
     g.source = toVec3(source, "source");
     g.detector.size = toSize(size, "size");
-    const Doubles s = Doubles::ensure(spacing);
-    if (!s || s.size() != 2) {
-        PyErr_Clear();
-        throw Error("spacing: expected 2 numbers (du, dv) in mm");
-    }
-    g.detector.spacing = {s.data()[0], s.data()[1]};
+    const std::vector<double> s = numbersOf(spacing, "spacing", {2}, "2 numbers (du, dv) in mm");
+    g.detector.spacing = {s[0], s[1]};
     g.detector.origin = toVec3(origin, "origin");
     g.detector.u = toVec3(u, "u");
     g.detector.v = toVec3(v, "v");
@@ -78,13 +72,9 @@ PinholeCamera cameraFromKrt(const pb::handle& K, const pb::handle& R, const pb::
 }
 
 Pose pose2011(const pb::handle& params) {
-    Doubles p = Doubles::ensure(params);
-    if (!p || p.size() != 6) {
-        PyErr_Clear();
-        throw Error("params: expected the six numbers x, y, z (mm), az, el, rot (deg)");
-    }
+    const std::vector<double> p = numbersOf(params, "params", {6}, "the six numbers x, y, z (mm), az, el, rot (deg)");
     std::array<double, 6> a{};
-    std::copy(p.data(), p.data() + 6, a.begin());
+    std::copy(p.begin(), p.end(), a.begin());
     const Pose pose = Pose::fromArray(a);
     validatePose(pose);
     return pose;
@@ -95,21 +85,14 @@ SceneSetup sceneSetup(const pb::object& size, const pb::object& distance, const 
     SceneSetup setup = defaultSceneSetup();
     if (!size.is_none()) setup.filmPixels = toSize(size, "size");
     if (!distance.is_none()) {
-        const Doubles d = Doubles::ensure(distance);
-        if (!d || (d.size() != 1 && d.size() != 2)) {
-            PyErr_Clear();
-            throw Error("distance: expected D (both) or (source-isocenter, isocenter-film) mm");
-        }
-        setup.sourceToIsocenterMm = d.data()[0];
-        setup.isocenterToFilmMm = d.data()[d.size() - 1];
+        const std::vector<double> d =
+            numbersOf(distance, "distance", {1, 2}, "D (both) or (source-isocenter, isocenter-film) mm");
+        setup.sourceToIsocenterMm = d.front();
+        setup.isocenterToFilmMm = d.back();
     }
     if (!film.is_none()) {
-        const Doubles f = Doubles::ensure(film);
-        if (!f || f.size() != 2) {
-            PyErr_Clear();
-            throw Error("film: expected 2 numbers (width, height) in mm");
-        }
-        setup.filmSizeMm = {f.data()[0], f.data()[1]};
+        const std::vector<double> f = numbersOf(film, "film", {2}, "2 numbers (width, height) in mm");
+        setup.filmSizeMm = {f[0], f[1]};
     }
     validateSceneSetup(setup);
     return setup;
@@ -118,12 +101,13 @@ SceneSetup sceneSetup(const pb::object& size, const pb::object& distance, const 
 }  // namespace
 
 void bindGeometry(pb::module_& m) {
-    pb::class_<ProjectionGeometry>(m, "Geometry", R"doc(
+    pb::class_<ProjectionGeometry> geometry(m, "Geometry", R"doc(
 A point source and a flat detector in world mm (docs/geometry.md): pixel (col, row) is at
 origin + col * du * u + row * dv * v. What every DRR is rendered with.
 
 Geometry(source, size=(cols, rows), spacing=(du, dv), origin, u, v); Geometry.from_json(text),
-read_geometry(path), g.to_json() for the JSON contract the CLI reads and writes.)doc")
+read_geometry(path), g.to_json() for the JSON contract the CLI reads and writes.)doc");
+    geometry
         .def(pb::init(&makeGeometry), pb::arg("source"), pb::arg("size"), pb::arg("spacing"), pb::arg("origin"),
              pb::arg("u"), pb::arg("v"))
         .def_static("from_json", [](const std::string& text) { return geometryFromJson(text, "geometry JSON"); },
@@ -199,6 +183,9 @@ camera.geometry() is the renderer's Geometry of it.)doc")
             return "<fluoromatch.Camera " + std::to_string(c.imageSize.x) + " x " + std::to_string(c.imageSize.y) +
                    ", f " + std::to_string(c.fx) + " px>";
         });
+    // A Camera wherever a Geometry is taken (its geometry()): Geometry(camera) and the implicit
+    // conversion it allows.
+    geometry.def(pb::init([](const PinholeCamera& c) { return toProjectionGeometry(c, "camera"); }), pb::arg("camera"));
     pb::implicitly_convertible<PinholeCamera, ProjectionGeometry>();
 
     m.def("read_camera",

@@ -7,6 +7,7 @@
 
 #include "Arrays.h"
 #include "Bindings.h"
+#include "Preparation.h"
 #include "core/Error.h"
 #include "io/VolumeWriter.h"
 #include "radiograph/LabelMask.h"
@@ -37,18 +38,7 @@ image a (rows, cols) float32 array of the file's values. page: of a multi-page T
     m.def("prepare_radiograph",
           [](const pb::handle& image, bool invert, bool log, std::optional<double> i0,
              std::optional<double> excludeBelow, int erode, std::optional<std::array<int, 4>> roi, int bits) {
-              RadiographPreparation p;
-              p.invert = invert;
-              p.logTransform = log;
-              if (i0) {
-                  if (!log) throw Error("i0 applies to log=True only (the I0 of -ln(I / I0))");
-                  if (!(*i0 > 0.0)) throw Error("i0 must be a positive intensity (the unattenuated value)");
-                  p.i0 = *i0;
-              }
-              p.fullScale = radiographFullScale(bits);
-              p.excludeBelow = excludeBelow;
-              p.erodePixels = erode;
-              if (roi) p.roi = PixelRect{(*roi)[0], (*roi)[1], (*roi)[2], (*roi)[3]};
+              const RadiographPreparation p = preparationOf(invert, log, i0, excludeBelow, erode, roi, bits);
               const Image in = arrayToImage(image, "image");
               PreparedRadiograph out;
               {

@@ -26,14 +26,10 @@ pb::array_t<T> rows(const MeshArray<glm::vec<N, T>>& items) {
 }
 
 PyMesh meshFromArrays(const pb::handle& vertices, const pb::handle& faces) {
-    using Floats = pb::array_t<float, pb::array::c_style | pb::array::forcecast>;
-    using Indices = pb::array_t<std::int64_t, pb::array::c_style | pb::array::forcecast>;
-    Floats v = Floats::ensure(vertices);
-    Indices f = Indices::ensure(faces);
-    if (!v || !f || v.ndim() != 2 || v.shape(1) != 3 || f.ndim() != 2 || f.shape(1) != 3) {
-        PyErr_Clear();
-        throw Error("Mesh: expected vertices (n, 3) and faces (m, 3) arrays");
-    }
+    const std::string expected = "vertices (n, 3) and faces (m, 3) arrays";
+    const auto v = arrayOf<float>(vertices, "Mesh", expected);
+    const auto f = arrayOf<std::int64_t>(faces, "Mesh", expected);
+    if (v.ndim() != 2 || v.shape(1) != 3 || f.ndim() != 2 || f.shape(1) != 3) throw Error("Mesh: expected " + expected);
     PyMesh m;
     m.source = "numpy arrays";
     m.mesh.positions.resize(static_cast<std::size_t>(v.shape(0)));

@@ -21,16 +21,9 @@ using Doubles = pb::array_t<double, pb::array::c_style | pb::array::forcecast>;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 std::array<double, 6> sixNumbers(const pb::handle& value, const std::string& what) {
-    Doubles a = Doubles::ensure(value);
-    if (!a || a.size() != 6) {
-        PyErr_Clear();
-        throw Error(what + ": expected 6 numbers");
-    }
+    const std::vector<double> v = numbersOf(value, what, {6}, "6 numbers");
     std::array<double, 6> out{};
-    for (int i = 0; i < 6; ++i) {
-        out[i] = a.data()[i];
-        if (!std::isfinite(out[i])) throw Error(what + ": the numbers must be finite");
-    }
+    std::copy(v.begin(), v.end(), out.begin());
     return out;
 }
 
@@ -61,34 +54,16 @@ pb::array_t<double> traArray(const TraFile& tra) {
 
 // (frames, 4, 4) or (frames, objects, 4, 4); a matrix of NaN = no pose in that frame.
 TraFile traFromArray(const pb::handle& value, const std::string& form, const std::string& what) {
-    Doubles a = Doubles::ensure(value);
-    if (!a || !((a.ndim() == 3 || a.ndim() == 4) && a.shape(a.ndim() - 1) == 4 && a.shape(a.ndim() - 2) == 4)) {
-        PyErr_Clear();
-        throw Error(what + ": expected poses as an (frames, 4, 4) or (frames, objects, 4, 4) array");
-    }
     TraFile tra;
     tra.form = parseTraForm(form, "form");
-    const pb::ssize_t frames = a.shape(0), objects = a.ndim() == 4 ? a.shape(1) : 1;
-    tra.objects = static_cast<int>(objects);
-    tra.frames.resize(static_cast<std::size_t>(frames));
-    for (pb::ssize_t f = 0; f < frames; ++f)
-        for (pb::ssize_t o = 0; o < objects; ++o) {
-            const double* m = a.data() + (f * objects + o) * 16;
-            bool allNaN = true, anyNaN = false;
-            for (int i = 0; i < 16; ++i) {
-                allNaN = allNaN && std::isnan(m[i]);
-                anyNaN = anyNaN || std::isnan(m[i]);
-            }
-            const std::string where = what + ": frame " + std::to_string(f) + ", object " + std::to_string(o);
-            if (allNaN) {
-                tra.frames[static_cast<std::size_t>(f)].push_back(std::nullopt);
-                continue;
-            }
-            if (anyNaN) throw Error(where + ": partly NaN (all 16 NaN = no pose in this frame)");
-            std::array<double, 16> r{};
-            std::copy(m, m + 16, r.begin());
-            tra.frames[static_cast<std::size_t>(f)].push_back(RigidTransform::fromRowMajor4x4(r, where));
-        }
+    const Doubles a = arrayOf<double>(value, what, "poses as an (frames, 4, 4) or (frames, objects, 4, 4) array");
+    const int leading = a.ndim() == 4 ? 2 : 1;
+    const auto poses = poseStack(a, what, leading, true);
+    tra.objects = leading == 2 ? static_cast<int>(a.shape(1)) : 1;
+    for (std::size_t n = 0; n < poses.size(); ++n) {
+        if (n % static_cast<std::size_t>(tra.objects) == 0) tra.frames.emplace_back();
+        tra.frames.back().push_back(poses[n]);
+    }
     return tra;
 }
 
@@ -166,24 +141,12 @@ JointTrack camera frame: source at the origin, looking along -z); NaN for NOT_OP
 
     m.def("write_jts",
           [](const std::filesystem::path& path, const pb::handle& poses) {
-              Doubles a = Doubles::ensure(poses);
-              if (!a || a.ndim() != 3 || a.shape(1) != 4 || a.shape(2) != 4) {
-                  PyErr_Clear();
-                  throw Error("poses: expected an (images, 4, 4) array");
-              }
               JointTrackPoses out;
-              for (pb::ssize_t f = 0; f < a.shape(0); ++f) {
-                  const double* m = a.data() + 16 * f;
-                  if (std::isnan(m[0])) {
-                      JointTrackPose none;
-                      none.optimized = false;
-                      out.frames.push_back(none);
-                      continue;
-                  }
-                  std::array<double, 16> r{};
-                  std::copy(m, m + 16, r.begin());
-                  out.frames.push_back(JointTrackPose::fromCameraFromModel(
-                      RigidTransform::fromRowMajor4x4(r, "poses: image " + std::to_string(f))));
+              for (const std::optional<RigidTransform>& pose : poseStack(poses, "poses", 1, true)) {
+                  JointTrackPose row;  // NOT_OPTIMIZED unless there is a pose
+                  if (pose) row = JointTrackPose::fromCameraFromModel(*pose);
+                  else row.optimized = false;
+                  out.frames.push_back(row);
               }
               writeJointTrackPoses(path, out);
           },

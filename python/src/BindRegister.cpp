@@ -2,7 +2,6 @@
 // the same search as `fluoromatch register --reference IMG --camera CALIB --model M --start S`
 // (xray/ObjectRegistration.h), with the CLI's options as keyword arguments and the same pose for
 // the same seed. Every result says how sure it is (xray/AnswerCheck.h).
-#include <chrono>
 #include <filesystem>
 #include <optional>
 
@@ -11,16 +10,16 @@
 #include "Arrays.h"
 #include "Bindings.h"
 #include "Progress.h"
+#include "Preparation.h"
 #include "PyMesh.h"
 #include "camera/CameraFile.h"
 #include "core/Error.h"
-#include "core/Parallel.h"
 #include "radiograph/LabelMask.h"
 #include "radiograph/Radiograph.h"
 #include "radiograph/RadiographPreparation.h"
 #include "scene/MeshXrayModel.h"
 #include "scene/ObjectPoseParameterization.h"
-#include "search/Optimizer.h"
+#include "search/SearchOptions.h"
 #include "xray/AnswerCheck.h"
 #include "xray/CameraPoseDifference.h"
 #include "xray/ModelCoverage.h"
@@ -45,42 +44,6 @@ std::vector<pb::object> listOf(const pb::object& value) {
     }
     for (const pb::handle& h : value) out.push_back(pb::reinterpret_borrow<pb::object>(h));
     return out;
-}
-
-// The search settings of `fluoromatch register --model` with the options' values (cli/SearchCli's
-// registrationSettings on realXraySettings): the same numbers for the same arguments.
-RegistrationSettings searchSettings(const std::string& method, const std::string& similarity,
-                                    std::uint64_t seed, int budget, int polishBudget,
-                                    const std::optional<std::vector<int>>& levels,
-                                    const std::optional<std::vector<double>>& radius, int threads,
-                                    const std::string& polish) {
-    RegistrationSettings s = realXraySettings();
-    s.method = parseSearchMethod(method);
-    if (s.method == SearchMethod::NelderMead)
-        throw Error("method: nm is the local polish, not a global search (use mc, pso, bees or cmaes)");
-    s.similarity = parseSimilarityMeasure(similarity);
-    s.polishMethod = parseSearchMethod(polish);
-    s.seed = seed;
-    if (budget < 0) throw Error("budget must be positive");
-    if (budget > 0) s.globalEvaluations = budget;
-    if (polishBudget >= 0) s.polishEvaluations = s.finestPolishEvaluations = polishBudget;
-    if (threads < 0) throw Error("threads must be 0 (all cores) or more");
-    s.threads = threads;
-    if (levels) {
-        if (levels->empty()) throw Error("levels: give at least one factor");
-        for (int f : *levels)
-            if (f < 1 || f > 64) throw Error("levels: factors must be whole numbers 1..64");
-        s.levelFactors = *levels;
-    }
-    if (radius) {
-        if (radius->size() != 1 && radius->size() != 6)
-            throw Error("radius: give one number or six (u, v, depth, az, el, rot)");
-        for (int i = 0; i < 6; ++i) {
-            s.searchRadius[i] = radius->size() == 1 ? (*radius)[0] : (*radius)[i];
-            if (!(s.searchRadius[i] > 0.0)) throw Error("radius: values must be positive");
-        }
-    }
-    return s;
 }
 
 pb::dict progressDict(const RegistrationProgress& p, const std::string& model) {
@@ -127,8 +90,20 @@ void bindRegister(pb::module_& m) {
                 throw Error("out: give one per model (" + std::to_string(n) + ") or a single .tra for all");
             for (const std::string& o : outs) checkPoseOutput(o, frame);
             const TraForm form = traForm == "auto" ? TraForm::Auto : parseTraForm(traForm, "tra_form");
-            const RegistrationSettings settings =
-                searchSettings(method, similarity, seed, budget, polishBudget, levels, radius, threads, polish);
+            SearchOptions options;
+            options.method = method;
+            options.similarity = similarity;
+            options.polish = polish;
+            options.seed = seed;
+            options.budget = budget;
+            options.polishBudget = polishBudget;
+            if (levels && levels->empty()) throw Error("levels: give at least one factor");
+            options.levels = levels.value_or(std::vector<int>{});
+            options.radius = radius.value_or(std::vector<double>{});
+            options.threads = threads;
+            options.prefix = "";
+            // `fluoromatch register --model`'s search: the same settings for the same words.
+            const RegistrationSettings settings = applySearchOptions(options, realXraySettings());
 
             // 2. The radiograph, its calibration, its preparation (`radiograph` options).
             std::string referenceName = "reference image";
@@ -151,17 +126,7 @@ void bindRegister(pb::module_& m) {
                 cam = readCameraFile(cameraName, size).camera;
             }
             checkImageSize(cam, cameraName, size.x, size.y, referenceName);
-            RadiographPreparation prep;
-            prep.invert = invert;
-            prep.logTransform = log;
-            if (i0) {
-                if (!log) throw Error("i0 applies to log=True only (the I0 of -ln(I / I0))");
-                prep.i0 = *i0;
-            }
-            prep.fullScale = radiographFullScale(bits);
-            prep.excludeBelow = excludeBelow;
-            prep.erodePixels = erode;
-            if (roi) prep.roi = PixelRect{(*roi)[0], (*roi)[1], (*roi)[2], (*roi)[3]};
+            const RadiographPreparation prep = preparationOf(invert, log, i0, excludeBelow, erode, roi, bits);
             const PreparedRadiograph prepared = prepareRadiograph(image, prep);
             if (prepared.valid.count() == 0)
                 throw Error(referenceName + ": no valid pixel is left after the preparation options");
@@ -210,30 +175,20 @@ void bindRegister(pb::module_& m) {
             // 4. The searches: side by side, one per core, as the CLI runs them.
             ProgressRelay relay(progress);
             const RegistrationView view{0, prepared.image, prepared.valid};
-            const int cores = settings.threads > 0 ? settings.threads : defaultThreadCount();
-            const bool sideBySide = n > 1 && cores > 1;
-            std::vector<ObjectRegistrationResult> results(n);
-            double wallSeconds = 0.0;
+            ObjectsRegistration all;
             {
                 pb::gil_scoped_release unlock;
-                const auto started = std::chrono::steady_clock::now();
-                const auto run = [&](std::size_t k, const RegistrationSettings& s) {
-                    results[k] = registerObject(
-                        scene, k, view, startPoses[k], s,
-                        [&, k](const RegistrationProgress& p) { relay.report([&] { return progressDict(p, names[k]); }); },
-                        relay.stopFlag());
-                };
-                if (sideBySide) {
-                    RegistrationSettings single = settings;
-                    single.threads = 1;
-                    parallelFor(static_cast<int>(n), cores, [&](int begin, int end) {
-                        for (int k = begin; k < end; ++k) run(static_cast<std::size_t>(k), single);
-                    }, static_cast<int>(n));
-                } else {
-                    for (std::size_t k = 0; k < n; ++k) run(k, settings);
-                }
-                wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+                all = registerObjects(
+                    scene, view, settings,
+                    [&](std::size_t k) -> RegistrationCallback {
+                        return [&, k](const RegistrationProgress& p) {
+                            relay.report([&] { return progressDict(p, names[k]); });
+                        };
+                    },
+                    relay.stopFlag());
             }
+            const std::vector<ObjectRegistrationResult>& results = all.results;
+            const double wallSeconds = all.wallSeconds;
             relay.rethrowIfFailed();
 
             // 5. The answers, each with its verdict; written (like the CLI) unless lost.

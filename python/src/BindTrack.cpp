@@ -88,13 +88,7 @@ void bindTrack(pb::module_& m) {
             ProgressRelay relay(progress);
             pb::dict results;
             for (const std::string& bone : bones) {
-                std::map<int, RigidTransform> keyframes = trialKeyframes(scene, bone);
-                if (startTra) {
-                    const std::size_t object = traObjectOfBone(*startTra, scene, bone, start);
-                    for (std::size_t f = 0; f < startTra->frames.size(); ++f)
-                        if (const auto& p = startTra->frames[f][object])
-                            keyframes[static_cast<int>(f)] = objectPoseFromTra(scene, bone, *p);
-                }
+                const std::map<int, RigidTransform> keyframes = boneKeyframes(scene, bone, startTra, start);
                 const std::string boneOut =
                     out.empty() || bones.size() == 1
                         ? out

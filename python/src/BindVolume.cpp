@@ -84,12 +84,10 @@ array once (the engine holds its own values); units: "hu", "mu" (1/mm) or "unkno
                                "(z, y, x) voxel counts, as array.shape")
         .def_property("spacing", [](const Volume& v) { return fromVec3(v.spacing); },
                       [](Volume& v, const pb::handle& s) {
-                          Volume copy = v;
-                          copy.values.clear();
-                          copy.spacing = toVec3(s, "spacing");
-                          copy.values.resize(v.voxelCount());
-                          copy.validate("spacing");
-                          v.spacing = copy.spacing;
+                          const glm::dvec3 spacing = toVec3(s, "spacing");  // finite
+                          if (!(spacing.x > 0.0 && spacing.y > 0.0 && spacing.z > 0.0))
+                              throw Error("spacing: must be positive (mm)");
+                          v.spacing = spacing;
                       },
                       "mm between voxel centres along i, j, k (x, y, z)")
         .def_property("origin", [](const Volume& v) { return fromVec3(v.origin); },

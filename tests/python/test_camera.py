@@ -56,3 +56,13 @@ def test_bad_cameras_are_refused():
         fm.Camera.from_krt(K, np.eye(3), (0, 0, 1000), (0, 1000))
     with pytest.raises(fm.Error, match="3 x 3"):
         fm.Camera.from_krt(K[:2], np.eye(3), (0, 0, 1000), (1000, 1000))
+
+
+def test_a_camera_is_taken_wherever_a_geometry_is():
+    cam, _, _, _ = make_camera()
+    box = fm.Volume(np.ones((4, 4, 4), np.float32), spacing=(10, 10, 10), origin=(-15, -15, -15))
+    small = fm.Camera.from_krt(cam.K / 8 + np.diag([0, 0, 7 / 8]), cam.R, cam.t, image_size=(128, 120))
+    assert fm.Geometry(small) == small.geometry()
+    image = fm.drr(box, small, values="raw")
+    assert image.max() > 0
+    assert np.array_equal(image, fm.drr(box, small.geometry(), values="raw"))
