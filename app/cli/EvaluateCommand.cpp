@@ -134,7 +134,8 @@ void runEvaluate(const EvaluateArgs& a, bool similarityGiven) {
     const bool saveOften = csv && !fm::io::writesThrough(a.csv);
     std::ostringstream rows;
     rows << "method,bin_low_mm,bin_high_mm,start,start_mtre_mm,final_mtre_mm,"
-            "final_in_plane_mm,final_out_of_plane_mm,seconds,cpu_seconds,evaluations,success\n";
+            "final_in_plane_mm,final_out_of_plane_mm,seconds,cpu_seconds,evaluations,success,"
+            "similarity_ratio,verdict\n";
     auto lastSave = std::chrono::steady_clock::now();
     const auto saveCsv = [&] {
         fm::io::writeFileAtomically(a.csv, rows.str());
@@ -212,7 +213,8 @@ void runEvaluate(const EvaluateArgs& a, bool similarityGiven) {
             rows << fm::toString(t.method) << ',' << b.lowMm << ',' << b.highMm << ',' << t.start
                  << ',' << t.startMtreMm << ',' << t.final.meanMm << ',' << t.final.meanInPlaneMm
                  << ',' << t.final.meanDepthMm << ',' << t.seconds << ',' << t.cpuSeconds << ','
-                 << t.evaluations << ',' << (t.success ? 1 : 0) << '\n';
+                 << t.evaluations << ',' << (t.success ? 1 : 0) << ',' << t.similarityRatio << ','
+                 << fm::toString(t.verdict) << '\n';
             if (saveOften && std::chrono::steady_clock::now() - lastSave > std::chrono::seconds(1))
                 saveCsv();
         },
@@ -249,6 +251,19 @@ void runEvaluate(const EvaluateArgs& a, bool similarityGiven) {
         "(capture range: largest initial mTRE up to which every bin reaches %.0f%% "
         "success)\n",
         100.0 * settings.captureSuccessRate);
+    // The verdict (judged without the truth) against the truth's success: does "ok" mean right?
+    for (const fm::SearchMethod method : settings.methods) {
+        int okRight = 0, okWrong = 0, notOkRight = 0, notOkWrong = 0;
+        for (const fm::EvaluationTrial& t : trials) {
+            if (t.method != method) continue;
+            const bool ok = t.verdict == fm::AnswerVerdict::Ok;
+            (ok ? (t.success ? okRight : okWrong) : (t.success ? notOkRight : notOkWrong)) += 1;
+        }
+        std::printf("verdict %-6s ok %d (%d of them misses), not ok %d (%d of them misses): %d of %d misses "
+                    "flagged\n",
+                    fm::toString(method), okRight + okWrong, okWrong, notOkRight + notOkWrong, notOkWrong,
+                    notOkWrong, okWrong + notOkWrong);
+    }
     for (const fm::SearchMethod method : settings.methods) {
         fm::EvaluationProfile profile;
         for (const fm::EvaluationTrial& t : trials)

@@ -176,7 +176,7 @@ const std::vector<fm::cli::CommandMode>& registerModes() {
         return std::vector<fm::cli::CommandMode>{
             // The tracker's search: its own settings, seeded.
             {"register --trial", "one bone in one frame of a trial, in its cameras",
-             {"trial", "bone", "frame", "cameras", "start", "out", "seed", "threads"}},
+             {"trial", "bone", "frame", "cameras", "start", "out", "seed", "threads", "runs", "max-runs"}},
             {"register --model", "models in a real radiograph", xray},
             {"register --slice", "a 2D image against slices of a volume",
              withSearch({"slice", "volume", "reference-pose", "reference", "start", "truth", "size",
@@ -377,6 +377,8 @@ FM_REGISTER_COMMAND("register", 40, [](CLI::App& app) {
             trial->out = a->xray.outs.empty() ? std::string() : a->xray.outs[0];
             trial->seed = a->search.seed;
             trial->threads = a->search.threads;
+            trial->runs = a->xray.runs;
+            trial->maxRuns = a->xray.maxRuns;
             fm::cli::runTrialRegister(*trial);
         } else {
             // --frame is shared: the trial's frame, or the row of --start/--out pose files.

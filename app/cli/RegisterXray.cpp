@@ -15,7 +15,9 @@
 #include "radiograph/RadiographPreparation.h"
 #include "scene/MeshXrayModel.h"
 #include "scene/ObjectPoseParameterization.h"
+#include "xray/AnswerCheck.h"
 #include "xray/CameraPoseDifference.h"
+#include "xray/ConfirmedRegistration.h"
 #include "xray/ModelCoverage.h"
 #include "xray/ObjectRegistration.h"
 #include "xray/PoseSpec.h"
@@ -55,6 +57,16 @@ void addXrayRegisterOptions(CLI::App* cmd, XrayRegisterArgs& a) {
                     "How a --start .tra's numbers divide when their count does not say (48 a row: 3 "
                     "matrices or 8 xyzypr rows): matrix or xyzypr")
         ->check(oneOf({"matrix", "xyzypr"}, ".tra form"));
+    cmd->add_option("--runs", a.runs,
+                    "Searches per model from independent starts (the first from --start, the others "
+                    "drawn around it); the answer is confirmed when two end at the same pose (1 = one "
+                    "search, unconfirmed)")
+        ->check(CLI::Range(1, 16))
+        ->capture_default_str();
+    cmd->add_option("--max-runs", a.maxRuns,
+                    "While no two searches agree, search again from further starts up to this many")
+        ->check(CLI::Range(1, 32))
+        ->capture_default_str();
     addPageOption(cmd, a.page, "Page of a multi-page TIFF reference (0-based)");
     addRadiographOptions(cmd, a.prep);
 }
@@ -68,6 +80,9 @@ void runXrayRegister(const std::string& reference, const XrayRegisterArgs& a,
     if (starts.empty()) throw Error("--model needs --start POSES (a .jts, .tra or six numbers)");
     if (!a.masks.empty() && a.masks.size() != n)
         throw Error("--mask: give one per --model (" + std::to_string(n) + ")");
+    if (a.maxRuns < a.runs)
+        throw Error("--max-runs (" + std::to_string(a.maxRuns) + ") must be at least --runs (" +
+                    std::to_string(a.runs) + ")");
     if (!(a.mu >= 0.0) || a.mu > 1e3)
         throw Error("--mu must be 0 (the default) or a positive attenuation in 1/mm");
     // Everything that can be refused is checked before the search.
@@ -123,19 +138,24 @@ void runXrayRegister(const std::string& reference, const XrayRegisterArgs& a,
                 file.format.c_str(), size.x, size.y, prepared.valid.count(),
                 prepared.valid.inside.size());
     std::printf("camera      %s (%s)\n", a.camera.c_str(), cam.format.c_str());
-    const bool sideBySide = registersSideBySide(n, settings);
-    std::printf("search      %s, %s, seed %llu, %s, %s\n",
+    ConfirmationSettings confirmation;
+    confirmation.runs = a.runs;
+    confirmation.maxRuns = a.maxRuns;
+    const bool sideBySide = registersSideBySide(n * static_cast<std::size_t>(a.runs), settings);
+    std::printf("search      %s, %s, seed %llu, %s, %d %s per model%s, %s\n",
                 toString(settings.method), toString(settings.similarity),
                 static_cast<unsigned long long>(settings.seed), describeLevels(settings).c_str(),
-                sideBySide ? "the models side by side, one per core" : "one model at a time");
+                a.runs, a.runs == 1 ? "search" : "searches from independent starts",
+                a.runs > 1 ? (" (up to " + std::to_string(a.maxRuns) + " while no two agree)").c_str() : "",
+                sideBySide ? "side by side, one per core" : "one after the other");
     const RegistrationView view{0, prepared.image, prepared.valid};
-    const ObjectsRegistration all = registerObjects(scene, view, settings);
-    const std::vector<ObjectRegistrationResult>& results = all.results;
+    const ObjectsRegistration all = registerObjects(scene, view, settings, confirmation);
     const double wallSeconds = all.wallSeconds;
-    std::vector<std::string> lost;
+    std::vector<std::string> lost, doubtful;
     for (std::size_t k = 0; k < n; ++k) {
         SceneObject& object = scene.objects[k];
-        const ObjectRegistrationResult& r = results[k];
+        const ConfirmedObject& c = all.objects[k];
+        const ObjectRegistrationResult& r = c.answer;
         object.worldFromObject = r.worldFromObject;
         const glm::dvec3 pivot = defaultPivot(*object.model);
         const CameraPoseDifference d =
@@ -149,32 +169,50 @@ void runXrayRegister(const std::string& reference, const XrayRegisterArgs& a,
                     d.inPlaneRotationDeg, d.outOfPlaneRotationDeg);
         std::printf("similarity  %.5f (%s at the finest level)\n", r.similarity,
                     toString(settings.similarity));
+        for (std::size_t i = 0; i < c.runs.size() && c.runs.size() > 1; ++i) {
+            const CameraPoseDifference e =
+                cameraPoseDifference(scene.cameras[0], r.worldFromObject, c.runs[i].worldFromObject, pivot);
+            std::printf("run %-7zu similarity %.5f, from the answer in-plane %.3f mm, depth %+.3f mm, "
+                        "rotation %.3f deg\n",
+                        i + 1, c.runs[i].similarity, e.inPlaneMm, e.depthMm, e.rotationDeg);
+        }
+        AnswerEvidence evidence = c.evidence;
         if (!a.masks.empty()) {
             const Mask& label = labels[k];
             const Mask before = objectSilhouette(
                 {object.name, object.model, startPoses[k], true}, scene.cameras[0], search.threads);
             const Mask after = objectSilhouette(object, scene.cameras[0], search.threads);
-            std::printf("IoU         %.4f against %s (start %.4f)\n", silhouetteIoU(after, label),
-                        a.masks[k].c_str(), silhouetteIoU(before, label));
+            evidence.iou = silhouetteIoU(after, label);
+            std::printf("IoU         %.4f against %s (start %.4f)\n", *evidence.iou, a.masks[k].c_str(),
+                        silhouetteIoU(before, label));
         }
-        std::printf("time        %.3f s (%d evaluations)%s\n", r.seconds, r.evaluations,
+        if (evidence.uncertainty)
+            std::printf("uncertainty %s (camera frame)\n", describeUncertainty(*evidence.uncertainty).c_str());
+        std::printf("time        %.3f s (%d evaluations in %zu %s%s)%s\n", r.seconds, r.evaluations,
+                    c.runs.size(), c.runs.size() == 1 ? "search" : "searches",
+                    evidence.uncertainty ? (", " + std::to_string(evidence.uncertainty->evaluations) +
+                                            " more for the uncertainty").c_str()
+                                         : "",
                     r.stopped ? " (stopped)" : "");
         std::printf("speed       %s\n", describeEvaluations(r.profile, sideBySide ? 1 : settings.threads).c_str());
-        // The search may have walked off the image: a pose with nothing under it is not an
-        // answer and is not written.
-        const std::string blind =
-            blindness(modelCoverage(object, scene.cameras[0], prepared.valid, search.threads));
-        if (!blind.empty()) {
-            std::printf("verdict     lost: the final pose %s\n", blind.c_str());
+        // A lost answer (the model walked off the image, the mask disagrees) is not written; a
+        // doubtful one is, and says so.
+        const AnswerCheck check = checkAnswer(object, r.worldFromObject, {view}, scene.cameras, evidence, search.threads);
+        std::printf("verdict     %s\n", check.text.c_str());
+        if (check.verdict == AnswerVerdict::Lost) {
             lost.push_back(a.models[k]);
             continue;
         }
+        if (check.verdict == AnswerVerdict::Doubtful) doubtful.push_back(a.models[k]);
         if (!a.outs.empty()) {
             const std::string& out = outPaths[k];
             writePoseSpec(out, a.frame, a.outs.size() == n ? 0 : k, r.worldFromObject);
-            std::printf("wrote       %s (frame %d)\n", out.c_str(), a.frame);
+            std::printf("wrote       %s (frame %d)%s\n", out.c_str(), a.frame,
+                        check.verdict == AnswerVerdict::Doubtful ? ", doubtful: check it before use" : "");
         }
     }
+    for (const std::string& m : doubtful)
+        std::fprintf(stderr, "warning: %s: the answer is doubtful (see its verdict line)\n", m.c_str());
     if (n > 1)
         std::printf("\ntotal time  %.3f s for %zu models (%s)\n", wallSeconds, n,
                     sideBySide ? "side by side" : "one after the other");

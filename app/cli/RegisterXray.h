@@ -21,6 +21,8 @@ struct XrayRegisterArgs {
     int page = -1;
     double mu = 0.0;  // 0 = the default attenuation of the model kind
     std::string traForm;  // --tra-form: "" (from the counts), matrix or xyzypr
+    int runs = 2;         // --runs: searches from independent starts per model (1 = unconfirmed)
+    int maxRuns = 4;      // --max-runs: the re-search's budget while no two agree
     RadiographOptions prep;
 };
 

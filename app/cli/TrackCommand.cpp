@@ -20,6 +20,7 @@
 #include "cli/CommandRegistry.h"
 #include "cli/NumberChecks.h"
 #include "cli/TrackCsv.h"
+#include "cli/ValueChecks.h"
 #include "core/Error.h"
 #include "distributed/JobRunner.h"
 #include "distributed/ProcessTransport.h"
@@ -50,6 +51,8 @@ struct TrackArgs {
     std::uint64_t seed = 1;
     int threads = 0;
     std::string cameras;  // "1,2" (1-based), empty = all
+    std::string onLost = "search";
+    bool uncertainty = true;
 };
 
 // poses.tra -> poses_radius.tra when several bones share one --out.
@@ -152,6 +155,8 @@ void runTrack(const TrackArgs& a) {
     settings.init = fm::parseInitMode(a.init);
     settings.registration.seed = a.seed;
     settings.registration.threads = threads;
+    settings.onLost = fm::parseOnLost(a.onLost, "--on-lost");
+    settings.uncertainty = a.uncertainty;
 
     std::optional<fm::TraFile> startTra;
     if (!a.start.empty()) startTra = fm::readTrialTra(a.start, scene);
@@ -204,7 +209,7 @@ void runTrack(const TrackArgs& a) {
 
     // Rank 0: a frame's result into its bone's .tra row and CSV row, and both files rewritten.
     auto apply = [&](BoneRun& b, const fm::FrameRecord& r) {
-        if (r.worldFromBone)
+        if (r.answered())
             b.tra.frames[static_cast<std::size_t>(r.frame)][0] =
                 fm::asWrittenInTra(fm::traPoseFromObject(scene, b.name, *r.worldFromBone));
         b.rows[position.at(r.frame)] = r;
@@ -304,13 +309,17 @@ void runTrack(const TrackArgs& a) {
                            fm::distributed::describeFailures(failures));
     for (const BoneRun& b : bones) {
         int tracked = 0, newlyTracked = 0;
+        std::map<fm::AnswerVerdict, std::vector<int>> verdicts;
         std::string lastFailure;
         for (const auto& row : b.tra.frames) tracked += row[0] ? 1 : 0;
         for (const auto& [pos, r] : b.rows) {
-            if (r.status == fm::FrameRecord::Status::Tracked)
+            if (r.answered())
                 ++newlyTracked;
             else
-                lastFailure = "frame " + std::to_string(r.frame) + ": " + r.note;
+                lastFailure = "frame " + std::to_string(r.frame) + ": " +
+                              (r.status == fm::FrameRecord::Status::Tracked ? r.verdictText : r.note);
+            verdicts[r.status == fm::FrameRecord::Status::Tracked ? r.verdict : fm::AnswerVerdict::Lost].push_back(
+                r.frame);
         }
         const bool failed = std::any_of(failures.begin(), failures.end(), [&](const auto& f) {
             return &bones[jobs[static_cast<std::size_t>(f.job)].bone] == &b;
@@ -318,6 +327,22 @@ void runTrack(const TrackArgs& a) {
         std::printf("%s: %d of %d frames tracked, %s %s\n", b.name.c_str(), tracked,
                     scene.frameCount, b.out.string().c_str(),
                     failed ? "NOT complete (failed jobs below)" : "written");
+        if (!b.rows.empty()) {
+            // How sure the run's frames are, and which to look at.
+            std::string line;
+            for (const auto v : {fm::AnswerVerdict::Ok, fm::AnswerVerdict::Doubtful, fm::AnswerVerdict::Lost}) {
+                const auto it = verdicts.find(v);
+                const std::size_t count = it == verdicts.end() ? 0 : it->second.size();
+                line += (line.empty() ? "" : ", ") + std::to_string(count) + " " + fm::toString(v);
+                if (v != fm::AnswerVerdict::Ok && count > 0) {
+                    line += " (frames";
+                    for (std::size_t i = 0; i < it->second.size() && i < 12; ++i)
+                        line += " " + std::to_string(it->second[i]);
+                    line += it->second.size() > 12 ? " ...)" : ")";
+                }
+            }
+            std::printf("%s: verdict %s of %zu frames this run\n", b.name.c_str(), line.c_str(), b.rows.size());
+        }
         fm::EvaluationProfile profile;
         for (const auto& [pos, r] : b.rows) profile += r.profile;
         if (profile.evaluations > 0)
@@ -348,13 +373,25 @@ FM_REGISTER_COMMAND("track", 45, [](CLI::App& app) {
                     "A .tra whose poses (Autoscoper's volume frame) are keyframes where not NaN");
     cmd->add_option("--out", a->out, "Result .tra (rewritten after every frame; NaN = not tracked)")
         ->required();
-    cmd->add_option("--csv", a->csv, "Per-frame rows: status, cost per camera, evaluations, time");
+    cmd->add_option("--csv", a->csv,
+                    "Per-frame rows: status, cost per camera, verdict, uncertainty per coordinate, "
+                    "similarity against the last good frames, evaluations, time, note");
     cmd->add_flag("--resume", a->resume, "Continue a run: frames already in --out are kept");
     cmd->add_option("--seed", a->seed, "Random seed (frame k uses a seed made from it and k)")
         ->capture_default_str()
         ->check(fm::cli::kSeedNumber);
     cmd->add_option("--threads", a->threads, "Threads (0 = all cores)")->capture_default_str();
     cmd->add_option("--cameras", a->cameras, "Cameras to use, e.g. 1 or 1,2 (default: all)");
+    cmd->add_option("--on-lost", a->onLost,
+                    "A frame whose verdict is lost: search (again, wider, then go on without it), "
+                    "stop (the run ends there) or continue (go on without it). Doubtful frames are "
+                    "always searched again once")
+        ->check(fm::cli::oneOf({"stop", "search", "continue"}, "--on-lost"))
+        ->capture_default_str();
+    cmd->add_flag("--uncertainty,!--no-uncertainty", a->uncertainty,
+                  "Per frame, how well the images fix each coordinate (73 evaluations at full "
+                  "resolution; in the CSV)")
+        ->capture_default_str();
     cmd->callback([a] { runTrack(*a); });
     return cmd;
 });

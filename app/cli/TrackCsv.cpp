@@ -14,7 +14,10 @@ namespace fm::cli {
 std::string trackCsvHeader(std::size_t cameras) {
     std::string h = "frame,bone,status,cameras_used";
     for (std::size_t c = 0; c < cameras; ++c) h += ",cost_cam" + std::to_string(c + 1);
-    return h + ",evaluations,time_ms,note\n";
+    // How sure each frame is: the verdict, the spread the images allow per coordinate of the
+    // first taking camera's frame (inf: not fixed), the similarity against the last good frames.
+    return h + ",verdict,sd_u_mm,sd_v_mm,sd_depth_mm,sd_about_u_deg,sd_about_v_deg,sd_about_view_deg,"
+               "similarity_ratio,searches,evaluations,time_ms,note\n";
 }
 
 std::string trackCsvRow(const FrameRecord& r, const std::string& bone) {
@@ -25,8 +28,16 @@ std::string trackCsvRow(const FrameRecord& r, const std::string& bone) {
         std::snprintf(buf, sizeof buf, ",%.6f", c);
         row += std::isnan(c) ? std::string(",") : std::string(buf);
     }
+    row += std::string(",") + (r.status == FrameRecord::Status::Tracked ? toString(r.verdict) : "lost");
+    for (int i = 0; i < 6; ++i) {
+        std::snprintf(buf, sizeof buf, ",%.4g", r.evidence.uncertainty ? r.evidence.uncertainty->sd[i] : 0.0);
+        row += r.evidence.uncertainty ? std::string(buf) : std::string(",");
+    }
+    std::snprintf(buf, sizeof buf, ",%.4f", r.evidence.similarityRatio.value_or(0.0));
+    row += r.evidence.similarityRatio ? std::string(buf) : std::string(",");
+    row += "," + std::to_string(r.searches);
     std::snprintf(buf, sizeof buf, ",%d,%.1f,", r.evaluations, 1000.0 * r.seconds);
-    std::string note = r.note;
+    std::string note = r.verdictText.empty() ? r.note : r.note + "; " + r.verdictText;
     for (char& ch : note)
         if (ch == ',' || ch == '\n') ch = ';';
     return row + buf + note + "\n";
@@ -48,7 +59,7 @@ std::map<int, std::string> keptTrackCsvRows(const std::filesystem::path& csv, st
     if (line != header)
         throw Error(where + ": its header \"" + line + "\" is not this run's \"" + header +
                     "\" (a CSV of another trial or camera set?)");
-    const std::size_t fields = 7 + cameras;
+    const std::size_t fields = 16 + cameras;
     for (int number = 2; std::getline(in, line); ++number) {
         std::size_t commas = 0;
         for (char ch : line) commas += ch == ',' ? 1 : 0;

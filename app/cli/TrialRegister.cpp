@@ -1,5 +1,6 @@
 #include "cli/TrialRegister.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -9,9 +10,14 @@
 #include "io/OutputPath.h"
 #include "pose/AutoscoperTra.h"
 #include "track/TrialScene.h"
+#include "scene/ObjectPoseParameterization.h"
+#include "track/ConfirmedFrame.h"
 #include "track/TrialTra.h"
+#include "xray/AnswerCheck.h"
+#include "xray/ConfirmedRegistration.h"
 
 namespace fm::cli {
+
 
 // --bone, --start and --out are the command's own (one spelling in every mode); with --trial
 // they name the trial's bone, its start .tra and the result .tra.
@@ -52,15 +58,27 @@ void runTrialRegister(const TrialRegisterArgs& a) {
     }
     if (!start) throw Error("no start pose for " + a.bone + " at frame " + std::to_string(a.frame) +
                             ": give --start S.tra or a keyframe in the trial");
+    if (a.maxRuns < a.runs)
+        throw Error("--max-runs (" + std::to_string(a.maxRuns) + ") must be at least --runs (" +
+                    std::to_string(a.runs) + ")");
     const std::vector<std::size_t> cameras = parseCameraList(a.cameras, scene.cameras.size());
     TrackSettings settings;
     settings.registration.seed = a.seed;
     settings.registration.threads = a.threads;
-    const Tracker tracker(scene.scene, a.bone, trialFrameViews(scene, defaultTrialPreparation(), cameras),
-                          settings);
-    const FrameRecord r = tracker.trackFrame(a.frame, *start);
-    if (r.status != FrameRecord::Status::Tracked)
-        throw Error("frame " + std::to_string(a.frame) + ": " + toString(r.status) + ": " + r.note);
+    const FrameViews views = trialFrameViews(scene, defaultTrialPreparation(), cameras);
+    // A keyframe at this frame is the user's pose: its similarity is what the answer must reach.
+    FrameContext context;
+    context.startIsKeyframe = a.start.empty();
+    // Searches from independent starts, as register --model confirms a model.
+    ConfirmationSettings confirmation;
+    confirmation.runs = a.runs;
+    confirmation.maxRuns = a.maxRuns;
+    const ConfirmedFrame confirmed =
+        registerFrameConfirmed(scene.scene, a.bone, views, settings, a.frame, *start, context, confirmation);
+    const FrameRecord& r = confirmed.answer;
+    const AnswerEvidence& evidence = confirmed.evidence;
+    const AnswerCheck& check = confirmed.check;
+    const std::vector<FrameRecord>& runs = confirmed.runs;
     const RigidTransform tra = traPoseFromObject(scene, a.bone, *r.worldFromBone);
     const auto m = tra.toRowMajor4x4();
     std::printf("bone        %s, frame %d, %s\n", a.bone.c_str(), a.frame, r.note.c_str());
@@ -73,8 +91,14 @@ void runTrialRegister(const TrialRegisterArgs& a) {
         if (!std::isnan(r.viewCost[c])) std::printf("cost cam%zu   %.5f\n", c + 1, r.viewCost[c]);
     const glm::dvec3 moved = r.worldFromBone->translation - start->translation;
     std::printf("moved       %.3f mm from the start\n", glm::length(moved));
-    std::printf("time        %.3f s (%d evaluations)\n", r.seconds, r.evaluations);
+    std::printf("time        %.3f s (%d evaluations in %zu %s)\n", r.seconds, r.evaluations, runs.size(),
+                runs.size() == 1 ? "search" : "searches from independent starts");
     std::printf("speed       %s\n", describeEvaluations(r.profile, a.threads).c_str());
+    if (evidence.uncertainty)
+        std::printf("uncertainty %s (camera %zu's frame)\n", describeUncertainty(*evidence.uncertainty).c_str(),
+                    (cameras.empty() ? 0 : cameras[0]) + 1);
+    std::printf("verdict     %s\n", check.text.c_str());
+    if (check.verdict == AnswerVerdict::Lost) throw Error("lost (nothing written): " + check.text);
     if (!a.out.empty()) {
         TraFile out;
         out.frames.assign(static_cast<std::size_t>(scene.frameCount), {std::nullopt});

@@ -16,6 +16,8 @@ struct TrialRegisterArgs {
     std::string out;      // .tra with the result at --frame
     std::uint64_t seed = 1;
     int threads = 0;
+    int runs = 2;     // searches from independent starts (register's --runs)
+    int maxRuns = 4;  // --max-runs
 };
 
 void addTrialRegisterOptions(CLI::App* cmd, TrialRegisterArgs& args);

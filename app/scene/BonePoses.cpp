@@ -59,7 +59,7 @@ bool BonePoses::clearKeyframe(int frame) {
 }
 
 void BonePoses::apply(const FrameRecord& record) {
-    if (record.status != FrameRecord::Status::Tracked || !record.worldFromBone) return;
+    if (!record.answered()) return;
     setPose(record.frame, *record.worldFromBone);
 }
 

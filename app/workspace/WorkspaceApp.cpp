@@ -212,16 +212,20 @@ void WorkspaceApp::pollSolver() {
         w.iou = silhouetteIoU(silhouetteAt(*s.result), *m);
         w.startIou = silhouetteIoU(silhouetteAt(s.start), *m);
     }
+    AnswerEvidence evidence = s.evidence;
+    evidence.iou = w.iou;
     const AnswerCheck check = checkAnswer(o, *s.result, model_->prepared(s.frame), model_->scene().cameras,
-                                              w.iou, model_->threads());
-    w.check = check.check;
+                                          evidence, model_->threads());
+    w.check = check.verdict;
     w.checkText = check.text;
+    w.uncertaintyText = evidence.uncertainty ? describeUncertainty(*evidence.uncertainty) : std::string();
     char line[256];
     std::snprintf(line, sizeof line, "%s %s in frame %d: similarity %.5f (%s)", s.stopped ? "Stopped:" : "Solved:",
                   o.name.c_str(), s.frame, s.similarity, s.note.c_str());
     w.summary = line;
     std::printf("solve       %s\n", line);
     std::printf("verdict     %s\n", w.checkText.c_str());
+    if (!w.uncertaintyText.empty()) std::printf("uncertainty %s (camera 1's frame)\n", w.uncertaintyText.c_str());
     std::printf("            moved in-plane %.3f mm, depth %.3f mm, rotation %.3f deg (camera 1)\n", d.inPlaneMm,
                 d.depthMm, d.rotationDeg);
     if (w.iou) std::printf("            IoU %.4f against the mask (start %.4f)\n", *w.iou, *w.startIou);

@@ -4,7 +4,9 @@
 #include <cmath>
 
 #include "core/Error.h"
+#include "track/ConfirmedFrame.h"
 #include "track/Tracker.h"
+#include "xray/ConfirmedRegistration.h"
 #include "xray/ObjectRegistration.h"
 
 namespace fm::app {
@@ -64,23 +66,28 @@ void WorkspaceSolver::start(std::shared_ptr<const WorkspaceModel> model, int obj
                     realXraySettings(defaultSimilarityFor(*scene.objects[0].model));
                 settings.threads = model->threads();
                 const RegistrationView view = model->prepared(frame).at(0);
-                const ObjectRegistrationResult r = registerObject(
-                    scene, 0, view, start, settings,
-                    [&](const RegistrationProgress& p) {
-                        publish([&](WorkspaceSolveSnapshot& s) {
-                            s.stage = std::string(p.stage) + ", level " + std::to_string(p.level + 1) + " of " +
-                                      std::to_string(p.levelCount);
-                            s.evaluations = p.evaluations;
-                            s.budget = p.evaluationBudget;
-                        });
+                const ObjectsRegistration all = registerObjects(
+                    scene, view, settings, ConfirmationSettings{},
+                    [&](std::size_t) -> RegistrationCallback {
+                        return [&](const RegistrationProgress& p) {
+                            publish([&](WorkspaceSolveSnapshot& s) {
+                                s.stage = std::string(p.stage) + ", level " + std::to_string(p.level + 1) + " of " +
+                                          std::to_string(p.levelCount);
+                                s.evaluations = p.evaluations;
+                                s.budget = p.evaluationBudget;
+                            });
+                        };
                     },
                     &stop_);
+                const ConfirmedObject& c = all.objects.at(0);
                 publish([&](WorkspaceSolveSnapshot& s) {
-                    s.result = r.worldFromObject;
-                    s.similarity = r.similarity;
-                    s.evaluations = r.evaluations;
-                    s.stopped = r.stopped;
-                    s.note = std::string("single view, ") + toString(settings.similarity);
+                    s.result = c.answer.worldFromObject;
+                    s.similarity = c.answer.similarity;
+                    s.evaluations = c.answer.evaluations;
+                    s.stopped = c.answer.stopped;
+                    s.evidence = c.evidence;
+                    s.note = std::string("single view, ") + toString(settings.similarity) + ", " +
+                             std::to_string(c.evidence.runs) + " searches from independent starts";
                 });
             } else {
                 publish([&](WorkspaceSolveSnapshot& s) { s.stage = "biplane registration (register --trial)"; });
@@ -88,9 +95,11 @@ void WorkspaceSolver::start(std::shared_ptr<const WorkspaceModel> model, int obj
                 settings.registration.seed = 1;
                 settings.registration.threads = model->threads();
                 const std::string name = scene.objects[0].name;
-                const Tracker tracker(scene, name, [model](int f) { return model->prepared(f); }, settings);
-                const FrameRecord r =
-                    tracker.trackFrame(frame, start, &stop_, [&](const RegistrationProgress& p) {
+                // As register --trial: searches from independent starts confirm the answer (the
+                // keyframe's own similarity is no reference here: the start is whatever the user set).
+                const ConfirmedFrame confirmed = registerFrameConfirmed(
+                    scene, name, [model](int f) { return model->prepared(f); }, settings, frame, start,
+                    FrameContext{}, ConfirmationSettings{}, &stop_, [&](const RegistrationProgress& p) {
                         publish([&](WorkspaceSolveSnapshot& s) {
                             s.stage = "biplane, " + std::string(p.stage) + ", level " +
                                       std::to_string(p.level + 1) + " of " + std::to_string(p.levelCount);
@@ -98,6 +107,7 @@ void WorkspaceSolver::start(std::shared_ptr<const WorkspaceModel> model, int obj
                             s.budget = p.evaluationBudget;
                         });
                     });
+                const FrameRecord& r = confirmed.answer;
                 if (r.status != FrameRecord::Status::Tracked && !(r.status == FrameRecord::Status::Stopped))
                     throw Error("frame " + std::to_string(frame) + ": " + toString(r.status) + ": " + r.note);
                 publish([&](WorkspaceSolveSnapshot& s) {
@@ -109,7 +119,8 @@ void WorkspaceSolver::start(std::shared_ptr<const WorkspaceModel> model, int obj
                         if (!std::isnan(c)) sum += c;
                     s.similarity = -sum;
                     s.evaluations = r.evaluations;
-                    s.note = r.note;
+                    s.evidence = confirmed.evidence;
+                    s.note = r.note + ", " + std::to_string(confirmed.runs.size()) + " searches from independent starts";
                 });
             }
         } catch (const std::exception& e) {

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "scene/RigidTransform.h"
+#include "xray/AnswerCheck.h"
 #include "workspace/WorkspaceModel.h"
 
 namespace fm::app {
@@ -28,6 +29,7 @@ struct WorkspaceSolveSnapshot {
     double similarity = 0.0;
     std::vector<double> viewCosts;  // biplane: per camera
     std::string note;               // "single view", "biplane", the tracker's note
+    AnswerEvidence evidence;        // searches from independent starts, uncertainty (xray/AnswerCheck.h)
     std::uint64_t version = 0;
 };
 

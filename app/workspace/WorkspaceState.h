@@ -73,11 +73,11 @@ struct WorkspaceSolve {
     double inPlaneMm = 0.0, depthMm = 0.0, rotationDeg = 0.0;
     std::optional<double> iou, startIou;  // against the object's mask, when there is one
     std::string summary;                  // one line: how it ended
-    // How far the answer can be trusted (xray/AnswerCheck.h): only a checked answer is shown
-    // as good.
+    // How far the answer can be trusted (xray/AnswerCheck.h): only an ok answer is shown as good.
     using Check = AnswerVerdict;
-    Check check = Check::Unchecked;
-    std::string checkText;  // "checked: IoU 0.95 against the mask", "unchecked: no mask ..."
+    Check check = Check::Doubtful;
+    std::string checkText;  // "ok: 2 of 2 searches from different starts end here", "doubtful: ..."
+    std::string uncertaintyText;  // per coordinate, camera 1's frame; "" when not measured
 };
 
 

@@ -34,7 +34,7 @@ void WorkspaceTracking::poll(const WorkspaceModel& model, WorkspaceState& state)
         int shown = -1;
         for (; applied_ < s.records.size(); ++applied_) {
             const FrameRecord& r = s.records[applied_];
-            if (r.status != FrameRecord::Status::Tracked || !r.worldFromBone) continue;
+            if (!r.answered()) continue;
             state.poses.at(static_cast<std::size_t>(r.frame)).at(static_cast<std::size_t>(runObject_)) =
                 *r.worldFromBone;
             shown = r.frame;

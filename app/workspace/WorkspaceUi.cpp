@@ -397,18 +397,16 @@ void WorkspaceUi::solvePane(WorkspaceState& state, const Pane& pane) {
     if (s.running) dimWrapped("%s", s.stage.c_str());
     if (!s.error.empty()) coloredWrapped(kBad, s.error);
     if (s.finished && s.result) {
-        // Words and colour from the verdict: green only for an answer the mask confirms.
+        // Words and colour from the verdict: green only for an ok answer.
         using Check = WorkspaceSolve::Check;
-        const ImVec4 colour = s.check == Check::Confirmed && !s.stopped ? kGood
-                              : s.check == Check::Lost                  ? kBad
-                              : s.check == Check::Doubtful || s.stopped ? kWarn
-                                                                        : ImGui::GetStyleColorVec4(ImGuiCol_Text);
+        const ImVec4 colour = s.check == Check::Ok && !s.stopped ? kGood : s.check == Check::Lost ? kBad : kWarn;
         coloredWrapped(colour, s.summary);
         record("text:solve-summary");
         coloredWrapped(colour, s.checkText);
         record("text:solve-check");
         bulletWrapped("moved in-plane %.2f mm, depth %.2f mm, rotation %.2f deg", s.inPlaneMm, s.depthMm, s.rotationDeg);
         if (s.iou) bulletWrapped("IoU %.4f against the mask (start %.4f)", *s.iou, s.startIou.value_or(0.0));
+        if (!s.uncertaintyText.empty()) bulletWrapped("uncertainty %s", s.uncertaintyText.c_str());
         if (state.showTimings) bulletWrapped("%.2f s, %d evaluations", s.seconds, s.evaluations);
     }
     ImGui::Separator();

@@ -116,6 +116,15 @@ EvaluationTrial runEvaluationTrial(const Registration& registration, const Evalu
     t.cpuSeconds = cpu;
     t.evaluations = r.evaluations;
     t.success = t.final.meanMm < settings.successMm;
+    // How sure, without the truth: against what a perfect match scores on this reference.
+    const double ceiling = registration.referenceSelfSimilarity();
+    AnswerEvidence evidence;
+    evidence.similarityRatio = ceiling > 0.0 ? r.similarity / ceiling : 0.0;
+    evidence.similarityReference = "a perfect match's";
+    evidence.confirmedRatio = kConfirmedPerfectMatchRatio;
+    evidence.stopped = r.stopped;
+    t.similarityRatio = *evidence.similarityRatio;
+    t.verdict = judgeEvidence(evidence).verdict;
     return t;
 }
 

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "match/PoseError.h"
+#include "search/AnswerVerdict.h"
 #include "search/Registration.h"
 #include "search/RegistrationTargets.h"
 #include "scene/SceneParameterization.h"
@@ -69,6 +70,11 @@ struct EvaluationTrial {
     int evaluations = 0;
     bool success = false;
     EvaluationProfile profile;  // where the evaluations' time went
+    // Judged without the truth: the similarity over what a perfect match scores on this
+    // reference (Registration::referenceSelfSimilarity): ok from kConfirmedSimilarityRatio,
+    // lost below kLostSimilarityRatio (xray/AnswerCheck.h).
+    double similarityRatio = 0.0;
+    AnswerVerdict verdict = AnswerVerdict::Doubtful;
 };
 
 struct EvaluationBinSummary {

@@ -336,6 +336,16 @@ double Registration::levelCost(const SceneParams& params, int level, int threads
     return total;
 }
 
+double Registration::referenceSelfSimilarity() const {
+    double total = 0.0;
+    for (const View& view : views_) {
+        const ViewLevel& level = view.levels.back();
+        total += similarity(settings_.similarity, level.reference, level.reference.image,
+                            level.valid ? &*level.valid : nullptr);
+    }
+    return total;
+}
+
 double Registration::cost(const SceneParams& params, int level) const {
     if (level < 0 || level >= levelCount())
         throw Error("registration: level " + std::to_string(level) + " does not exist");

@@ -170,6 +170,11 @@ class Registration {
     // The same per view (in the order of the views given): what each camera says of a pose.
     std::vector<double> viewCosts(const SceneParams& params, int level) const;
 
+    // What a perfect match scores at the finest level, summed over the views: each reference
+    // compared with itself over its valid pixels. The ceiling of the similarity for a reference
+    // the model itself rendered (evaluate's), against which an answer's similarity is judged.
+    double referenceSelfSimilarity() const;
+
     const RegistrationSettings& settings() const { return settings_; }
     const Scene& scene() const { return scene_; }
     const SceneParameterization& parameterization() const { return *parameterization_; }

@@ -22,14 +22,26 @@ struct Fixed {  // the part every record has, whatever the camera count
     double pose[12] = {};  // rotation column by column, then translation
     double profile[4] = {};  // thread seconds: set-up, render, footprint, similarity
     double profileWall = 0.0;  // (its evaluations are the record's)
+    std::int32_t verdict = 0;
+    std::int32_t searches = 0;
+    std::int32_t hasUncertainty = 0;
+    std::int32_t uncertaintyBounded = 0;
+    std::int32_t uncertaintyEvaluations = 0;
+    std::int32_t hasRatio = 0;
+    double sd[6] = {};
+    double step[6] = {};
+    double ratio = 0.0;
+    std::int32_t verdictLength = 0;
+    std::int32_t unused = 0;
 };
 
 constexpr int kLastStatus = static_cast<int>(FrameRecord::Status::Stopped);
+constexpr int kLastVerdict = static_cast<int>(AnswerVerdict::Lost);
 
 }  // namespace
 
 std::size_t frameRecordBytes(std::size_t cameras) {
-    return sizeof(Fixed) + cameras * sizeof(double) + kFrameNoteBytes;
+    return sizeof(Fixed) + cameras * sizeof(double) + kFrameNoteBytes + kFrameVerdictBytes;
 }
 
 void encodeFrameRecord(const FrameRecord& r, std::span<std::byte> out) {
@@ -54,12 +66,27 @@ void encodeFrameRecord(const FrameRecord& r, std::span<std::byte> out) {
                 f.pose[3 * c + row] = r.worldFromBone->rotation[c][row];
         for (int i = 0; i < 3; ++i) f.pose[9 + i] = r.worldFromBone->translation[i];
     }
+    f.verdict = static_cast<std::int32_t>(r.verdict);
+    f.searches = r.searches;
+    if (const auto& u = r.evidence.uncertainty) {
+        f.hasUncertainty = 1;
+        f.uncertaintyBounded = u->bounded ? 1 : 0;
+        f.uncertaintyEvaluations = u->evaluations;
+        for (int i = 0; i < 6; ++i) f.sd[i] = u->sd[i], f.step[i] = u->step[i];
+    }
+    if (r.evidence.similarityRatio) {
+        f.hasRatio = 1;
+        f.ratio = *r.evidence.similarityRatio;
+    }
+    f.verdictLength = static_cast<std::int32_t>(std::min(r.verdictText.size(), kFrameVerdictBytes - 1));
     f.noteLength = static_cast<std::int32_t>(std::min(r.note.size(), kFrameNoteBytes - 1));
     std::fill(out.begin(), out.end(), std::byte{0});
     std::memcpy(out.data(), &f, sizeof f);
     std::memcpy(out.data() + sizeof f, r.viewCost.data(), r.viewCost.size() * sizeof(double));
     std::memcpy(out.data() + sizeof f + r.viewCost.size() * sizeof(double), r.note.data(),
                 static_cast<std::size_t>(f.noteLength));
+    std::memcpy(out.data() + sizeof f + r.viewCost.size() * sizeof(double) + kFrameNoteBytes, r.verdictText.data(),
+                static_cast<std::size_t>(f.verdictLength));
 }
 
 FrameRecord decodeFrameRecord(std::span<const std::byte> in, std::size_t cameras) {
@@ -71,6 +98,10 @@ FrameRecord decodeFrameRecord(std::span<const std::byte> in, std::size_t cameras
     std::memcpy(&f, in.data(), sizeof f);
     if (f.status < 0 || f.status > kLastStatus)
         throw Error("frame record: status " + std::to_string(f.status) + " is not a status");
+    if (f.verdict < 0 || f.verdict > kLastVerdict)
+        throw Error("frame record: verdict " + std::to_string(f.verdict) + " is not a verdict");
+    if (f.verdictLength < 0 || static_cast<std::size_t>(f.verdictLength) >= kFrameVerdictBytes)
+        throw Error("frame record: verdict length " + std::to_string(f.verdictLength) + " out of range");
     if (f.noteLength < 0 || static_cast<std::size_t>(f.noteLength) >= kFrameNoteBytes)
         throw Error("frame record: note length " + std::to_string(f.noteLength) + " out of range");
     if (f.camerasUsed < 0 || static_cast<std::size_t>(f.camerasUsed) > cameras)
@@ -100,6 +131,17 @@ FrameRecord decodeFrameRecord(std::span<const std::byte> in, std::size_t cameras
     const char* note =
         reinterpret_cast<const char*>(in.data() + sizeof f + cameras * sizeof(double));
     r.note.assign(note, static_cast<std::size_t>(f.noteLength));
+    r.verdict = static_cast<AnswerVerdict>(f.verdict);
+    r.verdictText.assign(note + kFrameNoteBytes, static_cast<std::size_t>(f.verdictLength));
+    r.searches = f.searches;
+    if (f.hasUncertainty) {
+        PoseUncertainty u;
+        u.bounded = f.uncertaintyBounded != 0;
+        u.evaluations = f.uncertaintyEvaluations;
+        for (int i = 0; i < 6; ++i) u.sd[i] = f.sd[i], u.step[i] = f.step[i];
+        r.evidence.uncertainty = u;
+    }
+    if (f.hasRatio) r.evidence.similarityRatio = f.ratio;
     return r;
 }
 

@@ -20,7 +20,7 @@ void trackSegment(const Tracker& tracker, const TrackSegment& segment,
     tracker.run(
         framesToTrack(segment, done), segment.keyframes, tracked,
         [&](const FrameRecord& r) {
-            if (r.status == FrameRecord::Status::Tracked && r.worldFromBone)
+            if (r.answered())
                 tracked[r.frame] = stored ? stored(*r.worldFromBone) : *r.worldFromBone;
             if (afterFrame) afterFrame(r);
         },

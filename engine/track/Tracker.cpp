@@ -9,6 +9,7 @@
 #include "core/Random.h"
 #include "io/HeaderText.h"
 #include "scene/ObjectPoseParameterization.h"
+#include "xray/ConfirmedRegistration.h"
 #include "xray/ObjectRegistration.h"
 
 namespace fm {
@@ -79,16 +80,26 @@ double Tracker::inViewFraction(std::size_t camera, const RigidTransform& pose) c
     return (chi.x - clo.x) * (chi.y - clo.y) / area;
 }
 
-FrameRecord Tracker::trackFrame(int frame, const RigidTransform& start,
-                                const std::atomic<bool>* stop,
-                                const RegistrationCallback& progress) const {
+FrameRecord Tracker::trackFrame(int frame, const RigidTransform& start, const std::atomic<bool>* stop,
+                                const RegistrationCallback& progress, const FrameContext& context) const {
+    return trackFrameWith(settings_, frame, start, stop, progress, context);
+}
+
+FrameRecord Tracker::trackFrameWith(const TrackSettings& settings, int frame, const RigidTransform& start,
+                                    const std::atomic<bool>* stop, const RegistrationCallback& progress,
+                                    const FrameContext& context) const {
     const auto t0 = std::chrono::steady_clock::now();
     FrameRecord record;
     record.frame = frame;
+    record.searches = 1;
     record.viewCost.assign(scene_.cameras.size(), std::numeric_limits<double>::quiet_NaN());
     auto finish = [&](FrameRecord::Status status, std::string note) {
         record.status = status;
         record.note = std::move(note);
+        if (status != FrameRecord::Status::Tracked) {
+            record.verdict = AnswerVerdict::Lost;
+            record.verdictText = std::string("lost: ") + toString(status);
+        }
         record.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         return record;
     };
@@ -103,7 +114,7 @@ FrameRecord Tracker::trackFrame(int frame, const RigidTransform& start,
     std::string cameras;
     for (RegistrationView& v : all) {
         if (v.camera >= scene_.cameras.size()) continue;
-        if (inViewFraction(v.camera, start) < settings_.minInViewFraction) continue;
+        if (inViewFraction(v.camera, start) < settings.minInViewFraction) continue;
         cameras += (cameras.empty() ? "" : ", ") + std::to_string(v.camera + 1);
         views.push_back(std::move(v));
     }
@@ -113,20 +124,20 @@ FrameRecord Tracker::trackFrame(int frame, const RigidTransform& start,
     const SceneObject& bone = scene_.objects[bone_];
     auto param = std::make_shared<ObjectPoseParameterization>(
         bone.name, scene_.cameras[views[0].camera], start, defaultPivot(*bone.model));
-    RegistrationSettings rs = settings_.registration;
+    RegistrationSettings rs = settings.registration;
     Rng seeds(rs.seed ^ (0x9E3779B97F4A7C15ull * static_cast<std::uint64_t>(frame + 1)));
     rs.seed = seeds.split();
     const bool singleView = views.size() == 1;
-    if (singleView) rs.searchRadius[2] = settings_.singleViewDepthRadius;  // depth: see header
+    if (singleView) rs.searchRadius[2] = settings.singleViewDepthRadius;  // depth: see header
     std::vector<std::size_t> used;
     for (const RegistrationView& v : views) used.push_back(v.camera);
     const Registration coarse(scene_, param, views, rs);
-    const bool refine = settings_.refineEvaluations > 0;
+    const bool refine = settings.refineEvaluations > 0;
     // Progress over both searches: the full-resolution one counts as one more level.
     auto reporter = [&](int evaluationsBefore, int levelBefore) -> RegistrationCallback {
         if (!progress) return {};
         return [&progress, &coarse, evaluationsBefore, levelBefore, refine,
-                budget = coarse.totalBudget() + (refine ? settings_.refineEvaluations : 0)](
+                budget = coarse.totalBudget() + (refine ? settings.refineEvaluations : 0)](
                    const RegistrationProgress& p) {
             RegistrationProgress q = p;
             q.evaluations += evaluationsBefore;
@@ -148,12 +159,12 @@ FrameRecord Tracker::trackFrame(int frame, const RigidTransform& start,
         RegistrationSettings full = rs;
         full.levelFactors = {1};
         full.method = SearchMethod::NelderMead;
-        full.searchRadius.fill(settings_.refineRadius);
-        if (singleView) full.searchRadius[2] = settings_.singleViewDepthRadius;
-        full.globalEvaluations = settings_.refineEvaluations;
+        full.searchRadius.fill(settings.refineRadius);
+        if (singleView) full.searchRadius[2] = settings.singleViewDepthRadius;
+        full.globalEvaluations = settings.refineEvaluations;
         full.polishEvaluations = 0;
         full.polishCoarsest = false;
-        fine.emplace(scene_, param, std::move(views), full);
+        fine.emplace(scene_, param, views, full);
         r = fine->run(r.params, reporter(evaluations, coarse.levelCount()), stop);
         evaluations += r.evaluations;
         record.profile += r.profile;
@@ -161,21 +172,118 @@ FrameRecord Tracker::trackFrame(int frame, const RigidTransform& start,
     }
 
     // 4. The record.
+    const int finest = answeredBy->levelCount() - 1;
     record.worldFromBone = param->worldFromObject(r.params);
-    const std::vector<double> costs = answeredBy->viewCosts(r.params, answeredBy->levelCount() - 1);
+    const std::vector<double> costs = answeredBy->viewCosts(r.params, finest);
     for (std::size_t i = 0; i < used.size(); ++i) record.viewCost[used[i]] = costs[i];
     record.camerasUsed = static_cast<int>(used.size());
     record.evaluations = evaluations;
     if (r.stopped) return finish(FrameRecord::Status::Stopped, "stopped");
+
+    // 5. How sure it is: the curvature at the answer, the similarity against the reference.
+    AnswerEvidence& evidence = record.evidence;
+    if (settings.uncertainty) {
+        evidence.uncertainty = poseUncertainty(*answeredBy, r.params);  // its evaluations are its own
+    }
+    std::vector<double> reference = context.referenceSimilarity;
+    reference.resize(scene_.cameras.size(), std::numeric_limits<double>::quiet_NaN());
+    const ConfirmationSettings bounds;
+    const auto agrees = [&](const RigidTransform& a, const RigidTransform& b) {
+        return posesAgree(a, b, defaultPivot(*bone.model), bounds);
+    };
+    if (context.startIsKeyframe && agrees(start, *record.worldFromBone)) {
+        const std::vector<double> atStart = answeredBy->viewCosts(param->referenceParams(), finest);
+        for (std::size_t i = 0; i < used.size(); ++i)
+            if (std::isnan(reference[used[i]])) reference[used[i]] = -atStart[i];
+    }
+    double found = 0.0, expected = 0.0;
+    for (std::size_t i = 0; i < used.size(); ++i)
+        if (std::isfinite(reference[used[i]]) && reference[used[i]] > 0.0) {
+            found += -costs[i];
+            expected += reference[used[i]];
+        }
+    if (expected > 0.0) evidence.similarityRatio = found / expected;
+    // 5b. Nothing to compare with: a second search, from a start drawn around this one, must end
+    //     at the same pose. The better of the two is the answer.
+    if (!evidence.similarityRatio && settings.confirmWithoutReference && !context.confirming) {
+        TrackSettings other = settings;
+        other.registration.seed = rs.seed + 1;
+        other.uncertainty = false;
+        FrameContext sub;
+        sub.confirming = true;
+        const RigidTransform from = confirmationStart(scene_.cameras[views[0].camera], start,
+                                                      defaultPivot(*bone.model), settings.registration, bounds, 1);
+        const FrameRecord second = trackFrameWith(other, frame, from, stop, {}, sub);
+        record.evaluations += second.evaluations;
+        record.profile += second.profile;
+        if (second.status == FrameRecord::Status::Tracked && second.worldFromBone) {
+            evidence.runs = 2;
+            evidence.agreeing = agrees(*record.worldFromBone, *second.worldFromBone) ? 2 : 1;
+            double mine = 0.0, theirs = 0.0;
+            for (double c : record.viewCost)
+                if (!std::isnan(c)) mine -= c;
+            for (double c : second.viewCost)
+                if (!std::isnan(c)) theirs -= c;
+            if (theirs > mine && second.camerasUsed == record.camerasUsed) {
+                record.worldFromBone = second.worldFromBone;
+                record.viewCost = second.viewCost;
+            }
+        }
+    }
+    const AnswerCheck check = checkAnswer(bone, *record.worldFromBone, views, scene_.cameras, evidence, rs.threads);
+    record.verdict = check.verdict;
+    record.verdictText = check.text;
     return finish(FrameRecord::Status::Tracked,
                   used.size() > 1 ? "cameras " + cameras : "single view: camera " + cameras);
 }
+
+const char* toString(OnLost onLost) {
+    switch (onLost) {
+        case OnLost::Stop: return "stop";
+        case OnLost::Continue: return "continue";
+        default: return "search";
+    }
+}
+
+OnLost parseOnLost(const std::string& text, const char* option) {
+    if (text == "stop") return OnLost::Stop;
+    if (text == "search") return OnLost::Search;
+    if (text == "continue") return OnLost::Continue;
+    throw Error(std::string(option) + " must be stop, search or continue, not '" + text + "'");
+}
+
+namespace {
+
+// The better of two records of one frame: the better verdict, then the higher similarity.
+bool better(const FrameRecord& a, const FrameRecord& b) {
+    if (a.status != FrameRecord::Status::Tracked) return false;
+    if (b.status != FrameRecord::Status::Tracked) return true;
+    if (a.verdict != b.verdict) return static_cast<int>(a.verdict) < static_cast<int>(b.verdict);
+    double sa = 0.0, sb = 0.0;
+    for (double c : a.viewCost)
+        if (!std::isnan(c)) sa -= c;
+    for (double c : b.viewCost)
+        if (!std::isnan(c)) sb -= c;
+    return sa > sb;
+}
+
+}  // namespace
 
 void Tracker::run(const std::vector<int>& frames, const std::map<int, RigidTransform>& keyframes,
                   std::map<int, RigidTransform>& tracked,
                   const std::function<void(const FrameRecord&)>& afterFrame,
                   const std::atomic<bool>* stop) const {
     const bool backwards = frames.size() > 1 && frames[1] < frames[0];
+    // The wider search of step 5's re-search.
+    TrackSettings wider = settings_;
+    wider.registration.seed = settings_.registration.seed + 1;
+    for (double& radius : wider.registration.searchRadius) radius *= settings_.researchScale;
+    wider.registration.globalEvaluations =
+        static_cast<int>(std::lround(settings_.researchScale * settings_.registration.globalEvaluations));
+    wider.refineRadius *= settings_.researchScale;
+    // The similarity the bone scored in its last good frame, per camera.
+    FrameContext context;
+    context.referenceSimilarity.assign(scene_.cameras.size(), std::numeric_limits<double>::quiet_NaN());
     for (int frame : frames) {
         if (stop && stop->load()) return;
         // 1. The start pose.
@@ -185,13 +293,40 @@ void Tracker::run(const std::vector<int>& frames, const std::map<int, RigidTrans
             record.frame = frame;
             record.status = FrameRecord::Status::NoStart;
             record.note = "no start pose (give a keyframe or a start pose)";
+            record.verdict = AnswerVerdict::Lost;
+            record.verdictText = "lost: no start pose";
             record.viewCost.assign(scene_.cameras.size(), std::numeric_limits<double>::quiet_NaN());
         } else {
-            record = trackFrame(frame, *start, stop);
+            context.startIsKeyframe = keyframes.count(frame) != 0;
+            record = trackFrame(frame, *start, stop, {}, context);
+            // Not ok: searched once more, wider (a lost one only when onLost says search).
+            const bool again = record.status == FrameRecord::Status::Tracked &&
+                               (record.verdict == AnswerVerdict::Doubtful ||
+                                (record.verdict == AnswerVerdict::Lost && settings_.onLost == OnLost::Search));
+            if (again && !(stop && stop->load())) {
+                FrameRecord second = trackFrameWith(wider, frame, *start, stop, {}, context);
+                second.searches = 2;
+                second.evaluations += record.evaluations;
+                second.seconds += record.seconds;
+                second.profile += record.profile;
+                if (better(second, record)) {
+                    record = std::move(second);
+                } else {
+                    record.searches = 2;
+                    record.evaluations = second.evaluations;
+                    record.seconds = second.seconds;
+                    record.profile = second.profile;
+                }
+            }
         }
-        if (record.status == FrameRecord::Status::Tracked) tracked[frame] = *record.worldFromBone;
+        const bool lost = record.verdict == AnswerVerdict::Lost;
+        if (record.answered()) tracked[frame] = *record.worldFromBone;
+        if (record.status == FrameRecord::Status::Tracked && record.verdict == AnswerVerdict::Ok)
+            for (std::size_t c = 0; c < record.viewCost.size(); ++c)
+                if (!std::isnan(record.viewCost[c])) context.referenceSimilarity[c] = -record.viewCost[c];
         if (afterFrame) afterFrame(record);
         if (record.status == FrameRecord::Status::Stopped) return;
+        if (lost && record.status == FrameRecord::Status::Tracked && settings_.onLost == OnLost::Stop) return;
     }
 }
 

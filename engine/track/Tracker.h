@@ -13,6 +13,14 @@
 //      (ObjectPoseParameterization, pivot at the bone's centre), search around the start;
 //      (coarse levels only), 3b. a fresh Nelder-Mead simplex at full resolution from its result
 //   4. the record: pose, cost per camera (NaN where not used), evaluations, time
+//   5. how sure it is: the cost's curvature at the answer (search/PoseUncertainty, in the first
+//      taking camera's frame) and the verdict (xray/AnswerCheck): the similarity against what
+//      the bone scored in its last good frames (or at the keyframe's own pose in its frame, when
+//      the answer stays by it); with neither, a second search from a start drawn around the
+//      start must end at the same pose (within 1 mm and 2 deg)
+// run() searches a frame that is not ok once more, wider (TrackSettings::researchScale), and
+// on a lost one stops, searches again or goes on as TrackSettings::onLost says; a lost pose is
+// never a later frame's start.
 // Frames inside a run stay sequential: each one starts from the poses before it.
 // Deterministic: frame k's seed is a function of (seed, k) only, so a resumed run gives the
 // same poses as an uninterrupted one.
@@ -27,12 +35,19 @@
 #include "scene/Scene.h"
 #include "search/Registration.h"
 #include "track/InitialGuess.h"
+#include "xray/AnswerCheck.h"
 
 namespace fm {
 
 // A frame's prepared radiographs, one view per camera that has an image of it (camera index set
 // in each view). Throws fm::Error for a frame it cannot read: the tracker reports and skips it.
 using FrameViews = std::function<std::vector<RegistrationView>(int frame)>;
+
+// What a run does with a frame whose verdict is lost.
+enum class OnLost { Stop, Search, Continue };
+const char* toString(OnLost onLost);  // "stop", "search", "continue"
+// fm::Error naming `option` for anything else.
+OnLost parseOnLost(const std::string& text, const char* option);
 
 struct TrackSettings {
     RegistrationSettings registration = defaultTrackingRegistration();
@@ -56,6 +71,15 @@ struct TrackSettings {
     // within this radius, mm): one view hardly constrains depth, and a depth that drifts would
     // be carried into the next frames' starts by the extrapolation.
     double singleViewDepthRadius = 0.25;
+    // Step 5: the per-frame uncertainty (73 evaluations at full resolution, ~10 % of a frame).
+    bool uncertainty = true;
+    // Step 5: with no reference, a second search confirms the answer (or not).
+    bool confirmWithoutReference = true;
+    // A frame that is not ok is searched again from the same start with the search radii and
+    // budgets times researchScale (another seed); the better verdict (then similarity) is kept.
+    // Lost frames only as onLost says (Search: the default).
+    double researchScale = 2.0;
+    OnLost onLost = OnLost::Search;
 
     // Local search around the start: Autoscoper's PSO box is +-3 mm / +-3 deg; CMA-ES global
     // search at 1/4 resolution, Nelder-Mead polish at 1/4 and 1/2, cropped to the bone (then
@@ -74,6 +98,24 @@ struct FrameRecord {
     int evaluations = 0;
     double seconds = 0.0;
     EvaluationProfile profile;  // where its searches' evaluations spent their time
+    // How sure it is (tracked frames): never ok without something that confirms it.
+    AnswerVerdict verdict = AnswerVerdict::Doubtful;
+    std::string verdictText;                     // "ok: similarity 0.99 of the last good frames' ..."
+    AnswerEvidence evidence;  // its uncertainty (first taking camera's frame) and similarity ratio
+    int searches = 0;                            // 2 when searched again
+    // A pose to keep: tracked and not lost (a lost pose is neither written nor a later start).
+    bool answered() const { return status == Status::Tracked && worldFromBone && verdict != AnswerVerdict::Lost; }
+};
+
+// What a frame is judged against.
+struct FrameContext {
+    // Per camera, the similarity (-cost) the bone scored in its last good frames (NaN: unknown).
+    std::vector<double> referenceSimilarity;
+    // The start is the user's pose for this very frame (a keyframe): when the answer stays
+    // within the agreement bounds of it, the keyframe's similarity is the reference.
+    bool startIsKeyframe = false;
+    // This search is itself the confirmation of another (no confirmation of its own).
+    bool confirming = false;
 };
 const char* toString(FrameRecord::Status status);
 
@@ -88,7 +130,8 @@ class Tracker {
     // among the coarse levels and the full-resolution one (the app's biplane Solve shows it).
     FrameRecord trackFrame(int frame, const RigidTransform& start,
                            const std::atomic<bool>* stop = nullptr,
-                           const RegistrationCallback& progress = {}) const;
+                           const RegistrationCallback& progress = {},
+                           const FrameContext& context = {}) const;
 
     // Tracks `frames` in the given order. `tracked` holds poses already found (a resumed run)
     // and receives every new one; `keyframes` are the user's. afterFrame is called after every
@@ -106,6 +149,9 @@ class Tracker {
     const TrackSettings& settings() const { return settings_; }
 
   private:
+    FrameRecord trackFrameWith(const TrackSettings& settings, int frame, const RigidTransform& start,
+                               const std::atomic<bool>* stop, const RegistrationCallback& progress,
+                               const FrameContext& context) const;
     Scene scene_;
     std::size_t bone_ = 0;
     FrameViews frames_;

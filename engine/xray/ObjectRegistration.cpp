@@ -1,10 +1,8 @@
 #include "xray/ObjectRegistration.h"
 
-#include <chrono>
 #include <memory>
 
 #include "core/Error.h"
-#include "core/Parallel.h"
 #include "scene/MeshXrayModel.h"
 #include "scene/ObjectPoseParameterization.h"
 
@@ -53,30 +51,45 @@ SimilarityMeasure defaultSimilarityFor(const XrayModel& model) {
                                                                   : SimilarityMeasure::GradientNcc;
 }
 
+namespace {
+
+// The object alone (the others hidden) at `at`, searched in the camera's frame around it.
+struct ObjectSearch {
+    Scene alone;
+    std::shared_ptr<ObjectPoseParameterization> parameterization;
+};
+
+ObjectSearch objectSearch(const Scene& scene, std::size_t object, const RegistrationView& view,
+                          const RigidTransform& at) {
+    if (object >= scene.objects.size())
+        throw Error("registration: object " + std::to_string(object + 1) + " is not in the scene");
+    if (view.camera >= scene.cameras.size())
+        throw Error("registration: camera " + std::to_string(view.camera + 1) +
+                    " is not in the scene");
+    ObjectSearch s{scene, nullptr};
+    for (std::size_t i = 0; i < s.alone.objects.size(); ++i) s.alone.objects[i].visible = i == object;
+    SceneObject& target = s.alone.objects[object];
+    if (!target.model) throw Error("registration: object '" + target.name + "' has no model");
+    target.worldFromObject = at;
+    s.parameterization = std::make_shared<ObjectPoseParameterization>(
+        target.name, s.alone.cameras[view.camera], at, defaultPivot(*target.model), DepthSearch::AlongRay);
+    return s;
+}
+
+}  // namespace
+
 ObjectRegistrationResult registerObject(const Scene& scene, std::size_t object,
                                         const RegistrationView& view,
                                         const RigidTransform& start,
                                         const RegistrationSettings& settings,
                                         const RegistrationCallback& progress,
                                         const std::atomic<bool>* stop) {
-    if (object >= scene.objects.size())
-        throw Error("registration: object " + std::to_string(object + 1) + " is not in the scene");
-    if (view.camera >= scene.cameras.size())
-        throw Error("registration: camera " + std::to_string(view.camera + 1) +
-                    " is not in the scene");
-    Scene alone = scene;
-    for (std::size_t i = 0; i < alone.objects.size(); ++i) alone.objects[i].visible = i == object;
-    SceneObject& target = alone.objects[object];
-    if (!target.model) throw Error("registration: object '" + target.name + "' has no model");
-    target.worldFromObject = start;
-    auto parameterization = std::make_shared<ObjectPoseParameterization>(
-        target.name, alone.cameras[view.camera], start, defaultPivot(*target.model),
-        DepthSearch::AlongRay);
-    const Registration registration(alone, parameterization, {view}, settings);
+    const ObjectSearch s = objectSearch(scene, object, view, start);
+    const Registration registration(s.alone, s.parameterization, {view}, settings);
     const RegistrationResult r =
-        registration.run(parameterization->referenceParams(), progress, stop);
+        registration.run(s.parameterization->referenceParams(), progress, stop);
     ObjectRegistrationResult out;
-    out.worldFromObject = parameterization->worldFromObject(r.params);
+    out.worldFromObject = s.parameterization->worldFromObject(r.params);
     out.similarity = r.similarity;
     out.evaluations = r.evaluations;
     out.seconds = r.seconds;
@@ -85,38 +98,13 @@ ObjectRegistrationResult registerObject(const Scene& scene, std::size_t object,
     return out;
 }
 
-bool registersSideBySide(std::size_t objects, const RegistrationSettings& settings) {
-    return objects > 1 && (settings.threads > 0 ? settings.threads : defaultThreadCount()) > 1;
-}
-
-ObjectsRegistration registerObjects(const Scene& scene, const RegistrationView& view,
-                                    const RegistrationSettings& settings,
-                                    const std::function<RegistrationCallback(std::size_t)>& progressFor,
-                                    const std::atomic<bool>* stop) {
-    const std::size_t n = scene.objects.size();
-    ObjectsRegistration out;
-    out.results.resize(n);
-    out.sideBySide = registersSideBySide(n, settings);
-    const auto started = std::chrono::steady_clock::now();
-    const auto run = [&](std::size_t k, const RegistrationSettings& s) {
-        out.results[k] = registerObject(scene, k, view, scene.objects[k].worldFromObject, s,
-                                        progressFor ? progressFor(k) : RegistrationCallback{}, stop);
-    };
-    if (out.sideBySide) {
-        RegistrationSettings single = settings;
-        single.threads = 1;
-        const int cores = settings.threads > 0 ? settings.threads : defaultThreadCount();
-        parallelFor(
-            static_cast<int>(n), cores,
-            [&](int begin, int end) {
-                for (int k = begin; k < end; ++k) run(static_cast<std::size_t>(k), single);
-            },
-            static_cast<int>(n));
-    } else {
-        for (std::size_t k = 0; k < n; ++k) run(k, settings);
-    }
-    out.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-    return out;
+PoseUncertainty objectPoseUncertainty(const Scene& scene, std::size_t object, const RegistrationView& view,
+                                      const RigidTransform& answer, const RegistrationSettings& settings) {
+    const ObjectSearch s = objectSearch(scene, object, view, answer);
+    RegistrationSettings finest = settings;
+    finest.levelFactors = {1};  // only the finest level is evaluated: no pyramid to prepare
+    const Registration registration(s.alone, s.parameterization, {view}, finest);
+    return poseUncertainty(registration, s.parameterization->referenceParams());
 }
 
 Mask objectSilhouette(const SceneObject& object, const ProjectionGeometry& camera, int threads) {

@@ -2,12 +2,13 @@
 // Registering one object of a calibrated scene against a real radiograph: the object's pose
 // in the camera's frame (ObjectPoseParameterization, pivot at the centre of its bounds) is
 // searched from a start pose; the other objects are hidden meanwhile (their outlines are not
-// this object's evidence). Several objects are registered one at a time (registerObjects).
-#include <functional>
+// this object's evidence). Several objects, each confirmed by searches from independent starts:
+// xray/ConfirmedRegistration.h.
 #include <string>
 #include <vector>
 
 #include "scene/Scene.h"
+#include "search/PoseUncertainty.h"
 #include "search/Registration.h"
 
 namespace fm {
@@ -42,21 +43,11 @@ ObjectRegistrationResult registerObject(const Scene& scene, std::size_t object,
                                         const RegistrationCallback& progress = {},
                                         const std::atomic<bool>* stop = nullptr);
 
-// Every object of `scene` registered alone from its pose in `scene` (registerObject). With
-// several objects and cores they run side by side, one per core, each search single-threaded:
-// the same answers as one after the other (results do not depend on the thread count) in less
-// wall time (one search keeps about 1.1 of 2 cores busy). progressFor(k), if given, is object k's
-// progress callback.
-bool registersSideBySide(std::size_t objects, const RegistrationSettings& settings);
-struct ObjectsRegistration {
-    std::vector<ObjectRegistrationResult> results;  // per object of the scene
-    bool sideBySide = false;
-    double wallSeconds = 0.0;
-};
-ObjectsRegistration registerObjects(const Scene& scene, const RegistrationView& view,
-                                    const RegistrationSettings& settings,
-                                    const std::function<RegistrationCallback(std::size_t)>& progressFor = {},
-                                    const std::atomic<bool>* stop = nullptr);
+// How well the view fixes each of the object's six coordinates at `answer` (in the camera's
+// frame, pivot at the centre of its bounds; search/PoseUncertainty), the object alone as
+// registerObject has it, at the finest level of `settings`.
+PoseUncertainty objectPoseUncertainty(const Scene& scene, std::size_t object, const RegistrationView& view,
+                                      const RigidTransform& answer, const RegistrationSettings& settings);
 
 // The object's silhouette: pixels of `camera` whose ray crosses it (line integral > 0).
 Mask objectSilhouette(const SceneObject& object, const ProjectionGeometry& camera, int threads = 0);

@@ -155,6 +155,17 @@ pb::dict profileDict(const EvaluationProfile& p) {
     return d;
 }
 
+pb::dict uncertaintyDict(const PoseUncertainty& u) {
+    pb::dict d;
+    for (int i = 0; i < 6; ++i) d[searchCoordinateName(i)] = u.sd[i];  // inf: not fixed
+    pb::list weak;
+    for (int i : u.weak()) weak.append(searchCoordinateName(i));
+    d["weak"] = weak;
+    d["bounded"] = u.bounded;
+    d["evaluations"] = u.evaluations;
+    return d;
+}
+
 pb::array_t<double> fromTransform(const RigidTransform& t) {
     pb::array_t<double> a({4, 4});
     const std::array<double, 16> m = t.toRowMajor4x4();

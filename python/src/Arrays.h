@@ -22,6 +22,7 @@
 #include "core/Image.h"
 #include "scene/RigidTransform.h"
 #include "search/EvaluationProfile.h"
+#include "search/PoseUncertainty.h"
 #include "similarity/Mask.h"
 
 namespace fm::py {
@@ -69,6 +70,8 @@ pb::array_t<double> fromMat3(const glm::dmat3& m);
 // A search's profile (search/EvaluationProfile.h) as a dict: evaluations, wall_seconds and the
 // thread seconds of set_up, render, footprint and similarity.
 pb::dict profileDict(const EvaluationProfile& profile);
+// A pose's uncertainty: {"u": mm, "v", "depth", "about u": deg, ..., "weak": [names], "bounded", "evaluations"}.
+pb::dict uncertaintyDict(const PoseUncertainty& uncertainty);
 
 // A stack of 4x4 poses, (..., 4, 4) with `leadingDims` leading dimensions (1: (n, 4, 4); 2:
 // (frames, objects, 4, 4)), flattened in C order. A pose of 16 NaN is "no pose" (nullopt) when

@@ -21,6 +21,7 @@
 #include "scene/ObjectPoseParameterization.h"
 #include "search/SearchOptions.h"
 #include "xray/AnswerCheck.h"
+#include "xray/ConfirmedRegistration.h"
 #include "xray/CameraPoseDifference.h"
 #include "xray/ModelCoverage.h"
 #include "xray/ObjectRegistration.h"
@@ -71,8 +72,10 @@ void bindRegister(pb::module_& m) {
            std::optional<std::array<int, 4>> roi, int page, int bits, const std::string& traForm,
            const std::string& method, const std::string& similarity, std::uint64_t seed, int budget,
            int polishBudget, std::optional<std::vector<int>> levels, std::optional<std::vector<double>> radius,
-           int threads, const std::string& polish, const pb::object& progress) {
+           int threads, const std::string& polish, int runs, int maxRuns, const pb::object& progress) {
             // 1. Everything that can be refused, before the search.
+            if (runs < 1 || runs > 16) throw Error("runs must be 1 to 16 (searches from independent starts)");
+            if (maxRuns < runs || maxRuns > 32) throw Error("max_runs must be at least runs and at most 32");
             const std::vector<pb::object> modelList = listOf(models);
             const std::size_t n = modelList.size();
             if (n == 0) throw Error("models: give at least one model");
@@ -178,8 +181,11 @@ void bindRegister(pb::module_& m) {
             ObjectsRegistration all;
             {
                 pb::gil_scoped_release unlock;
+                ConfirmationSettings confirmation;
+                confirmation.runs = runs;
+                confirmation.maxRuns = maxRuns;
                 all = registerObjects(
-                    scene, view, settings,
+                    scene, view, settings, confirmation,
                     [&](std::size_t k) -> RegistrationCallback {
                         return [&, k](const RegistrationProgress& p) {
                             relay.report([&] { return progressDict(p, names[k]); });
@@ -187,7 +193,6 @@ void bindRegister(pb::module_& m) {
                     },
                     relay.stopFlag());
             }
-            const std::vector<ObjectRegistrationResult>& results = all.results;
             const double wallSeconds = all.wallSeconds;
             relay.rethrowIfFailed();
 
@@ -195,7 +200,8 @@ void bindRegister(pb::module_& m) {
             pb::list answers;
             for (std::size_t k = 0; k < n; ++k) {
                 SceneObject& object = scene.objects[k];
-                const ObjectRegistrationResult& r = results[k];
+                const ConfirmedObject& c = all.objects[k];
+                const ObjectRegistrationResult& r = c.answer;
                 object.worldFromObject = r.worldFromObject;
                 std::optional<double> iou, startIou;
                 if (labels[k]) {
@@ -204,7 +210,9 @@ void bindRegister(pb::module_& m) {
                         objectSilhouette({object.name, object.model, startPoses[k], true}, scene.cameras[0], threads),
                         *labels[k]);
                 }
-                const AnswerCheck check = checkAnswer(object, r.worldFromObject, {view}, scene.cameras, iou, threads);
+                AnswerEvidence evidence = c.evidence;
+                evidence.iou = iou;
+                const AnswerCheck check = checkAnswer(object, r.worldFromObject, {view}, scene.cameras, evidence, threads);
                 const CameraPoseDifference d = cameraPoseDifference(scene.cameras[0], startPoses[k], r.worldFromObject,
                                                                     defaultPivot(*object.model));
                 pb::dict a;
@@ -219,8 +227,11 @@ void bindRegister(pb::module_& m) {
                 a["wall_seconds"] = wallSeconds;
                 a["stopped"] = r.stopped;
                 a["profile"] = profileDict(r.profile);
-                a["verdict"] = r.stopped && check.check != AnswerVerdict::Lost ? "unchecked" : toString(check.check);
-                a["verdict_text"] = r.stopped ? "stopped before the search ended; " + check.text : check.text;
+                a["verdict"] = toString(check.verdict);
+                a["verdict_text"] = check.text;
+                a["runs"] = c.evidence.runs;
+                a["agreeing"] = c.evidence.agreeing;
+                a["uncertainty"] = c.evidence.uncertainty ? uncertaintyDict(*c.evidence.uncertainty) : pb::object(pb::none());
                 a["iou"] = iou ? pb::cast(*iou) : pb::none();
                 a["start_iou"] = startIou ? pb::cast(*startIou) : pb::none();
                 pb::dict moved;
@@ -229,7 +240,7 @@ void bindRegister(pb::module_& m) {
                 moved["rotation_deg"] = d.rotationDeg;
                 a["moved"] = moved;
                 a["written"] = pb::none();
-                if (!outs.empty() && check.check != AnswerVerdict::Lost && !r.stopped) {
+                if (!outs.empty() && check.verdict != AnswerVerdict::Lost && !r.stopped) {
                     const std::string& path = oneOutTra ? outs[0] : outs[k];
                     writePoseSpec(path, frame, oneOutTra ? k : 0, r.worldFromObject);
                     a["written"] = path;
@@ -245,7 +256,7 @@ void bindRegister(pb::module_& m) {
         pb::arg("page") = -1, pb::arg("bits") = 8, pb::arg("tra_form") = "auto", pb::arg("method") = "cmaes",
         pb::arg("similarity") = "edge", pb::arg("seed") = 1, pb::arg("budget") = 0, pb::arg("polish_budget") = -1,
         pb::arg("levels") = pb::none(), pb::arg("radius") = pb::none(), pb::arg("threads") = 0,
-        pb::arg("polish") = "nm", pb::arg("progress") = pb::none(),
+        pb::arg("polish") = "nm", pb::arg("runs") = 2, pb::arg("max_runs") = 4, pb::arg("progress") = pb::none(),
         R"doc(
 Registers implant or bone meshes in a real radiograph, as `fluoromatch register --reference IMG
 --camera CALIB --model M ... --start S` does, with its options as keyword arguments (--exclude-
@@ -261,8 +272,12 @@ progress(dict) is called as the search goes; return False to stop it (Ctrl-C sto
 
 Returns one dict per model: pose (worldFromObject 4x4), start, jts_row, similarity, measure,
 evaluations, seconds, wall_seconds, stopped, profile (where the evaluations' time went: thread
-seconds of set_up, render, footprint, similarity), verdict ("checked", "doubtful", "lost" or
-"unchecked": no mask to check it against), verdict_text, iou, start_iou, moved, written.)doc");
+seconds of set_up, render, footprint, similarity), verdict ("ok", "doubtful" or "lost"; ok
+needs a second search from another start ending there or a mask that agrees), verdict_text (the
+reasons), runs and agreeing (searches from independent starts: `runs=` at first, up to
+`max_runs=` while no two agree; the answer is the best), uncertainty (per camera-frame
+coordinate u, v, depth mm and about u, v, view deg: the spread the image allows, "weak": the
+weakly fixed ones), iou, start_iou, moved, written.)doc");
 }
 
 }  // namespace fm::py

@@ -29,8 +29,12 @@ pb::dict recordDict(const FrameRecord& r, const TrialScene& scene, const std::st
     d["frame"] = r.frame;
     d["status"] = toString(r.status);
     d["note"] = r.note;
-    // Tracked frames are not yet checked against anything independent: said so.
-    d["verdict"] = r.status == FrameRecord::Status::Tracked ? "unchecked" : "lost";
+    // How sure it is (track/Tracker.h step 5): never ok without something that confirms it.
+    d["verdict"] = r.status == FrameRecord::Status::Tracked ? toString(r.verdict) : "lost";
+    d["verdict_text"] = r.verdictText;
+    d["uncertainty"] = r.evidence.uncertainty ? pb::object(uncertaintyDict(*r.evidence.uncertainty)) : pb::none();
+    d["similarity_ratio"] = r.evidence.similarityRatio ? pb::cast(*r.evidence.similarityRatio) : pb::none();
+    d["searches"] = r.searches;
     d["pose"] = r.worldFromBone ? pb::object(fromTransform(traPoseFromObject(scene, bone, *r.worldFromBone)))
                                 : pb::none();
     d["object_pose"] = r.worldFromBone ? pb::object(fromTransform(*r.worldFromBone)) : pb::none();
@@ -51,7 +55,8 @@ void bindTrack(pb::module_& m) {
         "track",
         [](const std::string& trialPath, const pb::object& boneArg, const std::string& frames, bool reverse,
            const std::string& init, const std::string& start, const std::string& out, std::uint64_t seed,
-           int threads, std::optional<std::vector<int>> cameraList, const pb::object& progress) {
+           int threads, std::optional<std::vector<int>> cameraList, const std::string& onLost, bool uncertainty,
+           const pb::object& progress) {
             // 1. The trial, its bones, frames and keyframes, refused before any work.
             std::vector<std::string> bones;
             if (pb::isinstance<pb::str>(boneArg)) bones.push_back(boneArg.cast<std::string>());
@@ -82,6 +87,8 @@ void bindTrack(pb::module_& m) {
             settings.init = parseInitMode(init);
             settings.registration.seed = seed;
             settings.registration.threads = threads;
+            settings.onLost = parseOnLost(onLost, "on_lost");
+            settings.uncertainty = uncertainty;
             std::optional<TraFile> startTra;
             if (!start.empty()) startTra = readTrialTra(start, scene);
 
@@ -109,7 +116,7 @@ void bindTrack(pb::module_& m) {
                             [&](const RigidTransform& pose) { return storedObjectPose(scene, bone, pose); },
                             [&](const FrameRecord& r) {
                                 records.push_back(r);
-                                if (r.worldFromBone)
+                                if (r.answered())
                                     tra.frames[static_cast<std::size_t>(r.frame)][0] =
                                         asWrittenInTra(traPoseFromObject(scene, bone, *r.worldFromBone));
                                 if (!boneOut.empty()) writeTra(boneOut, tra);
@@ -157,17 +164,21 @@ void bindTrack(pb::module_& m) {
         },
         pb::arg("trial"), pb::arg("bone"), pb::kw_only(), pb::arg("frames") = "", pb::arg("reverse") = false,
         pb::arg("init") = "extrapolate", pb::arg("start") = "", pb::arg("out") = "", pb::arg("seed") = 1,
-        pb::arg("threads") = 0, pb::arg("cameras") = pb::none(), pb::arg("progress") = pb::none(),
+        pb::arg("threads") = 0, pb::arg("cameras") = pb::none(), pb::arg("on_lost") = "search",
+        pb::arg("uncertainty") = true, pb::arg("progress") = pb::none(),
         R"doc(
 Tracks a bone (or a list of bones) through a trial, as `fluoromatch track --trial T --bone B`
 does, with its options as keyword arguments: frames "A:B[:STEP]", reverse, init ("previous",
 "extrapolate", "keyframes"), start (a .tra of start poses / keyframes), out (a .tra, rewritten
 atomically after every frame; with several bones NAME_bone.tra), seed, threads, cameras
-(1-based list). The same poses as the CLI for the same arguments.
+(1-based list), on_lost ("search", "stop", "continue"), uncertainty. The same poses as the CLI
+for the same arguments.
 
 Returns (for one bone) a dict: poses (frames, 4, 4) as the .tra holds them (Autoscoper's
-worldFromVolume; NaN where not tracked), frames (one dict per tracked frame: frame, status,
-note, verdict, pose, object_pose, costs per camera, cameras_used, evaluations, seconds),
+worldFromVolume; NaN where not tracked or lost), frames (one dict per tracked frame: frame,
+status, note, verdict ("ok", "doubtful", "lost"), verdict_text, uncertainty (per coordinate of
+the first taking camera's frame), similarity_ratio (against the last good frames), searches,
+pose, object_pose, costs per camera, cameras_used, evaluations, seconds),
 written, stopped; for a list of bones a dict of those by bone. progress(dict) is called after
 every frame; return False to stop after it (Ctrl-C stops too).)doc");
 }

@@ -23,7 +23,10 @@ def test_the_radius_as_the_cli_tracks_it(wrist, cli, tmp_path):
     assert (tmp_path / "py.tra").read_bytes() == (tmp_path / "cli.tra").read_bytes()
     np.testing.assert_allclose(result["poses"], fm.read_tra(tmp_path / "cli.tra")[:, 0], atol=1e-12)
     assert [r["frame"] for r in result["frames"]] == [0, 1, 2]
-    assert all(r["status"] == "tracked" and r["verdict"] == "unchecked" for r in result["frames"])
+    # From the keyframe on: each frame judged against the last good one's similarity.
+    for r in result["frames"]:
+        assert r["status"] == "tracked" and r["verdict"] == "ok", r["verdict_text"]
+        assert r["similarity_ratio"] >= 0.9 and r["uncertainty"]["evaluations"] == 73
     assert len(frames) == 3 and frames[-1]["done"] == 3 and frames[-1]["total"] == 3
     assert all(len(r["costs"]) == 2 for r in result["frames"])
 

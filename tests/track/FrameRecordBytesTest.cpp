@@ -27,6 +27,16 @@ FrameRecord sample() {
     r.evaluations = 990;
     r.seconds = 0.731;
     r.profile = {990, 0.73, 0.01, 1.0 / 3.0, 0.2, 0.15};
+    r.verdict = AnswerVerdict::Doubtful;
+    r.verdictText = "doubtful: similarity 0.87 of the last good frames' (below 0.90)";
+    r.searches = 2;
+    PoseUncertainty u;
+    u.sd = {0.05, 0.07, 1.0 / 3.0, std::numeric_limits<double>::infinity(), 0.2, 0.1};
+    u.step = kUncertaintySteps;
+    u.bounded = false;
+    u.evaluations = 73;
+    r.evidence.uncertainty = u;
+    r.evidence.similarityRatio = 0.8712345678;
     return r;
 }
 
@@ -56,6 +66,18 @@ TEST(FrameRecordBytes, RoundTripIsExact) {
     ASSERT_EQ(d.viewCost.size(), 2u);
     EXPECT_TRUE(std::isnan(d.viewCost[0]));
     EXPECT_EQ(d.viewCost[1], r.viewCost[1]);
+    // How sure it is travels with it.
+    EXPECT_EQ(d.verdict, AnswerVerdict::Doubtful);
+    EXPECT_EQ(d.verdictText, r.verdictText);
+    EXPECT_EQ(d.searches, 2);
+    ASSERT_TRUE(d.evidence.uncertainty);
+    for (int i = 0; i < 6; ++i) {
+        EXPECT_EQ(d.evidence.uncertainty->sd[i], r.evidence.uncertainty->sd[i]) << i;
+        EXPECT_EQ(d.evidence.uncertainty->step[i], r.evidence.uncertainty->step[i]) << i;
+    }
+    EXPECT_FALSE(d.evidence.uncertainty->bounded);
+    EXPECT_EQ(d.evidence.uncertainty->evaluations, 73);
+    EXPECT_EQ(d.evidence.similarityRatio, r.evidence.similarityRatio);
 }
 
 TEST(FrameRecordBytes, NoPoseStaysNoPoseAndLongNotesAreCut) {
@@ -70,6 +92,11 @@ TEST(FrameRecordBytes, NoPoseStaysNoPoseAndLongNotesAreCut) {
     EXPECT_FALSE(d.worldFromBone);
     EXPECT_EQ(d.status, FrameRecord::Status::BadFrame);
     EXPECT_EQ(d.note, std::string(kFrameNoteBytes - 1, 'x'));
+    EXPECT_FALSE(d.evidence.uncertainty);
+    EXPECT_FALSE(d.evidence.similarityRatio);
+    r.verdictText = std::string(900, 'v');
+    encodeFrameRecord(r, bytes);
+    EXPECT_EQ(decodeFrameRecord(bytes, 3).verdictText, std::string(kFrameVerdictBytes - 1, 'v'));
 }
 
 TEST(FrameRecordBytes, RefusesWrongSizesAndBytesNoEncoderWrote) {

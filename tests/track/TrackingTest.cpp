@@ -127,7 +127,9 @@ TEST(Tracking, ReportsProgressOverTheCoarseAndTheFullResolutionSearch) {
     FM_REQUIRE_SHARED_DATA("autoscoper-bvr/Models/rad_dcm_cropped.tif");
     const Wrist w;
     const auto truth = [&](int k) { return w.truth(k); };
-    const fm::Tracker tracker(w.scene, "radius", w.frames(truth), {});
+    fm::TrackSettings settings;
+    settings.confirmWithoutReference = false;  // the confirming search reports no progress
+    const fm::Tracker tracker(w.scene, "radius", w.frames(truth), settings);
     std::vector<fm::RegistrationProgress> seen;
     const fm::FrameRecord r =
         tracker.trackFrame(1, truth(0), nullptr, [&](const fm::RegistrationProgress& p) { seen.push_back(p); });
@@ -147,6 +149,64 @@ TEST(Tracking, ReportsProgressOverTheCoarseAndTheFullResolutionSearch) {
     EXPECT_EQ(seen.back().level, levels - 1);
     EXPECT_EQ(seen.back().factor, 1);
     EXPECT_EQ(seen.back().evaluations, r.evaluations);
+}
+
+// Step 5: each frame judged against the last good one (frame 0 against its keyframe); a frame
+// whose images hold no bone (noise only) is lost whatever the search finds, its pose is never a
+// later frame's start, and the run stops there, searches it again or goes on as onLost says.
+TEST(Tracking, VerdictsJudgeEveryFrameAndALostFrameStopsOrIsSearchedAgainOrSkipped) {
+    FM_REQUIRE_SHARED_DATA("autoscoper-bvr/Models/rad_dcm_cropped.tif");
+    const Wrist w;
+    const auto truth = [&](int k) { return w.truth(k); };
+    const fm::FrameViews real = w.frames(truth);
+    const fm::FrameViews withBlank = [&](int k) {
+        std::vector<fm::RegistrationView> views = real(k);
+        if (k != 2) return views;
+        fm::Rng rng(7);
+        for (fm::RegistrationView& v : views)
+            for (float& p : v.reference.pixels) p = static_cast<float>(rng.normal());
+        return views;
+    };
+    const std::map<int, RigidTransform> keyframes{{0, truth(0)}};
+    const auto runWith = [&](fm::OnLost onLost) {
+        fm::TrackSettings settings;
+        settings.onLost = onLost;
+        const fm::Tracker tracker(w.scene, "radius", withBlank, settings);
+        std::map<int, RigidTransform> tracked;
+        std::vector<fm::FrameRecord> records;
+        tracker.run({0, 1, 2, 3}, keyframes, tracked, [&](const fm::FrameRecord& r) { records.push_back(r); });
+        return std::make_pair(records, tracked);
+    };
+    const auto [records, tracked] = runWith(fm::OnLost::Continue);
+    ASSERT_EQ(records.size(), 4u);
+    for (int k : {0, 1, 3}) {
+        const fm::FrameRecord& r = records[static_cast<std::size_t>(k)];
+        EXPECT_EQ(r.verdict, fm::AnswerVerdict::Ok) << k << ": " << r.verdictText;
+        ASSERT_TRUE(r.evidence.similarityRatio) << k;
+        EXPECT_GT(*r.evidence.similarityRatio, fm::kConfirmedSimilarityRatio) << k;
+        ASSERT_TRUE(r.evidence.uncertainty) << k;
+        EXPECT_EQ(r.evidence.uncertainty->evaluations, 73);
+        EXPECT_LT(centreError(*r.worldFromBone, truth(k), w.centre), 0.5) << k;
+        EXPECT_EQ(tracked.count(k), 1u) << k;
+    }
+    const fm::FrameRecord& blank = records[2];
+    EXPECT_EQ(blank.status, fm::FrameRecord::Status::Tracked);
+    EXPECT_EQ(blank.verdict, fm::AnswerVerdict::Lost) << blank.verdictText;
+    EXPECT_LT(*blank.evidence.similarityRatio, fm::kLostSimilarityRatio);
+    EXPECT_FALSE(blank.answered());
+    EXPECT_EQ(blank.searches, 1) << "continue: not searched again";
+    EXPECT_EQ(tracked.count(2), 0u) << "a lost pose is kept as a start";
+
+    const auto [stopped, stoppedTracked] = runWith(fm::OnLost::Stop);
+    ASSERT_EQ(stopped.size(), 3u) << "stop: the run ends at the lost frame";
+    EXPECT_EQ(stopped[2].verdict, fm::AnswerVerdict::Lost);
+
+    const auto [searched, searchedTracked] = runWith(fm::OnLost::Search);
+    ASSERT_EQ(searched.size(), 4u);
+    EXPECT_EQ(searched[2].searches, 2) << "search: the lost frame searched again, wider";
+    EXPECT_GT(searched[2].evaluations, blank.evaluations);
+    EXPECT_EQ(searched[2].verdict, fm::AnswerVerdict::Lost);
+    EXPECT_EQ(searched[3].verdict, fm::AnswerVerdict::Ok) << searched[3].verdictText;
 }
 
 TEST(Tracking, ContinuesOnOneCameraWhileTheBoneLeavesTheOther) {

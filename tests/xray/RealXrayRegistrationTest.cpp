@@ -1,11 +1,12 @@
 // Registration against the real JTML knee fluoroscopy (docs/real-xray.md, "Proof on the real
 // frames"): for the three frames and both implants, from the .jts pose perturbed by up to
-// 5 mm in-plane, 20 mm in depth and 5 deg about each camera axis, the registration ends
-// within 1 mm in-plane and 2 deg of the .jts pose, and its silhouette matches the label mask.
+// 5 mm in-plane, 20 mm in depth and 5 deg about each camera axis, the registration (`register`'s:
+// two searches from independent starts, more while they disagree) ends within 1 mm in-plane and
+// 2 deg of the .jts pose in at least 99 % of the starts, every miss has a verdict other than ok
+// (decided without the mask), and its silhouette matches the label mask.
 //
-// CI runs three seeded starts per frame and implant (18 registrations). The documented
-// proof, ten starts each (60 registrations, all met):
-//   FM_REAL_XRAY_STARTS=10 build/tests/fm_test_xray --gtest_filter='RealXray.*'
+// Ten seeded starts per frame and implant (60 registrations) in the Release suite; two under
+// the sanitizers (12: they run ~5x slower). FM_REAL_XRAY_STARTS=N overrides.
 // The label masks reproduce the .jts silhouettes exactly, so the IoU of the .jts pose is 1.0
 // and cannot be reached by any other pose: the bound is kMinIoU, below what was measured.
 #include <cstdio>
@@ -24,7 +25,9 @@
 #include "radiograph/RadiographPreparation.h"
 #include "scene/MeshXrayModel.h"
 #include "scene/ObjectPoseParameterization.h"
+#include "xray/AnswerCheck.h"
 #include "xray/CameraPoseDifference.h"
+#include "xray/ConfirmedRegistration.h"
 #include "xray/ObjectRegistration.h"
 #include "xray/PoseSpec.h"
 
@@ -34,6 +37,7 @@ namespace {
 constexpr double kMaxInPlaneMm = 1.0;
 constexpr double kMaxRotationDeg = 2.0;
 constexpr double kMinIoU = 0.95;
+constexpr double kMinMetShare = 0.99;
 
 const char* kFrames[3] = {"0160", "0170", "0180"};
 
@@ -92,7 +96,12 @@ RigidTransform perturbed(const ObjectPoseParameterization& p, Rng& rng) {
 
 int startsPerCase() {
     const char* env = std::getenv("FM_REAL_XRAY_STARTS");
-    const int n = env ? std::atoi(env) : 3;
+#ifdef __SANITIZE_ADDRESS__
+    const int fallback = 2;
+#else
+    const int fallback = 10;
+#endif
+    const int n = env ? std::atoi(env) : fallback;
     return std::clamp(n, 1, 100);
 }
 
@@ -132,6 +141,7 @@ TEST(RealXray, RegistrationFromPerturbedStartsReachesTheJtsPose) {
     RegistrationSettings settings =
         realXraySettings(measure ? parseSimilarityMeasure(measure) : SimilarityMeasure::EdgeDistance);
     settings.threads = 2;
+    int total = 0, met_ = 0, misses = 0, falseAlarms = 0;
     for (int f = 0; f < 3; ++f) {
         const Frame frame = loadFrame(f);
         const RegistrationView view{0, frame.radiograph.image, frame.radiograph.valid};
@@ -148,7 +158,11 @@ TEST(RealXray, RegistrationFromPerturbedStartsReachesTheJtsPose) {
             Rng rng(1000 + 10 * f + (implant.name[0] == 't'));
             for (int s = 0; s < starts; ++s) {
                 const RigidTransform start = perturbed(atTruth, rng);
-                const ObjectRegistrationResult r = registerObject(scene, 0, view, start, settings);
+                scene.objects[0].worldFromObject = start;
+                const ConfirmedObject c = registerObjects(scene, view, settings).objects.at(0);
+                const ObjectRegistrationResult& r = c.answer;
+                const AnswerCheck check = checkAnswer(scene.objects[0], r.worldFromObject, {view}, scene.cameras,
+                                                      c.evidence, settings.threads);
                 const CameraPoseDifference before =
                     cameraPoseDifference(frame.camera, truth, start, defaultPivot(*model));
                 const CameraPoseDifference d =
@@ -156,20 +170,33 @@ TEST(RealXray, RegistrationFromPerturbedStartsReachesTheJtsPose) {
                 const double iou = silhouetteIoU(
                     objectSilhouette({implant.name, model, r.worldFromObject, true}, frame.camera),
                     label);
+                const bool met = d.inPlaneMm < kMaxInPlaneMm && d.rotationDeg < kMaxRotationDeg;
+                ++total;
+                met_ += met ? 1 : 0;
+                if (!met) {
+                    ++misses;
+                    EXPECT_NE(check.verdict, AnswerVerdict::Ok)
+                        << kFrames[f] << " " << implant.name << " start " << s << " missed, yet " << check.text;
+                } else if (check.verdict != AnswerVerdict::Ok) {
+                    ++falseAlarms;
+                }
+                const PoseUncertainty& u = *c.evidence.uncertainty;
                 std::printf("%s %s start %d: from in-plane %.2f depth %+6.2f rot %.2f -> in-plane "
                             "%.3f mm, depth %+7.3f mm, rotation %.3f deg (view %+.3f, out %.3f), "
-                            "IoU %.4f, %d evals, %.2f s\n",
+                            "IoU %.4f, %d runs %d agree, %s, sd depth %.2f mm, sd rot %.2f %.2f %.2f deg, "
+                            "%d evals, %.2f s\n",
                             kFrames[f], implant.name, s, before.inPlaneMm, before.depthMm,
                             before.rotationDeg, d.inPlaneMm, d.depthMm, d.rotationDeg,
-                            d.inPlaneRotationDeg, d.outOfPlaneRotationDeg, iou, r.evaluations,
-                            r.seconds);
+                            d.inPlaneRotationDeg, d.outOfPlaneRotationDeg, iou, c.evidence.runs,
+                            c.evidence.agreeing, toString(check.verdict), u.sd[2], u.sd[3], u.sd[4], u.sd[5],
+                            r.evaluations, r.seconds);
                 std::fflush(stdout);
-                EXPECT_LT(d.inPlaneMm, kMaxInPlaneMm) << kFrames[f] << " " << implant.name << " start " << s;
-                EXPECT_LT(d.rotationDeg, kMaxRotationDeg) << kFrames[f] << " " << implant.name << " start " << s;
                 EXPECT_GE(iou, kMinIoU) << kFrames[f] << " " << implant.name << " start " << s;
             }
         }
     }
+    std::printf("met %d of %d; misses %d (each not ok), met but not ok %d\n", met_, total, misses, falseAlarms);
+    EXPECT_GE(met_, kMinMetShare * total) << met_ << " of " << total << " met";
 }
 
 }  // namespace

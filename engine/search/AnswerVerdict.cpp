@@ -1,0 +1,77 @@
+#include "search/AnswerVerdict.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace fm {
+
+const char* toString(AnswerVerdict verdict) {
+    switch (verdict) {
+        case AnswerVerdict::Ok: return "ok";
+        case AnswerVerdict::Lost: return "lost";
+        default: return "doubtful";
+    }
+}
+
+namespace {
+
+struct Judgement {
+    AnswerVerdict verdict = AnswerVerdict::Ok;
+    bool confirmed = false;
+    std::string reasons;
+    void add(AnswerVerdict says, const std::string& reason, bool confirms = false) {
+        if (static_cast<int>(says) > static_cast<int>(verdict)) verdict = says;
+        confirmed = confirmed || confirms;
+        reasons += (reasons.empty() ? "" : "; ") + reason;
+    }
+};
+
+std::string format(const char* pattern, double a, double b = 0.0) {
+    char text[200];
+    std::snprintf(text, sizeof text, pattern, a, b);
+    return text;
+}
+
+}  // namespace
+
+AnswerCheck judgeEvidence(const AnswerEvidence& evidence) {
+    using V = AnswerVerdict;
+    Judgement j;
+    // 2. Searches from independent starts: the answer is confirmed when another ends there too.
+    if (evidence.runs >= 2) {
+        const std::string counted = std::to_string(evidence.agreeing) + " of " + std::to_string(evidence.runs) +
+                                    " searches from different starts end here";
+        if (evidence.agreeing >= 2) j.add(V::Ok, counted, true);
+        else j.add(V::Doubtful, "no other search from a different start ends here (" + counted + ")");
+    }
+    // 3. The mask, where there is one: the silhouette must cover it.
+    if (evidence.iou) {
+        const double iou = *evidence.iou;
+        if (iou >= kConfirmedIoU) j.add(V::Ok, format("silhouette IoU %.3f against the mask (at least %.2f)", iou, kConfirmedIoU), true);
+        else if (iou >= kLostIoU) j.add(V::Doubtful, format("silhouette IoU %.3f against the mask (below %.2f)", iou, kConfirmedIoU));
+        else j.add(V::Lost, format("silhouette IoU %.3f against the mask (below %.2f)", iou, kLostIoU));
+    }
+    // 4. Tracking: the similarity against what the bone scored in its last good frames.
+    if (evidence.similarityRatio) {
+        const double r = *evidence.similarityRatio;
+        const std::string of = "similarity %.2f of " + evidence.similarityReference;
+        const double confirmed = evidence.confirmedRatio;
+        if (r >= confirmed) j.add(V::Ok, format((of + " (at least %.2f)").c_str(), r, confirmed), true);
+        else if (r >= kLostSimilarityRatio) j.add(V::Doubtful, format((of + " (below %.2f)").c_str(), r, confirmed));
+        else j.add(V::Lost, format((of + " (below %.2f)").c_str(), r, kLostSimilarityRatio));
+    }
+    // 5. A direction along which the cost does not rise: the images do not fix the pose.
+    if (evidence.uncertainty && evidence.uncertainty->measured() && !evidence.uncertainty->bounded) {
+        std::string unfixed;
+        for (int i = 0; i < 6; ++i)
+            if (!std::isfinite(evidence.uncertainty->sd[i]))
+                unfixed += (unfixed.empty() ? "" : ", ") + std::string(searchCoordinateName(i));
+        j.add(V::Doubtful, "the cost does not rise along " + (unfixed.empty() ? std::string("some direction") : unfixed));
+    }
+    if (evidence.stopped) j.add(V::Doubtful, "stopped before the search ended");
+    if (!j.confirmed && j.verdict == V::Ok)
+        j.add(V::Doubtful, "nothing confirms it (no second search, mask or earlier frame): check the outline");
+    return {j.verdict, std::string(toString(j.verdict)) + ": " + j.reasons};
+}
+
+}  // namespace fm

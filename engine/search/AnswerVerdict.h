@@ -1,0 +1,55 @@
+#pragma once
+// How far an answer can be trusted, from evidence measured without the truth: searches from
+// independent starts that end at the same pose, the silhouette IoU against a label mask, the
+// answer's similarity against a reference (tracking: what the bone scored in its last good
+// frames; evaluate: what a perfect match scores), and how well the images fix each coordinate
+// (search/PoseUncertainty). The verdict is the worst the evidence says, and "ok" needs at least
+// one piece that confirms the answer: nothing unconfirmed is shown or written as right.
+// xray/AnswerCheck adds the check that the model covers valid pixels at all.
+#include <optional>
+#include <string>
+
+#include "search/PoseUncertainty.h"
+
+namespace fm {
+
+// Silhouette IoU against the mask from which an answer counts as confirmed, and below which it is
+// lost rather than doubtful.
+inline constexpr double kConfirmedIoU = 0.9;
+inline constexpr double kLostIoU = 0.5;
+// Tracking: the frame's similarity over the bone's in its last good frames. The JTML misses
+// scored 0.82-0.96 of the right pose's; a tracked bone's similarity varies a few per cent
+// from frame to frame (docs/tracking.md, "Verdicts").
+inline constexpr double kConfirmedSimilarityRatio = 0.9;
+inline constexpr double kLostSimilarityRatio = 0.5;
+// Evaluate: against a perfect match on a reference the model rendered, right answers score
+// nearly 1 (the knee phantom, cmaes with small budgets: every success at 0.958 or more, misses of
+// 1.2-3.3 mm at 0.92-0.958; docs/search.md, "Verdicts").
+inline constexpr double kConfirmedPerfectMatchRatio = 0.96;
+
+enum class AnswerVerdict { Ok, Doubtful, Lost };
+const char* toString(AnswerVerdict verdict);  // "ok", "doubtful", "lost"
+
+struct AnswerEvidence {
+    std::optional<double> iou;  // silhouette IoU against the object's mask
+    int runs = 0;               // searches from independent starts (0: not run)
+    int agreeing = 0;           // of them, those that ended at the answer
+    std::optional<PoseUncertainty> uncertainty;
+    // The answer's similarity over a reference: tracking's last good frames, evaluate's
+    // perfect match (Registration::referenceSelfSimilarity). Named in the text.
+    std::optional<double> similarityRatio;
+    std::string similarityReference = "the last good frames'";
+    double confirmedRatio = kConfirmedSimilarityRatio;  // ok from this ratio on
+    bool stopped = false;                   // the search was stopped before it ended
+};
+
+struct AnswerCheck {
+    AnswerVerdict verdict = AnswerVerdict::Doubtful;
+    // "ok: 2 of 2 searches from different starts end here" or "doubtful: ...; ..." (every reason).
+    std::string text;
+};
+
+// The verdict of the evidence alone.
+AnswerCheck judgeEvidence(const AnswerEvidence& evidence);
+
+}  // namespace fm

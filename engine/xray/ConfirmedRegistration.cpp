@@ -1,0 +1,178 @@
+#include "xray/ConfirmedRegistration.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <memory>
+
+#include "core/Error.h"
+#include "core/Parallel.h"
+#include "core/Random.h"
+#include "scene/ObjectPoseParameterization.h"
+#include "xray/CameraPoseDifference.h"
+
+namespace fm {
+
+namespace {
+
+struct Search {
+    std::size_t object = 0;
+    int run = 0;
+};
+
+// One search per core when there are several and cores to spare; each then single-threaded.
+void runSearches(const std::vector<Search>& searches, const RegistrationSettings& settings,
+                 const std::function<void(const Search&, const RegistrationSettings&)>& run) {
+    if (registersSideBySide(searches.size(), settings)) {
+        RegistrationSettings single = settings;
+        single.threads = 1;
+        const int cores = settings.threads > 0 ? settings.threads : defaultThreadCount();
+        parallelFor(
+            static_cast<int>(searches.size()), cores,
+            [&](int begin, int end) {
+                for (int i = begin; i < end; ++i) run(searches[static_cast<std::size_t>(i)], single);
+            },
+            static_cast<int>(searches.size()));
+    } else {
+        for (const Search& s : searches) run(s, settings);
+    }
+}
+
+}  // namespace
+
+RigidTransform confirmationStart(const ProjectionGeometry& camera, const RigidTransform& start,
+                                 const glm::dvec3& pivot, const RegistrationSettings& settings,
+                                 const ConfirmationSettings& confirmation, int run) {
+    if (run <= 0) return start;
+    const ObjectPoseParameterization at("object", camera, start, pivot, DepthSearch::AlongRay);
+    Rng rng(settings.seed * 0x9E3779B97F4A7C15ull + static_cast<std::uint64_t>(run));
+    const auto& radius = settings.searchRadius;
+    const double spread = confirmation.startSpread;
+    std::array<double, 6> point{};
+    const double r = std::sqrt(rng.uniform()), a = 2.0 * M_PI * rng.uniform();
+    point[0] = spread * radius[0] * r * std::cos(a);
+    point[1] = spread * radius[1] * r * std::sin(a);
+    for (int i = 2; i < 6; ++i) point[i] = spread * radius[i] * rng.uniform(-1.0, 1.0);
+    return at.worldFromObject(at.fromSearchPoint(at.referenceParams(), point));
+}
+
+bool posesAgree(const RigidTransform& a, const RigidTransform& b, const glm::dvec3& pivot,
+                const ConfirmationSettings& bounds) {
+    const glm::dmat3 relative = glm::transpose(a.rotation) * b.rotation;
+    const double c = std::clamp((relative[0][0] + relative[1][1] + relative[2][2] - 1.0) / 2.0, -1.0, 1.0);
+    return glm::length(a.applyToPoint(pivot) - b.applyToPoint(pivot)) <= bounds.agreeInPlaneMm &&
+           std::acos(c) * 180.0 / M_PI <= bounds.agreeRotationDeg;
+}
+
+bool registersSideBySide(std::size_t searches, const RegistrationSettings& settings) {
+    return searches > 1 && (settings.threads > 0 ? settings.threads : defaultThreadCount()) > 1;
+}
+
+ObjectsRegistration registerObjects(const Scene& scene, const RegistrationView& view,
+                                    const RegistrationSettings& settings,
+                                    const ConfirmationSettings& confirmation,
+                                    const std::function<RegistrationCallback(std::size_t)>& progressFor,
+                                    const std::atomic<bool>* stop) {
+    if (confirmation.runs < 1 || confirmation.maxRuns < confirmation.runs)
+        throw Error("registration: confirmation runs must be at least 1 and at most maxRuns");
+    if (view.camera >= scene.cameras.size())
+        throw Error("registration: camera " + std::to_string(view.camera + 1) + " is not in the scene");
+    const std::size_t n = scene.objects.size();
+    const ProjectionGeometry& camera = scene.cameras[view.camera];
+    ObjectsRegistration out;
+    out.objects.resize(n);
+    const auto started = std::chrono::steady_clock::now();
+    std::vector<std::vector<ObjectRegistrationResult>> runs(n);
+    const auto search = [&](const Search& s, const RegistrationSettings& base) {
+        const SceneObject& o = scene.objects[s.object];
+        RegistrationSettings one = base;
+        one.seed = base.seed + static_cast<std::uint64_t>(s.run);
+        const glm::dvec3 pivot = o.model ? defaultPivot(*o.model) : glm::dvec3(0.0);
+        const RigidTransform start = confirmationStart(camera, o.worldFromObject, pivot, base, confirmation, s.run);
+        runs[s.object][static_cast<std::size_t>(s.run)] = registerObject(
+            scene, s.object, view, start, one,
+            progressFor && s.run == 0 ? progressFor(s.object) : RegistrationCallback{}, stop);
+    };
+    const auto stopped = [&] { return stop && stop->load(); };
+    // 1. The first runs of every object, side by side.
+    std::vector<Search> searches;
+    for (std::size_t k = 0; k < n; ++k) {
+        runs[k].resize(static_cast<std::size_t>(confirmation.runs));
+        for (int r = 0; r < confirmation.runs; ++r) searches.push_back({k, r});
+    }
+    out.sideBySide = registersSideBySide(searches.size(), settings);
+    runSearches(searches, settings, search);
+    // 2. The best run of each object and the runs that agree with it.
+    std::vector<int> best(n, 0), agreeing(n, 0);
+    const auto judge = [&](std::size_t k) {
+        const auto& rk = runs[k];
+        int b = 0;
+        for (std::size_t r = 1; r < rk.size(); ++r)
+            if (rk[r].similarity > rk[static_cast<std::size_t>(b)].similarity) b = static_cast<int>(r);
+        best[k] = b;
+        const glm::dvec3 pivot = defaultPivot(*scene.objects[k].model);
+        agreeing[k] = 0;
+        for (const ObjectRegistrationResult& r : rk) {
+            const CameraPoseDifference d =
+                cameraPoseDifference(camera, rk[static_cast<std::size_t>(b)].worldFromObject, r.worldFromObject, pivot);
+            agreeing[k] += d.inPlaneMm <= confirmation.agreeInPlaneMm && d.rotationDeg <= confirmation.agreeRotationDeg;
+        }
+    };
+    for (std::size_t k = 0; k < n; ++k) judge(k);
+    // 3. The re-search: objects that no second run confirms get more runs (as many at a time as
+    //    there are cores to share among them), until two agree or maxRuns have run.
+    const int cores = settings.threads > 0 ? settings.threads : defaultThreadCount();
+    while (confirmation.runs >= 2 && !stopped()) {
+        searches.clear();
+        std::vector<std::size_t> needy;
+        for (std::size_t k = 0; k < n; ++k)
+            if (agreeing[k] < 2 && static_cast<int>(runs[k].size()) < confirmation.maxRuns) needy.push_back(k);
+        if (needy.empty()) break;
+        const int each = std::max(1, cores / static_cast<int>(needy.size()));
+        for (std::size_t k : needy) {
+            const int first = static_cast<int>(runs[k].size());
+            const int last = std::min(confirmation.maxRuns, first + each);
+            runs[k].resize(static_cast<std::size_t>(last));
+            for (int r = first; r < last; ++r) searches.push_back({k, r});
+        }
+        runSearches(searches, settings, search);
+        for (std::size_t k : needy) judge(k);
+    }
+    // 4. How well the image fixes each coordinate at each answer.
+    for (std::size_t k = 0; k < n; ++k) {
+        ConfirmedObject& c = out.objects[k];
+        c.runs = runs[k];
+        c.answer = runs[k][static_cast<std::size_t>(best[k])];
+        c.answer.evaluations = 0;
+        c.answer.seconds = 0.0;
+        c.answer.profile = {};
+        for (const ObjectRegistrationResult& r : runs[k]) {
+            c.answer.evaluations += r.evaluations;
+            c.answer.seconds += r.seconds;
+            c.answer.profile += r.profile;
+            c.answer.stopped = c.answer.stopped || r.stopped;
+        }
+        c.evidence.runs = static_cast<int>(runs[k].size());
+        c.evidence.agreeing = agreeing[k];
+        c.evidence.stopped = c.answer.stopped;
+    }
+    if (confirmation.uncertainty && !stopped()) {
+        const int cores2 = n > 1 ? 1 : settings.threads;
+        parallelFor(
+            static_cast<int>(n), n > 1 ? cores : 1,
+            [&](int begin, int end) {
+                for (int i = begin; i < end; ++i) {
+                    ConfirmedObject& c = out.objects[static_cast<std::size_t>(i)];
+                    RegistrationSettings s = settings;
+                    s.threads = cores2;
+                    c.evidence.uncertainty = objectPoseUncertainty(scene, static_cast<std::size_t>(i), view,
+                                                                   c.answer.worldFromObject, s);
+                }
+            },
+            static_cast<int>(n));
+    }
+    out.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    return out;
+}
+
+}  // namespace fm

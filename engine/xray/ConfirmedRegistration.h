@@ -1,0 +1,70 @@
+#pragma once
+// Registering every object of a calibrated scene against one radiograph, each answer confirmed
+// by searches from independent starts (issue 30: "agreement between restarts"; "a result that is
+// not ok is searched again before it is reported"):
+//   1. each object is searched from its start and from `runs - 1` starts drawn around it
+//      (seeded: run r uses seed + r), side by side, one search per core;
+//   2. the answer is the run with the best similarity; the runs that end within the agreement
+//      bounds of it (in-plane and rotation as the camera sees them: single-view depth is weak
+//      and reported by the uncertainty instead) confirm it;
+//   3. an object that no second run confirms is searched again, from further draws, until two
+//      agree or `maxRuns` have run (the re-search's budget);
+//   4. the curvature of the cost at the answer (search/PoseUncertainty) says how well the image
+//      fixes each coordinate.
+// The evidence goes into checkAnswer (xray/AnswerCheck.h) with the caller's mask, if any.
+// Results depend on the seeds only, not on the thread count.
+#include <functional>
+#include <vector>
+
+#include "xray/AnswerCheck.h"
+#include "xray/ObjectRegistration.h"
+
+namespace fm {
+
+struct ConfirmationSettings {
+    int runs = 2;     // searches per object at first (1 = the search alone, unconfirmed)
+    int maxRuns = 4;  // at most this many while no two agree
+    // Run r >= 1 starts at the start moved by a seeded draw: in-plane within a disc, depth and
+    // each angle uniformly, each within startSpread x the search radius of that coordinate.
+    double startSpread = 1.0;
+    double agreeInPlaneMm = 1.0;  // the issue's success bounds for one view
+    double agreeRotationDeg = 2.0;
+    bool uncertainty = true;  // step 4 (73 evaluations at the finest level)
+};
+
+struct ConfirmedObject {
+    // The best run; evaluations, seconds and profile are the runs' sums (the uncertainty's
+    // evaluations are its own: evidence.uncertainty->evaluations).
+    ObjectRegistrationResult answer;
+    std::vector<ObjectRegistrationResult> runs;
+    AnswerEvidence evidence;  // runs, agreeing, uncertainty, stopped (the caller adds a mask's IoU)
+};
+
+struct ObjectsRegistration {
+    std::vector<ConfirmedObject> objects;  // per object of the scene
+    bool sideBySide = false;
+    double wallSeconds = 0.0;
+};
+
+// The start of run `run` of an object (run 0: `start` itself).
+RigidTransform confirmationStart(const ProjectionGeometry& camera, const RigidTransform& start,
+                                 const glm::dvec3& pivot, const RegistrationSettings& settings,
+                                 const ConfirmationSettings& confirmation, int run);
+
+// Whether two poses of an object agree in 3D (several cameras fix depth too): its pivot within
+// agreeInPlaneMm of each other and the relative rotation within agreeRotationDeg.
+bool posesAgree(const RigidTransform& a, const RigidTransform& b, const glm::dvec3& pivot,
+                const ConfirmationSettings& bounds);
+
+// Whether searches run side by side (several searches and cores) or one after the other.
+bool registersSideBySide(std::size_t searches, const RegistrationSettings& settings);
+
+// Every object of `scene` from its pose in `scene`. progressFor(k), if given, is object k's
+// progress callback (its first run's). Throws as registerObject.
+ObjectsRegistration registerObjects(const Scene& scene, const RegistrationView& view,
+                                    const RegistrationSettings& settings,
+                                    const ConfirmationSettings& confirmation = {},
+                                    const std::function<RegistrationCallback(std::size_t)>& progressFor = {},
+                                    const std::atomic<bool>* stop = nullptr);
+
+}  // namespace fm
