@@ -29,6 +29,8 @@
 #include "core/Error.h"
 #include "match/PoseError.h"
 #include "scene/VolumeScene.h"
+#include "search/AnswerVerdict.h"
+#include "search/ConfirmedSearch.h"
 #include "search/Registration.h"
 #include "search/RegistrationTargets.h"
 #include "source/VolumeSource.h"
@@ -186,7 +188,7 @@ const std::vector<fm::cli::CommandMode>& registerModes() {
                          "pose", "biplane", "no-rest", "footprint-margin", "values"})},
             {"register", "a CT against one image, the 2011 pose",
              withSearch({"volume", "reference-pose", "reference", "geometry", "start", "truth",
-                         "values"})}};
+                         "values", "runs", "max-runs"})}};
     }();
     return modes;
 }
@@ -285,10 +287,22 @@ void runRegister(const RegisterArgs& a, bool similarityGiven, int frame) {
         std::printf("            (finer levels left out: their rays would resample the %.3g mm "
                     "voxels)\n",
                     std::min({fm::drrVolumeInfo(*prepared).spacing.x, fm::drrVolumeInfo(*prepared).spacing.y, fm::drrVolumeInfo(*prepared).spacing.z}));
+    fm::ConfirmationSettings confirmation;
+    confirmation.runs = a.xray.runs;
+    confirmation.maxRuns = a.xray.maxRuns;
+    if (confirmation.maxRuns < confirmation.runs)
+        throw fm::Error("--max-runs (" + std::to_string(confirmation.maxRuns) + ") must be at least --runs (" +
+                        std::to_string(confirmation.runs) + ")");
+    std::printf("            %d %s%s\n", confirmation.runs,
+                confirmation.runs == 1 ? "search" : "searches from independent starts",
+                confirmation.runs > 1
+                    ? (" (up to " + std::to_string(confirmation.maxRuns) + " while no two agree)").c_str()
+                    : "");
     fm::cli::ProgressBar bar(isatty(fileno(stderr)) != 0);
-    const fm::RegistrationResult result = registration.run(
-        start.toArray(), [&](const fm::RegistrationProgress& p) { bar.update(p); });
+    const fm::ConfirmedSearch confirmed = fm::runConfirmed(
+        registration, start.toArray(), confirmation, [&](const fm::RegistrationProgress& p) { bar.update(p); });
     bar.finish();
+    const fm::RegistrationResult& result = confirmed.answer;
     const fm::Pose finalPose = result.pose();
 
     std::printf("\nfinal pose  %s\n", fm::formatPose(finalPose).c_str());
@@ -310,10 +324,29 @@ void runRegister(const RegisterArgs& a, bool similarityGiven, int frame) {
             "out-of-plane %.3f mm; %zu targets)\n",
             before.meanMm, after.meanMm, after.meanInPlaneMm, after.meanDepthMm, targets.size());
     }
-    std::printf("time        %.3f s (%d evaluations, %.2f ms each)%s\n", result.seconds,
-                result.evaluations, 1000.0 * result.seconds / std::max(1, result.evaluations),
-                result.stopped ? " (stopped)" : "");
+    std::printf("time        %.3f s (%d evaluations in %zu %s, %.2f ms each)%s\n", result.seconds,
+                result.evaluations, confirmed.runs.size(), confirmed.runs.size() == 1 ? "search" : "searches",
+                1000.0 * result.seconds / std::max(1, result.evaluations), result.stopped ? " (stopped)" : "");
     std::printf("speed       %s\n", fm::describeEvaluations(result.profile, settings.threads).c_str());
+    // How sure, without the truth: the searches' agreement; for a reference this CT rendered, the
+    // similarity against a perfect match's; the curvature at the answer.
+    fm::AnswerEvidence evidence;
+    evidence.runs = static_cast<int>(confirmed.runs.size());
+    evidence.agreeing = confirmed.agreeing;
+    evidence.stopped = result.stopped;
+    if (confirmed.uncertainty.measured()) {
+        evidence.uncertainty = confirmed.uncertainty;
+        static const std::array<const char*, 6> names{"offset u", "offset v", "offset depth", "azimuth",
+                                                      "elevation", "rotation"};
+        std::printf("uncertainty %s (the CT offset along the start camera's axes)\n",
+                    fm::describeUncertainty(confirmed.uncertainty, &names).c_str());
+    }
+    if (synthetic) {
+        evidence.similarityRatio = result.similarity / registration.referenceSelfSimilarity();
+        evidence.similarityReference = "a perfect match's";
+        evidence.confirmedRatio = fm::kConfirmedPerfectMatchRatio;
+    }
+    std::printf("verdict     %s\n", fm::judgeEvidence(evidence).text.c_str());
 }
 
 FM_REGISTER_COMMAND("register", 40, [](CLI::App& app) {

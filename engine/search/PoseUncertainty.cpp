@@ -98,15 +98,16 @@ PoseUncertainty poseUncertainty(const Registration& registration, const ScenePar
         costResolution);
 }
 
-std::string describeUncertainty(const PoseUncertainty& u) {
+std::string describeUncertainty(const PoseUncertainty& u, const std::array<const char*, 6>* names) {
+    const auto name = [&](int i) { return names ? (*names)[static_cast<std::size_t>(i)] : searchCoordinateName(i); };
     std::string text;
     char part[64];
     for (int i = 0; i < kN; ++i) {
         if (std::isfinite(u.sd[i]))
-            std::snprintf(part, sizeof part, "%s%s %.3g %s", i ? ", " : "", searchCoordinateName(i), u.sd[i],
+            std::snprintf(part, sizeof part, "%s%s %.3g %s", i ? ", " : "", name(i), u.sd[i],
                           i < 3 ? "mm" : "deg");
         else
-            std::snprintf(part, sizeof part, "%s%s not fixed", i ? ", " : "", searchCoordinateName(i));
+            std::snprintf(part, sizeof part, "%s%s not fixed", i ? ", " : "", name(i));
         text += part;
     }
     const std::vector<int> weak = u.weak();
@@ -114,7 +115,7 @@ std::string describeUncertainty(const PoseUncertainty& u) {
         text += "; weakly fixed:";
         for (std::size_t k = 0; k < weak.size(); ++k) {
             text += k ? ", " : " ";
-            text += searchCoordinateName(weak[k]);
+            text += name(weak[k]);
         }
     }
     return text;

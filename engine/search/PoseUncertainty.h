@@ -58,6 +58,7 @@ PoseUncertainty poseUncertainty(const Registration& registration, const ScenePar
 
 // "u 0.03 mm, v 0.04 mm, depth 2.1 mm, about u 0.4 deg, about v 0.3 deg, about view 0.05 deg;
 // weakly fixed: depth"
-std::string describeUncertainty(const PoseUncertainty& u);
+// `names` replace the camera-frame names (the 2011 pose searches azimuth, elevation, rotation).
+std::string describeUncertainty(const PoseUncertainty& u, const std::array<const char*, 6>* names = nullptr);
 
 }  // namespace fm

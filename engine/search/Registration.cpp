@@ -354,7 +354,8 @@ double Registration::cost(const SceneParams& params, int level) const {
 
 RegistrationResult Registration::run(const SceneParams& start,
                                      const RegistrationCallback& progress,
-                                     const std::atomic<bool>* stop) const {
+                                     const std::atomic<bool>* stop,
+                                     std::optional<std::uint64_t> seed) const {
     const auto t0 = std::chrono::steady_clock::now();
     const EvaluationProfile clockAtStart = clockReading();
     // The search coordinates of a stage are taken around its anchor: the registration's start
@@ -375,7 +376,7 @@ RegistrationResult Registration::run(const SceneParams& start,
                           : parameterization_->fromSearchPoint(anchor, point);
     };
     RegistrationResult result;
-    Rng seeds(settings_.seed);
+    Rng seeds(seed.value_or(settings_.seed));
     Point current(6, 0.0);
     int evaluationsBefore = 0;
     const int budget = totalBudget();

@@ -161,8 +161,10 @@ class Registration {
     Registration(Scene scene, SceneParameterizationPtr parameterization,
                  std::vector<RegistrationView> views, RegistrationSettings settings);
 
+    // `seed` replaces the settings' (independent searches of one prepared registration).
     RegistrationResult run(const SceneParams& start, const RegistrationCallback& progress = {},
-                           const std::atomic<bool>* stop = nullptr) const;
+                           const std::atomic<bool>* stop = nullptr,
+                           std::optional<std::uint64_t> seed = std::nullopt) const;
 
     // Sum over the views of -similarity of `params` at level `level` (what the optimizers
     // minimise).

@@ -7,7 +7,6 @@
 
 #include "core/Error.h"
 #include "core/Parallel.h"
-#include "core/Random.h"
 #include "scene/ObjectPoseParameterization.h"
 #include "xray/CameraPoseDifference.h"
 
@@ -45,14 +44,7 @@ RigidTransform confirmationStart(const ProjectionGeometry& camera, const RigidTr
                                  const ConfirmationSettings& confirmation, int run) {
     if (run <= 0) return start;
     const ObjectPoseParameterization at("object", camera, start, pivot, DepthSearch::AlongRay);
-    Rng rng(settings.seed * 0x9E3779B97F4A7C15ull + static_cast<std::uint64_t>(run));
-    const auto& radius = settings.searchRadius;
-    const double spread = confirmation.startSpread;
-    std::array<double, 6> point{};
-    const double r = std::sqrt(rng.uniform()), a = 2.0 * M_PI * rng.uniform();
-    point[0] = spread * radius[0] * r * std::cos(a);
-    point[1] = spread * radius[1] * r * std::sin(a);
-    for (int i = 2; i < 6; ++i) point[i] = spread * radius[i] * rng.uniform(-1.0, 1.0);
+    const SearchPoint point = confirmationPoint(settings, confirmation, run);
     return at.worldFromObject(at.fromSearchPoint(at.referenceParams(), point));
 }
 

@@ -16,21 +16,12 @@
 #include <functional>
 #include <vector>
 
+#include "search/ConfirmedSearch.h"
 #include "xray/AnswerCheck.h"
 #include "xray/ObjectRegistration.h"
 
 namespace fm {
 
-struct ConfirmationSettings {
-    int runs = 2;     // searches per object at first (1 = the search alone, unconfirmed)
-    int maxRuns = 4;  // at most this many while no two agree
-    // Run r >= 1 starts at the start moved by a seeded draw: in-plane within a disc, depth and
-    // each angle uniformly, each within startSpread x the search radius of that coordinate.
-    double startSpread = 1.0;
-    double agreeInPlaneMm = 1.0;  // the success bounds for one view
-    double agreeRotationDeg = 2.0;
-    bool uncertainty = true;  // step 4 (73 evaluations at the finest level)
-};
 
 struct ConfirmedObject {
     // The best run; evaluations, seconds and profile are the runs' sums (the uncertainty's

@@ -83,14 +83,21 @@ std::shared_ptr<const XrayModel> loadImplant(const Implant& implant) {
 }
 
 // The truth perturbed in the camera's frame: in-plane within a 5 mm disc, depth within
-// +-20 mm, each rotation within +-5 deg.
+// +-20 mm, each rotation within +-5 deg; all times FM_REAL_XRAY_SPREAD (default 1: the issue's
+// range; docs/real-xray.md measures the verdict on wider starts, where searches miss).
+double spread() {
+    const char* env = std::getenv("FM_REAL_XRAY_SPREAD");
+    return env ? std::clamp(std::atof(env), 0.1, 10.0) : 1.0;
+}
+
 RigidTransform perturbed(const ObjectPoseParameterization& p, Rng& rng) {
     SceneParams q = p.referenceParams();
-    const double r = 5.0 * std::sqrt(rng.uniform()), a = 2.0 * M_PI * rng.uniform();
+    const double k = spread();
+    const double r = k * 5.0 * std::sqrt(rng.uniform()), a = 2.0 * M_PI * rng.uniform();
     q[0] += r * std::cos(a);
     q[1] += r * std::sin(a);
-    q[2] += rng.uniform(-20.0, 20.0);
-    for (int i = 3; i < 6; ++i) q[i] += rng.uniform(-5.0, 5.0);
+    q[2] += k * rng.uniform(-20.0, 20.0);
+    for (int i = 3; i < 6; ++i) q[i] += k * rng.uniform(-5.0, 5.0);
     return p.worldFromObject(q);
 }
 
@@ -183,20 +190,20 @@ TEST(RealXray, RegistrationFromPerturbedStartsReachesTheJtsPose) {
                 const PoseUncertainty& u = *c.evidence.uncertainty;
                 std::printf("%s %s start %d: from in-plane %.2f depth %+6.2f rot %.2f -> in-plane "
                             "%.3f mm, depth %+7.3f mm, rotation %.3f deg (view %+.3f, out %.3f), "
-                            "IoU %.4f, %d runs %d agree, %s, sd depth %.2f mm, sd rot %.2f %.2f %.2f deg, "
+                            "IoU %.4f, similarity %.4f, %d runs %d agree, %s, sd depth %.2f mm, sd rot %.2f %.2f %.2f deg, "
                             "%d evals, %.2f s\n",
                             kFrames[f], implant.name, s, before.inPlaneMm, before.depthMm,
                             before.rotationDeg, d.inPlaneMm, d.depthMm, d.rotationDeg,
-                            d.inPlaneRotationDeg, d.outOfPlaneRotationDeg, iou, c.evidence.runs,
+                            d.inPlaneRotationDeg, d.outOfPlaneRotationDeg, iou, r.similarity, c.evidence.runs,
                             c.evidence.agreeing, toString(check.verdict), u.sd[2], u.sd[3], u.sd[4], u.sd[5],
                             r.evaluations, r.seconds);
                 std::fflush(stdout);
-                EXPECT_GE(iou, kMinIoU) << kFrames[f] << " " << implant.name << " start " << s;
+                if (spread() <= 1.0) EXPECT_GE(iou, kMinIoU) << kFrames[f] << " " << implant.name << " start " << s;
             }
         }
     }
     std::printf("met %d of %d; misses %d (each not ok), met but not ok %d\n", met_, total, misses, falseAlarms);
-    EXPECT_GE(met_, kMinMetShare * total) << met_ << " of " << total << " met";
+    if (spread() <= 1.0) EXPECT_GE(met_, kMinMetShare * total) << met_ << " of " << total << " met";
 }
 
 }  // namespace

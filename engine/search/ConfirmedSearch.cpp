@@ -1,0 +1,71 @@
+#include "search/ConfirmedSearch.h"
+
+#include <cmath>
+
+#include "core/Error.h"
+#include "core/Random.h"
+
+namespace fm {
+
+SearchPoint confirmationPoint(const RegistrationSettings& settings, const ConfirmationSettings& confirmation,
+                              int run) {
+    SearchPoint point{};
+    if (run <= 0) return point;
+    Rng rng(settings.seed * 0x9E3779B97F4A7C15ull + static_cast<std::uint64_t>(run));
+    const auto& radius = settings.searchRadius;
+    const double spread = confirmation.startSpread;
+    const double r = std::sqrt(rng.uniform()), a = 2.0 * M_PI * rng.uniform();
+    point[0] = spread * radius[0] * r * std::cos(a);
+    point[1] = spread * radius[1] * r * std::sin(a);
+    for (int i = 2; i < 6; ++i) point[i] = spread * radius[i] * rng.uniform(-1.0, 1.0);
+    return point;
+}
+
+bool parametersAgree(const SceneParams& a, const SceneParams& b, const ConfirmationSettings& bounds) {
+    const double dx = a[0] - b[0], dy = a[1] - b[1], dz = a[2] - b[2];
+    if (std::sqrt(dx * dx + dy * dy + dz * dz) > bounds.agreeInPlaneMm) return false;
+    for (int i = 3; i < 6; ++i) {
+        const double d = std::remainder(a[i] - b[i], 360.0);
+        if (std::abs(d) > bounds.agreeRotationDeg) return false;
+    }
+    return true;
+}
+
+ConfirmedSearch runConfirmed(const Registration& registration, const SceneParams& start,
+                             const ConfirmationSettings& confirmation, const RegistrationCallback& progress,
+                             const std::atomic<bool>* stop) {
+    if (confirmation.runs < 1 || confirmation.maxRuns < confirmation.runs)
+        throw Error("registration: confirmation runs must be at least 1 and at most maxRuns");
+    const RegistrationSettings& settings = registration.settings();
+    ConfirmedSearch out;
+    std::size_t best = 0;
+    for (int run = 0; run < confirmation.maxRuns && (run < confirmation.runs || out.agreeing < 2); ++run) {
+        if (run > 0 && stop && stop->load()) break;
+        const SceneParams from =
+            registration.parameterization().fromSearchPoint(start, confirmationPoint(settings, confirmation, run));
+        out.runs.push_back(registration.run(from, run == 0 ? progress : RegistrationCallback{}, stop,
+                                            settings.seed + static_cast<std::uint64_t>(run)));
+        best = 0;
+        for (std::size_t i = 1; i < out.runs.size(); ++i)
+            if (out.runs[i].similarity > out.runs[best].similarity) best = i;
+        out.agreeing = 0;
+        for (const RegistrationResult& r : out.runs)
+            out.agreeing += parametersAgree(out.runs[best].params, r.params, confirmation) ? 1 : 0;
+        if (out.runs.back().stopped) break;
+    }
+    out.answer = out.runs[best];
+    out.answer.evaluations = 0;
+    out.answer.seconds = 0.0;
+    out.answer.profile = {};
+    for (const RegistrationResult& r : out.runs) {
+        out.answer.evaluations += r.evaluations;
+        out.answer.seconds += r.seconds;
+        out.answer.profile += r.profile;
+        out.answer.stopped = out.answer.stopped || r.stopped;
+    }
+    if (confirmation.uncertainty && !out.answer.stopped)
+        out.uncertainty = poseUncertainty(registration, out.answer.params);
+    return out;
+}
+
+}  // namespace fm
