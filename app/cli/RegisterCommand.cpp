@@ -173,10 +173,14 @@ const std::vector<fm::cli::CommandMode>& registerModes() {
         for (std::string& name : fm::cli::optionNames(
                  [&](CLI::App* c) { fm::cli::addXrayRegisterOptions(c, scratchXray); }))
             xray.push_back(std::move(name));
+        // The tracker's search: its own settings, seeded; the radiograph flags over the trial's
+        // preparation of its frames.
+        fm::cli::RadiographOptions scratchPrep;
+        const std::vector<std::string> trialOptions = fm::cli::optionNames(
+            [&](CLI::App* c) { fm::cli::addRadiographOptions(c, scratchPrep); },
+            {"trial", "bone", "frame", "cameras", "start", "out", "seed", "threads"});
         return std::vector<fm::cli::CommandMode>{
-            // The tracker's search: its own settings, seeded.
-            {"register --trial", "one bone in one frame of a trial, in its cameras",
-             {"trial", "bone", "frame", "cameras", "start", "out", "seed", "threads"}},
+            {"register --trial", "one bone in one frame of a trial, in its cameras", trialOptions},
             {"register --model", "models in a real radiograph", xray},
             {"register --slice", "a 2D image against slices of a volume",
              withSearch({"slice", "volume", "reference-pose", "reference", "start", "truth", "size",
@@ -377,6 +381,7 @@ FM_REGISTER_COMMAND("register", 40, [](CLI::App& app) {
             trial->out = a->xray.outs.empty() ? std::string() : a->xray.outs[0];
             trial->seed = a->search.seed;
             trial->threads = a->search.threads;
+            trial->prep = a->xray.prep;
             fm::cli::runTrialRegister(*trial);
         } else {
             // --frame is shared: the trial's frame, or the row of --start/--out pose files.

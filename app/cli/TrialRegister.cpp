@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "cli/CameraList.h"
+#include "cli/TrialPreparationOptions.h"
 #include "core/Error.h"
 #include "io/OutputPath.h"
 #include "pose/AutoscoperTra.h"
@@ -30,8 +31,9 @@ void runTrialRegister(const TrialRegisterArgs& a) {
         io::checkOutputPath(a.out, "--out");
     }
     const Trial trial = readTrial(a.trial);
-    const TrialScene scene = loadTrialScene(trial, {a.bone}, a.threads);
+    const TrialScene scene = loadPreparedTrialScene(trial, {a.bone}, a.threads, a.prep);
     for (const std::string& w : scene.trial.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+    printTrialPreparations(scene);
     if (a.frame >= scene.frameCount)
         throw Error("--frame " + std::to_string(a.frame) + ": the trial has frames 0.." +
                     std::to_string(scene.frameCount - 1));
@@ -56,7 +58,7 @@ void runTrialRegister(const TrialRegisterArgs& a) {
     TrackSettings settings;
     settings.registration.seed = a.seed;
     settings.registration.threads = a.threads;
-    const Tracker tracker(scene.scene, a.bone, trialFrameViews(scene, defaultTrialPreparation(), cameras),
+    const Tracker tracker(scene.scene, a.bone, trialFrameViews(scene, cameras),
                           settings);
     const FrameRecord r = tracker.trackFrame(a.frame, *start);
     if (r.status != FrameRecord::Status::Tracked)

@@ -5,6 +5,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "cli/RadiographOptions.h"
+
 namespace fm::cli {
 
 struct TrialRegisterArgs {
@@ -16,6 +18,7 @@ struct TrialRegisterArgs {
     std::string out;      // .tra with the result at --frame
     std::uint64_t seed = 1;
     int threads = 0;
+    RadiographOptions prep;  // over the trial's preparation of every camera (register's flags)
 };
 
 void addTrialRegisterOptions(CLI::App* cmd, TrialRegisterArgs& args);

@@ -95,7 +95,7 @@ void bindTrack(pb::module_& m) {
                         : (std::filesystem::path(out).parent_path() /
                            (std::filesystem::path(out).stem().string() + "_" + bone + ".tra")).string();
                 const Tracker tracker(sceneOfBoneAlone(scene, bone), bone,
-                                      trialFrameViews(scene, defaultTrialPreparation(), cameras), settings);
+                                      trialFrameViews(scene, cameras), settings);
                 TraFile tra;
                 tra.frames.assign(static_cast<std::size_t>(scene.frameCount), {std::nullopt});
                 std::vector<FrameRecord> records;
