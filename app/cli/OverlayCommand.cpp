@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "cli/CommandRegistry.h"
+#include "cli/TrialPreparationOptions.h"
 #include "core/Error.h"
 #include "io/AtomicFile.h"
 #include "io/OutputPath.h"
@@ -28,6 +29,7 @@ struct OverlayArgs {
     int frame = 0;
     std::string out;  // prefix.png -> prefix_cam1.png, prefix_cam2.png, ...
     int threads = 0;
+    fm::cli::RadiographOptions prep;  // as given to track: over the trial's preparation
 };
 
 fs::path outFor(const fs::path& out, std::size_t camera) {
@@ -42,7 +44,8 @@ void runOverlay(const OverlayArgs& a) {
     fm::io::checkOutputPath(a.out, "--out");
     const fm::Trial trial = fm::readTrial(a.trial);
     for (const std::string& b : a.bones) trial.bone(b);
-    fm::TrialScene scene = fm::loadTrialScene(trial, a.bones, a.threads);
+    fm::TrialScene scene = fm::cli::loadPreparedTrialScene(trial, a.bones, a.threads, a.prep);
+    fm::cli::printTrialPreparations(scene);
     if (a.frame < 0 || a.frame >= scene.frameCount)
         throw fm::Error("--frame " + std::to_string(a.frame) + ": the trial has frames 0.." +
                         std::to_string(scene.frameCount - 1));
@@ -61,7 +64,7 @@ void runOverlay(const OverlayArgs& a) {
         scene.scene.object(a.bones[b]).worldFromObject =
             fm::objectPoseFromTra(scene, a.bones[b], *tra.frames[static_cast<std::size_t>(a.frame)][object]);
     }
-    const auto views = fm::trialFrameViews(scene, fm::defaultTrialPreparation())(a.frame);
+    const auto views = fm::trialFrameViews(scene)(a.frame);
     for (const fm::RegistrationView& v : views) {
         std::vector<fm::OverlayOutline> outlines;
         for (std::size_t b = 0; b < a.bones.size(); ++b)
@@ -88,6 +91,7 @@ FM_REGISTER_COMMAND("overlay", 46, [](CLI::App& app) {
     cmd->add_option("--frame", a->frame, "Frame (0-based)")->capture_default_str();
     cmd->add_option("--out", a->out, "PNG name; one file per camera: NAME_cam1.png, NAME_cam2.png, ...")->required();
     cmd->add_option("--threads", a->threads, "Threads (0 = all cores)")->capture_default_str();
+    fm::cli::addRadiographOptions(cmd, a->prep);
     cmd->callback([a] { runOverlay(*a); });
     return cmd;
 });

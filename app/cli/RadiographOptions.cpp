@@ -18,7 +18,8 @@ void addRadiographOptions(CLI::App* cmd, RadiographOptions& o) {
     cmd->add_option("--exclude-below", o.excludeBelow,
                     "Pixels with stored values <= V carry no image (undistortion border, collimator)");
     cmd->add_option("--erode", o.erode, "Grow the excluded region by N pixels (with --exclude-below)")
-        ->capture_default_str();
+        ->capture_default_str()
+        ->each([&o](const std::string&) { o.erodeGiven = true; });
     cmd->add_option("--roi", o.roi, "Region of interest x,y,w,h in pixels (column, row of its top-left corner)");
 }
 

@@ -15,6 +15,7 @@ struct RadiographOptions {
     std::string i0;  // number > 0; empty = the full scale
     std::string excludeBelow;  // number; empty = keep every pixel
     int erode = 3;
+    bool erodeGiven = false;  // --erode was on the command line (a trial's own erosion otherwise)
     std::string roi;  // "x,y,w,h"
 };
 

@@ -175,10 +175,15 @@ const std::vector<fm::cli::CommandMode>& registerModes() {
         for (std::string& name : fm::cli::optionNames(
                  [&](CLI::App* c) { fm::cli::addXrayRegisterOptions(c, scratchXray); }))
             xray.push_back(std::move(name));
+        // The tracker's search: its own settings, seeded; the radiograph flags over the trial's
+        // preparation of its frames.
+        fm::cli::RadiographOptions scratchPrep;
+        const std::vector<std::string> trialOptions = fm::cli::optionNames(
+            [&](CLI::App* c) { fm::cli::addRadiographOptions(c, scratchPrep); },
+            {"trial", "bone", "frame", "cameras", "start", "out", "seed", "threads", "runs", "max-runs"});
         return std::vector<fm::cli::CommandMode>{
-            // The tracker's search: its own settings, seeded.
-            {"register --trial", "one bone in one frame of a trial, in its cameras",
-             {"trial", "bone", "frame", "cameras", "start", "out", "seed", "threads", "runs", "max-runs"}},
+            // The tracker's search, seeded; the radiograph flags over the trial's preparation.
+            {"register --trial", "one bone in one frame of a trial, in its cameras", trialOptions},
             {"register --model", "models in a real radiograph", xray},
             {"register --slice", "a 2D image against slices of a volume",
              withSearch({"slice", "volume", "reference-pose", "reference", "start", "truth", "size",
@@ -412,6 +417,7 @@ FM_REGISTER_COMMAND("register", 40, [](CLI::App& app) {
             trial->threads = a->search.threads;
             trial->runs = a->xray.runs;
             trial->maxRuns = a->xray.maxRuns;
+            trial->prep = a->xray.prep;
             fm::cli::runTrialRegister(*trial);
         } else {
             // --frame is shared: the trial's frame, or the row of --start/--out pose files.

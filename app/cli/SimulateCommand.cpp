@@ -36,6 +36,7 @@ struct SimulateArgs {
     double scatter = 0.1;
     std::uint64_t seed = 1;
     int threads = 0;
+    std::string signal = "log";
     std::string out;
 };
 
@@ -79,6 +80,7 @@ void runSimulate(const SimulateArgs& a, const CLI::App& cmd) {
     s.detector.scatterToPrimary = a.scatter;
     s.detector.seed = a.seed;
     s.detector.threads = a.threads;
+    s.logSignal = a.signal == "log";
     s.out = a.out;
     std::printf("ct        %s (%d x %d x %d), bone %s (labels %zu)\n", a.volume.c_str(), s.ct.dims.x, s.ct.dims.y,
                 s.ct.dims.z, s.boneName.c_str(), s.boneLabels.size());
@@ -92,7 +94,12 @@ void runSimulate(const SimulateArgs& a, const CLI::App& cmd) {
     });
     std::printf("images    %d frames x %zu cameras, %.3f s per image\n", r.frames, r.cameras, r.secondsPerImage);
     for (std::size_t c = 0; c < r.referenceLevels.size(); ++c)
-        std::printf("exposure  camera %zu: the anatomy's median I/I0 %.4g reads 20000 counts\n", c + 1, r.referenceLevels[c]);
+        std::printf("exposure  camera %zu: the anatomy's median I/I0 %.4g gets %g photons per pixel\n", c + 1,
+                    r.referenceLevels[c], a.photons);
+    for (std::size_t c = 0; c < r.preparations.size(); ++c)
+        std::printf("signal    camera %zu: %s; the trial says: prepare as %s\n", c + 1,
+                    s.logSignal ? "60000 - 4096 (-ln I/I0), dense matter dark" : "counts proportional to I",
+                    fm::framePreparationText(r.preparations[c]).c_str());
     std::printf("wrote     %s (track --trial; the cameras, frames and bone beside it) and %s (Autoscoper)\n",
                 r.trial.string().c_str(), r.config.string().c_str());
     std::printf("wrote     %s (the truth, Autoscoper's volume frame) and %s (frame 0 only: --start)\n",
@@ -128,6 +135,12 @@ FM_REGISTER_COMMAND("simulate", 48, [](CLI::App& app) {
     cmd->add_option("--scatter", a->scatter, "Scatter-to-primary ratio")->check(CLI::Range(0.0, 20.0))->capture_default_str();
     cmd->add_option("--seed", a->seed, "Noise seed (the same trial for the same seed)")->capture_default_str();
     cmd->add_option("--threads", a->threads, "Threads (0 = all cores)")->capture_default_str();
+    cmd->add_option("--signal", a->signal,
+                    "The frames' values: log (60000 - 4096 (-ln I/I0), dense matter dark: video "
+                    "fluoroscopy; the trial says invert) or linear (50000 I/I0 counts: a raw flat panel; "
+                    "the trial says log, I0 50000)")
+        ->check(CLI::IsMember({"log", "linear"}))
+        ->capture_default_str();
     cmd->add_option("--out", a->out, "Folder to write the trial to")->required();
     cmd->callback([a, cmd] { runSimulate(*a, *cmd); });
     return cmd;

@@ -21,6 +21,7 @@
 #include "cli/NumberChecks.h"
 #include "cli/TrackCsv.h"
 #include "cli/ValueChecks.h"
+#include "cli/TrialPreparationOptions.h"
 #include "core/Error.h"
 #include "distributed/JobRunner.h"
 #include "distributed/ProcessTransport.h"
@@ -53,6 +54,7 @@ struct TrackArgs {
     std::string cameras;  // "1,2" (1-based), empty = all
     std::string onLost = "search";
     bool uncertainty = true;
+    fm::cli::RadiographOptions prep;  // over the trial's preparation of every camera
 };
 
 // poses.tra -> poses_radius.tra when several bones share one --out.
@@ -141,10 +143,12 @@ void runTrack(const TrackArgs& a) {
     if (a.bones.empty())
         throw fm::Error("--bone NAME is required (the trial's bones: see its file)");
     for (const std::string& b : a.bones) trial.bone(b);  // names the bones it has otherwise
-    const fm::TrialScene scene = fm::loadTrialScene(trial, a.bones, threads);
-    if (writer)
+    const fm::TrialScene scene = fm::cli::loadPreparedTrialScene(trial, a.bones, threads, a.prep);
+    if (writer) {
         for (const std::string& w : scene.trial.warnings)
             std::fprintf(stderr, "warning: %s\n", w.c_str());
+        fm::cli::printTrialPreparations(scene);
+    }
     const std::vector<std::size_t> cameras = fm::cli::parseCameraList(a.cameras, scene.cameras.size());
     const std::vector<int> frames = fm::parseFrameRange(
         a.frames.empty() ? "0:" + std::to_string(scene.frameCount - 1) : a.frames, scene.frameCount,
@@ -194,7 +198,7 @@ void runTrack(const TrackArgs& a) {
     std::vector<fm::Tracker> trackers;
     for (const BoneRun& b : bones)
         trackers.emplace_back(fm::sceneOfBoneAlone(scene, b.name), b.name,
-                              fm::trialFrameViews(scene, fm::defaultTrialPreparation(), cameras),
+                              fm::trialFrameViews(scene, cameras),
                               settings);
 
     const std::size_t frameBytes = fm::frameRecordBytes(scene.cameras.size());
@@ -392,6 +396,7 @@ FM_REGISTER_COMMAND("track", 45, [](CLI::App& app) {
                   "Per frame, how well the images fix each coordinate (73 evaluations at full "
                   "resolution; in the CSV)")
         ->capture_default_str();
+    fm::cli::addRadiographOptions(cmd, a->prep);  // each given flag over every camera's preparation
     cmd->callback([a] { runTrack(*a); });
     return cmd;
 });

@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "cli/CameraList.h"
+#include "cli/TrialPreparationOptions.h"
 #include "core/Error.h"
 #include "io/OutputPath.h"
 #include "pose/AutoscoperTra.h"
@@ -36,8 +37,9 @@ void runTrialRegister(const TrialRegisterArgs& a) {
         io::checkOutputPath(a.out, "--out");
     }
     const Trial trial = readTrial(a.trial);
-    const TrialScene scene = loadTrialScene(trial, {a.bone}, a.threads);
+    const TrialScene scene = loadPreparedTrialScene(trial, {a.bone}, a.threads, a.prep);
     for (const std::string& w : scene.trial.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+    printTrialPreparations(scene);
     if (a.frame >= scene.frameCount)
         throw Error("--frame " + std::to_string(a.frame) + ": the trial has frames 0.." +
                     std::to_string(scene.frameCount - 1));
@@ -65,7 +67,7 @@ void runTrialRegister(const TrialRegisterArgs& a) {
     TrackSettings settings;
     settings.registration.seed = a.seed;
     settings.registration.threads = a.threads;
-    const FrameViews views = trialFrameViews(scene, defaultTrialPreparation(), cameras);
+    const FrameViews views = trialFrameViews(scene, cameras);
     // A keyframe at this frame is the user's pose: its similarity is what the answer must reach.
     FrameContext context;
     context.startIsKeyframe = a.start.empty();

@@ -5,6 +5,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "cli/RadiographOptions.h"
+
 namespace fm::cli {
 
 struct TrialRegisterArgs {
@@ -18,6 +20,7 @@ struct TrialRegisterArgs {
     int threads = 0;
     int runs = 2;     // searches from independent starts (register's --runs)
     int maxRuns = 4;  // --max-runs
+    RadiographOptions prep;  // over the trial's preparation of every camera (register's flags)
 };
 
 void addTrialRegisterOptions(CLI::App* cmd, TrialRegisterArgs& args);

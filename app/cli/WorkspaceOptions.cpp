@@ -1,5 +1,6 @@
 #include "cli/WorkspaceOptions.h"
 
+#include "cli/TrialPreparationOptions.h"
 #include "cli/ValueChecks.h"
 #include "core/Error.h"
 #include "pose/AutoscoperTra.h"
@@ -36,11 +37,8 @@ app::WorkspaceSource workspaceSource(const WorkspaceArgs& a) {
     if (!a.trial.empty()) {
         if (!a.camera.empty() || !a.models.empty() || !a.starts.empty() || !a.masks.empty())
             throw Error("--camera, --model, --start and --mask go with --reference (a trial names its own)");
-        const RadiographOptions none;
-        if (a.prep.invert || a.prep.log || a.prep.i0 != none.i0 || !a.prep.excludeBelow.empty() ||
-            a.prep.erode != none.erode || !a.prep.roi.empty())
-            throw Error("--invert, --log, --i0, --exclude-below, --erode and --roi go with --reference: a "
-                        "trial's radiographs are prepared as tracking prepares them");
+        // The flags over the trial's preparation of every camera, as track takes them.
+        s.trialOverride = preparationOverride(a.prep);
         s.trial = a.trial;
         return s;
     }

@@ -3,6 +3,8 @@
 #  1. the trial it writes (trial.json, and trial.cfg for Autoscoper) is tracked by `track` from
 #     the first frame's truth, and `compare` finds every frame within 0.5 mm and 0.5 deg of the
 #     truth it wrote (the truth, the frames and the trial agree on every frame convention);
+#     Raw detector intensities (--signal linear) make a trial that says "log, I0 50000" in both
+#     files, and tracked with it every frame is within 0.25 mm and 0.25 deg;
 #  2. the same seed gives the same bytes on 1 and 2 threads, another seed other frames;
 #  3. refusals: camera placement options with --cameras, a volume not in HU, an unknown bone,
 #     a motion it cannot read.
@@ -14,7 +16,7 @@ fail() { echo "FAIL: $*"; exit 1; }
 sim() {  # sim OUT args...
     local out=$1; shift
     "$FM" simulate --volume phantom:knee --labels phantom:knee --bone femur --motion "rotate:axis=x,angle=0:20" \
-        --frames 5 --size 256x256 --out "$out" "$@"
+        --frames 5 --size "${SIZE:-256x256}" --out "$out" "$@"
 }
 
 out=$(sim "$T/a" --threads 2 2>/dev/null) || fail "simulate exited $?: $out"
@@ -34,6 +36,20 @@ grep -q "0.5 mm and 0.5 deg: 100.0 % (5 of 5)" <<<"$out" || fail "not every fram
 out=$("$FM" compare --truth "$T/a/femur_truth.tra" --tra "$T/a/tracked_cfg.tra" --trial "$T/a/trial.cfg" --bone femur) ||
     fail "compare (cfg) exited $?: $out"
 grep -q "0.5 mm and 0.5 deg: 100.0 % (5 of 5)" <<<"$out" || fail "trial.cfg: not every frame within 0.5 mm / 0.5 deg: $out"
+
+# Raw detector intensities: the trial says how to prepare them, track says it took that, and
+# every frame is within 0.25 mm / 0.25 deg (the worst centre and rotation errors of compare).
+SIZE=512x512 sim "$T/lin" --threads 2 --signal linear >/dev/null 2>&1 || fail "simulate --signal linear failed"
+grep -q '"values": "log"' "$T/lin/trial.json" || fail "trial.json does not say log: $(cat "$T/lin/trial.json")"
+[ "$(grep -c '^RadiographPreparation log i0=50000$' "$T/lin/trial.cfg")" -eq 2 ] || fail "trial.cfg: $(cat "$T/lin/trial.cfg")"
+out=$("$FM" track --trial "$T/lin/trial.cfg" --bone femur --start "$T/lin/femur_start.tra" --out "$T/lin/t.tra" 2>/dev/null) ||
+    fail "track (linear) failed: $out"
+grep -q "^cam2      frames prepared as log, -ln(I / I0), I0 = 50000  (the trial's)" <<<"$out" || fail "track did not say the trial's log: $out"
+out=$("$FM" compare --truth "$T/lin/femur_truth.tra" --tra "$T/lin/t.tra" --trial "$T/lin/trial.json" --bone femur) ||
+    fail "compare (linear) exited $?: $out"
+awk '/^  (centre|rotation) / && $5 + 0 > 0.25 {exit 1}' <<<"$out" ||
+    fail "raw intensities, log-prepared: a frame beyond 0.25 mm / 0.25 deg: $out"
+[ "$(grep -c -E '^  (centre|rotation) ' <<<"$out")" -eq 2 ] || fail "compare's table changed: $out"
 
 sim "$T/b" --threads 1 >/dev/null 2>&1 || fail "1 thread"
 sim "$T/c" --threads 2 --seed 2 >/dev/null 2>&1 || fail "seed 2"

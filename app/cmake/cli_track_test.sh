@@ -131,6 +131,16 @@ expect_error "names camera 1 twice" "$FM" register --trial "$TRIAL" --bone radiu
 R=(register --trial "$TRIAL" --bone radius --frame 0 --threads 2)
 "$FM" "${R[@]}" --out "$T/reg0.tra" > "$T/out" 2>&1 || { cat "$T/out"; fail "register --trial --out failed"; }
 grep -q "^start       the trial's keyframe" "$T/out" || { cat "$T/out"; fail "the keyframe start is not said"; }
+# How each camera's frames are prepared, and why, is said (the wrist's 8-bit frames: inverted);
+# the radiograph flags replace their part of it, spelt as radiograph and register --reference spell them.
+grep -q "^cam02     frames prepared as inverted (255 - value); values <= 0 excluded, grown 3 px  (default for 8-bit frames: a display signal, dense matter dark)" "$T/out" ||
+    { cat "$T/out"; fail "the default preparation is not said"; }
+"$FM" "${R[@]}" --cameras 1 --log --i0 250 > "$T/out" 2>&1 || { cat "$T/out"; fail "register --trial --log failed"; }
+grep -q "^cam01     frames prepared as log, -ln(I / I0), I0 = 250; values <= 0 excluded, grown 3 px  (--log --i0 250 over default for 8-bit" "$T/out" ||
+    { cat "$T/out"; fail "--log did not replace the values' part only"; }
+expect_error "--invert with --log" "$FM" "${R[@]}" --invert --log
+expect_error "--i0 applies to --log only" "$FM" "${R[@]}" --i0 200
+expect_error "roi 0,0,4000,10 (--roi 0,0,4000,10 over default" "$FM" "${R[@]}" --roi 0,0,4000,10
 awk -F, 'NR==1 && $1=="NaN" {exit 1} NR>1 && $1!="NaN" {exit 1}' "$T/reg0.tra" || fail "reg0.tra: frame 0 only"
 "$FM" "${R[@]}" --start "$T/reg0.tra" --out "$T/reg1.tra" > "$T/out" 2>&1 || { cat "$T/out"; fail "register --trial --start failed"; }
 grep -q "^start       $T/reg0.tra at this frame" "$T/out" || { cat "$T/out"; fail "--start was not used"; }
@@ -146,7 +156,7 @@ usage_error() {  # usage_error TEXT command...: exit 2 naming TEXT, nothing regi
 usage_error "unknown option --start-tra" "$FM" "${R[@]}" --start-tra "$T/reg0.tra"
 usage_error "unknown option --out-tra" "$FM" "${R[@]}" --out-tra "$T/x.tra"
 usage_error "volume does not apply to register --trial" "$FM" "${R[@]}" --volume phantom:knee
-usage_error "method, --invert do not apply to register --trial" "$FM" "${R[@]}" --method pso --invert
+usage_error "method, --page do not apply to register --trial" "$FM" "${R[@]}" --method pso --page 1
 usage_error "out does not apply to register (a CT" "$FM" register --reference-pose 1,2,3,4,5,6 --out "$T/x.jts"
 usage_error "frame does not apply to register (a CT" "$FM" register --reference-pose 1,2,3,4,5,6 --frame 2
 usage_error "size does not apply to register (a CT" "$FM" register --reference-pose 1,2,3,4,5,6 --size 64x64

@@ -24,6 +24,9 @@ TRIAL="$REPO/data/trials/jtml-knee.json"
 "$FM" screenshot --trial "$TRIAL" --out "$OUT/a.png" --threads 2 >/dev/null || fail "screenshot --trial exited $?"
 "$FM" screenshot --trial "$TRIAL" --out "$OUT/b.png" --threads 2 >/dev/null || fail "second screenshot exited $?"
 cmp -s "$OUT/a.png" "$OUT/b.png" || fail "two screenshots of the trial differ"
+# The radiograph flags over the trial's preparation reach the workspace: log-prepared frames look otherwise.
+"$FM" screenshot --trial "$TRIAL" --log --out "$OUT/log.png" --threads 2 >/dev/null || fail "screenshot --trial --log exited $?"
+cmp -s "$OUT/a.png" "$OUT/log.png" && fail "--log did not change the trial's prepared frames"
 python3 - "$OUT/a.png" <<'PY' || fail "not a 1280 x 800 PNG"
 import struct, sys
 d = open(sys.argv[1], "rb").read(24)
@@ -59,7 +62,7 @@ printf 'solid o\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nver
 expect_error "open mesh" open.stl app --reference "$D/AT_K1_V1_0160.tif" --camera "$D/calibration.txt" \
     --model "$OUT/open.stl"
 expect_error "no camera" "--camera" app --reference "$D/AT_K1_V1_0160.tif" --model "$D/KR_right_7_fem.stl"
-expect_error "flags with a trial" "--reference" app --trial "$TRIAL" --invert
+expect_error "flags with a trial: both values" "--invert with --log" app --trial "$TRIAL" --invert --log
 expect_error "frame out of range" "--frame 5" app --trial "$TRIAL" --frame 5
 # A file the user gave is named by its option, not as part of a one-camera "trial 'X.tif'".
 for args in "--camera $OUT/missing.txt --model $D/KR_right_7_fem.stl|--camera: file not found: '$OUT/missing.txt'" \

@@ -95,7 +95,7 @@ void TrackRunner::start(std::shared_ptr<const TrialScene> trial, TrackRequest re
             throw Error("track: keyframe at frame " + std::to_string(f) + " is outside the trial");
     // Built here, so that a bad request fails before the running run is stopped.
     auto tracker = std::make_shared<const Tracker>(
-        std::move(alone), request.bone, trialFrameViews(*trial, defaultTrialPreparation()),
+        std::move(alone), request.bone, trialFrameViews(*trial),
         request.settings);
 
     stop();

@@ -37,6 +37,9 @@ void saveTra(const std::filesystem::path& path, const TrialScene& trial, const s
 
 Trial trialWithKeyframes(const TrialScene& trial, const std::map<std::string, BonePoses>& poses) {
     Trial out = trial.trial;
+    // Each camera's frames as they are prepared now (the workspace's invert / log toggles).
+    for (std::size_t c = 0; c < out.cameras.size() && c < trial.preparations.size(); ++c)
+        out.cameras[c].preparation = trial.preparations[c].spec;
     for (const auto& [bone, bonePoses] : poses) {
         checkSpan(trial, bone, bonePoses);
         std::vector<TrialPose>& list = out.keyframes[bone];

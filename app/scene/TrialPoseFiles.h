@@ -20,7 +20,7 @@ void saveTra(const std::filesystem::path& path, const TrialScene& trial, const s
              const BonePoses& poses);
 
 // The trial with the keyframes of the bones in `poses` replaced by theirs (other bones keep the
-// trial's), then written as our JSON (paths relative to the new file's folder).
+// trial's) and each camera's preparation as trial.preparations has it, then written as our JSON (paths relative to the new file's folder).
 Trial trialWithKeyframes(const TrialScene& trial, const std::map<std::string, BonePoses>& poses);
 void saveTrialJson(const std::filesystem::path& path, const TrialScene& trial,
                    const std::map<std::string, BonePoses>& poses);

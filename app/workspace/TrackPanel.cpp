@@ -123,7 +123,7 @@ void WorkspaceUi::trackPane(WorkspaceState& state, const Pane& pane) {
     ImGui::SameLine();
     if (ImGui::Button("Save keyframes")) r.saveKeyframes = true;
     record("button:save-keyframes");
-    if (ImGui::IsItemHovered()) tooltip("Write the trial as our JSON with every object's keyframes");
+    if (ImGui::IsItemHovered()) tooltip("Write the trial as our JSON with every object's keyframes and each camera's preparation (invert / log as set)");
     if (!t.message.empty() && elidedText(t.messageFailed ? kBad : kGood, t.message) && ImGui::IsItemHovered())
         tooltip(t.message);
 

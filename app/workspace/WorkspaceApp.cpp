@@ -67,9 +67,7 @@ WorkspaceApp::WorkspaceApp(RenderBackend& backend, std::shared_ptr<WorkspaceMode
         modelTextures_.push_back(std::make_unique<render::Texture>());
     }
     state_.tracking = model_->fromTrial();
-    state_.canPrepare = !model_->fromTrial();
-    state_.invert = model_->preparation().invert;
-    state_.logTransform = model_->preparation().logTransform;
+    syncCameraValues();
     if (state_.tracking) tracking_.init(*model_, state_);
     syncControls();
     buildSurfaces();
@@ -158,12 +156,19 @@ void WorkspaceApp::processRequests() {
     if (r.save) save();
     if (r.undo) undo();
     if (r.preparation) {
-        if (state_.solve.running) {  // the worker reads the prepared frames
-            state_.invert = model_->preparation().invert;
-            state_.logTransform = model_->preparation().logTransform;
-            state_.error = "invert / log wait until the Solve ends";
+        if (state_.solve.running || state_.track.run.running) {  // the workers read the prepared frames
+            syncCameraValues();
+            state_.error = "invert / log wait until the Solve or Track ends";
         } else {
-            model_->setInvertAndLog(state_.invert, state_.logTransform);
+            try {
+                for (int c = 0; c < model_->cameraCount(); ++c) {
+                    const auto& v = state_.cameraValues.at(static_cast<std::size_t>(c));
+                    model_->setInvertAndLog(c, v.invert && !v.logTransform, v.logTransform);
+                }
+            } catch (const Error& e) {
+                state_.error = e.what();
+            }
+            syncCameraValues();
             ++state_.preparationVersion;
             autoWindowFrame_ = -1;  // a new value range
         }
@@ -263,9 +268,18 @@ void WorkspaceApp::save() {
     }
 }
 
+void WorkspaceApp::syncCameraValues() {
+    state_.cameraValues.assign(static_cast<std::size_t>(model_->cameraCount()), {});
+    for (int c = 0; c < model_->cameraCount(); ++c) {
+        const FramePreparation::Values v = model_->preparation(c).spec.values;
+        state_.cameraValues[static_cast<std::size_t>(c)] = {v == FramePreparation::Values::Invert,
+                                                            v == FramePreparation::Values::Log};
+    }
+}
+
 void WorkspaceApp::updateRawHint() {
     state_.rawHint.clear();
-    if (!state_.canPrepare) return;
+    if (model_->fromTrial()) return;  // one radiograph opened with register's flags
     const auto& views = model_->prepared(state_.frame);
     // The value range of each prepared frame: once per frame and preparation.
     const std::pair<int, std::uint64_t> key{state_.frame, state_.preparationVersion};
@@ -294,7 +308,7 @@ void WorkspaceApp::updateRawHint() {
             std::snprintf(text, sizeof text,
                           "The models lie on darker pixels than around them (contrast %.2f): dense matter "
                           "is dark in a raw radiograph, bright in the DRRs the cost compares with. %s",
-                          contrast, state_.invert ? "Is this image already inverted? Try invert off."
+                          contrast, state_.cameraValues.at(c).invert ? "Is this image already inverted? Try invert off."
                                                   : "Try invert (or --invert).");
             state_.rawHint = text;
             return;

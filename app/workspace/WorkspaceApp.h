@@ -71,6 +71,7 @@ class WorkspaceApp : public ScriptableApp {
     void processRequests();
     void pollSolver();
     void save();
+    void syncCameraValues();  // the toggles from the model's preparations
     void updateImages();
     // state_.rawHint from the shown models' footprints on the prepared radiographs.
     void updateRawHint();

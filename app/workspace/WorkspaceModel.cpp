@@ -71,7 +71,7 @@ std::shared_ptr<WorkspaceModel> WorkspaceModel::open(const WorkspaceSource& sour
     if (m->fromTrial_) {
         const Trial trial = readTrial(source.trial);
         m->trial_ = loadTrialScene(trial, {}, threads);
-        m->preparation_ = source.preparation.value_or(defaultTrialPreparation());
+        overridePreparations(m->trial_, source.trialOverride);
         m->title_ = "trial " + m->trial_.trial.name;
         m->savePath_ = source.out.empty() ? fs::path(m->trial_.trial.name + "-poses.tra") : source.out;
     } else {
@@ -82,7 +82,9 @@ std::shared_ptr<WorkspaceModel> WorkspaceModel::open(const WorkspaceSource& sour
                         ") or a single .tra for all");
         checkGivenFiles(source);
         m->trial_ = loadTrialScene(trialOfOneRadiograph(source), {}, threads);
-        m->preparation_ = source.preparation.value_or(RadiographPreparation{});
+        // As register --reference prepares it: the flags, nothing by default.
+        m->trial_.preparations.at(0).spec = framePreparationOf(source.preparation.value_or(RadiographPreparation{}));
+        m->trial_.preparations.at(0).source = "the command line's";
         m->startFrame_ = source.startFrame;
         for (std::size_t k = 0; k < source.models.size(); ++k) {
             if (source.starts.empty()) {
@@ -109,11 +111,18 @@ const std::string& WorkspaceModel::objectName(int object) const {
     return trial_.scene.objects.at(static_cast<std::size_t>(object)).name;
 }
 
-void WorkspaceModel::setInvertAndLog(bool invert, bool logTransform) {
-    if (fromTrial_) throw Error("a trial's radiographs are prepared as tracking prepares them");
+const CameraPreparation& WorkspaceModel::preparation(int camera) const {
+    return trial_.preparations.at(static_cast<std::size_t>(camera));
+}
+
+void WorkspaceModel::setInvertAndLog(int camera, bool invert, bool logTransform) {
+    if (invert && logTransform) throw Error("invert with log: the log already makes dense matter bright");
+    CameraPreparation& p = trial_.preparations.at(static_cast<std::size_t>(camera));
     const std::lock_guard<std::mutex> lock(cacheMutex_);
-    preparation_.invert = invert;
-    preparation_.logTransform = logTransform;
+    p.spec.values = logTransform ? FramePreparation::Values::Log
+                    : invert     ? FramePreparation::Values::Invert
+                                 : FramePreparation::Values::AsStored;
+    p.source = "set in the workspace";
     prepared_.clear();
 }
 
@@ -125,7 +134,12 @@ const std::vector<RegistrationView>& WorkspaceModel::prepared(int frame) const {
         const std::lock_guard<std::mutex> lock(cacheMutex_);
         if (const auto it = prepared_.find(frame); it != prepared_.end()) return it->second;
     }
-    std::vector<RegistrationView> views = trialFrameViews(trial_, preparation_)(frame);
+    FrameViews read;
+    {
+        const std::lock_guard<std::mutex> lock(cacheMutex_);  // the preparations as they are now
+        read = trialFrameViews(trial_);
+    }
+    std::vector<RegistrationView> views = read(frame);
     for (const RegistrationView& v : views)
         if (v.valid && v.valid->count() == 0)
             throw Error(trial_.sequences[v.camera].frameName(frame) +

@@ -32,9 +32,10 @@ struct WorkspaceSource {
     int startFrame = 0;                        // the row of .jts/.tra starts (register --frame)
     double muPerMm = 0.0;                      // models' attenuation; 0 = cobalt-chromium
     TraForm traForm = TraForm::Auto;           // a .tra start's numbers (--tra-form)
-    // How the radiographs are prepared: a trial's default is tracking's
-    // (defaultTrialPreparation); one radiograph takes the register flags.
+    // One radiograph: how it is prepared (the register flags; a trial's cameras are prepared as
+    // the trial says, else by tracking's default: track/TrialPreparation.h).
     std::optional<RadiographPreparation> preparation;
+    PreparationOverride trialOverride;  // a trial: the flags over its cameras' preparations
     std::filesystem::path out;  // where Save writes (empty: a name beside the input)
 };
 
@@ -51,11 +52,12 @@ class WorkspaceModel {
     int frameCount() const { return trial_.frameCount; }
     int objectCount() const { return static_cast<int>(trial_.scene.objects.size()); }
     const std::string& objectName(int object) const;
-    const RadiographPreparation& preparation() const { return preparation_; }
-    // One radiograph: invert and log as the workspace's toggles set them (the prepared frames
-    // are made again). Not while a worker prepares frames. A trial's preparation is tracking's,
-    // fixed: fm::Error.
-    void setInvertAndLog(bool invert, bool logTransform);
+    // How `camera`'s frames are prepared (what Solve and Track compare, what
+    // Save keyframes writes into the trial JSON).
+    const CameraPreparation& preparation(int camera) const;
+    // Camera `camera`'s values inverted, log-converted (I0 kept) or neither, as the workspace's
+    // toggles set them; the prepared frames are made again. Not while a worker prepares frames.
+    void setInvertAndLog(int camera, bool invert, bool logTransform);
     int threads() const { return threads_; }
     const std::string& title() const { return title_; }
     const std::filesystem::path& defaultSavePath() const { return savePath_; }
@@ -88,7 +90,6 @@ class WorkspaceModel {
   private:
     TrialScene trial_;
     bool fromTrial_ = true;
-    RadiographPreparation preparation_;
     int threads_ = 0;
     int startFrame_ = 0;  // one radiograph: its row in .jts/.tra files
     std::string title_;

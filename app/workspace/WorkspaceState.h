@@ -86,7 +86,7 @@ struct WorkspaceRequests {
     bool undo = false;
     bool save = false;
     std::optional<int> frame;  // go to this frame
-    bool preparation = false;  // invert / logTransform changed
+    bool preparation = false;  // a camera's invert / logTransform changed
     bool resetView = false;
 };
 
@@ -110,9 +110,13 @@ struct WorkspaceState {
 
     ModelImage modelImage = ModelImage::Outline;
     bool sideBySide = false;  // radiograph and model image side by side, not over each other
-    // One radiograph: its preparation's invert and log, toggled in the Objects pane (a trial's
-    // is tracking's, fixed); each change a new version (the panes are made again).
-    bool canPrepare = false, invert = false, logTransform = false;
+    // Each camera's preparation's invert and log, toggled in the Objects pane (what Solve and
+    // Track compare; a trial's Save keyframes writes them into the trial JSON); each change a new version (the panes are
+    // made again).
+    struct CameraValues {
+        bool invert = false, logTransform = false;
+    };
+    std::vector<CameraValues> cameraValues;
     std::uint64_t preparationVersion = 0;
     std::string rawHint;  // "" or why the radiograph looks raw (RawImageHint.h)
     int enlargedCamera = -1;  // a camera's pane shown over the whole window (-1: none)

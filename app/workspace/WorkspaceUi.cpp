@@ -287,21 +287,31 @@ void WorkspaceUi::objectsPane(WorkspaceState& state, const Pane& pane) {
     if (ImGui::Button("Open...")) state.open.shown = true;
     record("button:open-workspace");
     if (ImGui::IsItemHovered()) tooltip("Open another trial or radiograph, or a CT (the matching game); Recent");
-    if (state.canPrepare) {
-        // How the radiograph is prepared, as --invert / --log would: what Solve compares.
-        ImGui::BeginDisabled(state.solve.running);
-        if (ImGui::Checkbox("invert", &state.invert)) state.requests.preparation = true;
-        record("checkbox:invert");
+    // How each camera's radiograph is prepared, as --invert / --log would: what Solve and Track
+    // compare (a trial's Save trial keeps it). One camera: "invert"; more: "invert cam2" ...
+    ImGui::BeginDisabled(state.solve.running || state.track.run.running);
+    for (std::size_t c = 0; c < state.cameraValues.size(); ++c) {
+        WorkspaceState::CameraValues& v = state.cameraValues[c];
+        const std::string suffix = state.cameraValues.size() > 1 ? " " + state.cameraNames.at(c) : "";
+        const std::string idSuffix = c == 0 ? "" : ":" + state.cameraNames.at(c);
+        if (ImGui::Checkbox(("invert" + suffix).c_str(), &v.invert)) {
+            if (v.invert) v.logTransform = false;
+            state.requests.preparation = true;
+        }
+        record("checkbox:invert" + idSuffix);
         if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
-            tooltip("Full scale minus the value (--invert): raw fluoroscopy shows dense matter dark, a DRR "
-                    "bright; Solve compares the image as shown");
+            tooltip("Full scale minus the value (--invert): a display signal shows dense matter dark, a DRR "
+                    "bright; Solve and Track compare the image as shown");
         ImGui::SameLine();
-        if (ImGui::Checkbox("log", &state.logTransform)) state.requests.preparation = true;
-        record("checkbox:log");
+        if (ImGui::Checkbox(("log" + suffix).c_str(), &v.logTransform)) {
+            if (v.logTransform) v.invert = false;
+            state.requests.preparation = true;
+        }
+        record("checkbox:log" + idSuffix);
         if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
             tooltip("-ln(I / I0) of raw detector intensities (--log): line integrals, like a DRR's");
-        ImGui::EndDisabled();
     }
+    ImGui::EndDisabled();
     if (!state.rawHint.empty()) {
         coloredWrapped(kWarn, state.rawHint);
         record("text:raw-hint");

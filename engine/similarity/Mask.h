@@ -41,6 +41,7 @@ struct PixelRect {
     int cols = 0;
     int rows = 0;
     bool empty() const { return cols <= 0 || rows <= 0; }
+    bool operator==(const PixelRect&) const = default;
 };
 PixelRect boundingRect(const Mask& mask);
 

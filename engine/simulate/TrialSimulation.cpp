@@ -26,10 +26,11 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// The exposure: as a fluoroscope's automatic exposure control sets it, the anatomy's median
-// transmission (over the pixels the body attenuates, I/I0 < 0.9, in frame 0) reads this many
-// counts of the 16-bit range; the open field saturates. Kept for the whole trial per camera.
-constexpr double kCountsAtReference = 20000.0;
+// A linear signal (a raw flat panel): the open field (I = I0) reads this many counts, so the
+// body never saturates the 16 bits (scatter adds to the open field). The noise is the exposure's
+// (photonsPerPixel at the anatomy's median), not this gain's. (Before, the median read 20000
+// counts and half of a pelvis's pixels saturated.)
+constexpr double kLinearOpenField = 50000.0;
 
 // A log-compressed signal (video fluoroscopy, most flat-panel outputs): the open field at
 // kLogTop, each unit of -ln(I/I0) kCountsPerLogUnit darker (14 units fit: beyond any body).
@@ -179,11 +180,19 @@ TrialSimulationResult simulateTrial(const TrialSimulationSpec& s, const std::fun
                 for (float& v : image.pixels) v = static_cast<float>(kLogTop - kCountsPerLogUnit * v);
             }
             io::writeFileAtomically(s.out / trial.cameras[c].name / frameName(f),
-                                    encodeTiffGrey16(image, s.logSignal ? 1.0 : kCountsAtReference / reference[c]));
+                                    encodeTiffGrey16(image, s.logSignal ? 1.0 : kLinearOpenField));
         }
         if (progress) progress(f + 1, s.frames);
     }
+    // How each camera's frames are to be prepared, known here: the trial files say it.
     TrialSimulationResult r;
+    for (std::size_t c = 0; c < cameras.size(); ++c) {
+        FramePreparation p;
+        p.values = s.logSignal ? FramePreparation::Values::Invert : FramePreparation::Values::Log;
+        if (!s.logSignal) p.i0 = kLinearOpenField;  // the open field's counts
+        trial.cameras[c].preparation = p;
+        r.preparations.push_back(p);
+    }
     r.frames = s.frames;
     r.referenceLevels = reference;
     r.cameras = cameras.size();
@@ -201,6 +210,7 @@ TrialSimulationResult simulateTrial(const TrialSimulationSpec& s, const std::fun
     }
     cfg.volumes.push_back({trialBone.volume, glm::ivec3(0), trialBone.voxelSize});
     cfg.renderResolution = trial.renderResolution;
+    cfg.preparations = r.preparations;
     r.config = s.out / "trial.cfg";
     writeAutoscoperConfig(r.config, cfg);
     const TrialScene loaded = loadTrialScene(readTrial(r.trial), {s.boneName}, s.detector.threads);

@@ -7,10 +7,10 @@
 //      pose of each frame, and, at the same pose, the soft tissue it displaces taken away (so the
 //      bone shows its attenuation in excess of that tissue, as in a body)
 //   3. per frame and camera a realistic radiograph (spectral/: the spectrum, scatter, blur,
-//      Poisson noise seeded by (seed, frame, camera)), a 16-bit TIFF of the detector's counts,
-//      exposed as automatic exposure control does: each camera's median attenuated transmission
-//      in frame 0 reads 20000 counts (the open field saturates), and detector.photonsPerPixel is
-//      the photons at that level
+//      Poisson noise seeded by (seed, frame, camera)), a 16-bit TIFF, exposed as automatic
+//      exposure control does: detector.photonsPerPixel are the photons at each camera's median
+//      attenuated transmission in frame 0; the signal log-compressed (dense matter dark) or
+//      linear (the open field at 50000 counts); each camera's preparation written in the trial
 //   4. the files: each camera's MayaCam 2.0 calibration and frames, the bone as Autoscoper keeps
 //      one (BONE.tif: a 16-bit TIFF stack of HU + 1000, its voxel size in the trial), trial.json
 //      (what `track` reads) and trial.cfg (the same trial for Autoscoper), the truth
@@ -25,6 +25,7 @@
 #include "camera/PinholeCamera.h"
 #include "spectral/DetectorModel.h"
 #include "spectral/Spectrum.h"
+#include "trial/FramePreparation.h"
 #include "volume/Volume.h"
 
 namespace fm {
@@ -45,9 +46,9 @@ struct TrialSimulationSpec {
     SpectrumSpec spectrum;
     DetectorSettings detector;        // its seed is mixed with the frame and the camera
     // The detector's signal: log-compressed (60000 - 4096 (-ln I/I0), dense matter dark, as
-    // video fluoroscopy gives it and a trial's frames are prepared: inverted) or linear (counts
-    // proportional to I, exposed as above: what a raw flat panel gives; a trial needs its frames
-    // log-converted then, which trial files cannot say yet).
+    // video fluoroscopy gives it: the trial says "invert", which makes it 5535 + 4096 (-ln I/I0),
+    // linear in the line integrals) or linear (counts proportional to I, exposed as above: what
+    // a raw flat panel gives, the open field at 50000 counts; the trial says "log", I0 50000).
     bool logSignal = true;
     std::filesystem::path out;
 };
@@ -58,6 +59,7 @@ struct TrialSimulationResult {
     std::size_t cameras = 0;
     double secondsPerImage = 0.0;
     std::vector<double> referenceLevels;  // per camera: the I/I0 its exposure was set to
+    std::vector<FramePreparation> preparations;  // per camera: what the trial files say
 };
 
 // Progress: (frame done, frames).

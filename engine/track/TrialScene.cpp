@@ -56,15 +56,23 @@ ImageSequence openSequence(const fs::path& frames) {
     return s;
 }
 
-// The size of a sequence's first frame, read from its header where it can be.
-glm::ivec2 firstFrameSize(const ImageSequence& seq) {
+// The size and sample depth of a sequence's first frame, read from its header where it can be.
+io::TiffShape firstFrameShape(const ImageSequence& seq) {
     const fs::path file = seq.multiPage ? seq.source : seq.frames.at(0);
-    if (io::hasTiffExtension(file)) {
-        const io::TiffShape shape = io::readTiffShape(file);
-        return {shape.width, shape.height};
-    }
+    if (io::hasTiffExtension(file)) return io::readTiffShape(file);
     const RadiographFile r = readRadiograph(file);
-    return {r.image.width, r.image.height};
+    return {r.image.width, r.image.height, 1, r.bitsPerSample};
+}
+
+// An roi must lie inside the camera's images: said with the trial and the camera, before any work.
+void checkRoi(const TrialScene& t, std::size_t c) {
+    const auto& roi = t.preparations[c].spec.roi;
+    const glm::ivec2 size = t.cameras[c].imageSize;
+    if (roi && (roi->col0 + roi->cols > size.x || roi->row0 + roi->rows > size.y))
+        throw Error("trial " + io::quoted(t.trial.source) + ": camera " + t.trial.cameras[c].name + " preparation roi " +
+                    std::to_string(roi->col0) + "," + std::to_string(roi->row0) + "," + std::to_string(roi->cols) +
+                    "," + std::to_string(roi->rows) + " (" + t.preparations[c].source + ") must lie inside its " +
+                    std::to_string(size.x) + " x " + std::to_string(size.y) + " images");
 }
 
 }  // namespace
@@ -83,7 +91,8 @@ TrialScene loadTrialScene(const Trial& trial, const std::vector<std::string>& bo
         ImageSequence seq = openSequence(tc.frames);
         // The first frame's size must be the calibration's (every frame is checked on reading);
         // a calibration without one (JointTrack) takes it.
-        const glm::ivec2 size = firstFrameSize(seq);
+        const io::TiffShape shape = firstFrameShape(seq);
+        const glm::ivec2 size{shape.width, shape.height};
         CameraReadResult cam = readCameraFile(tc.calibration, size);
         for (const std::string& w : cam.warnings) t.trial.warnings.push_back(w);
         checkImageSize(cam.camera, io::quoted(tc.calibration), size.x, size.y,
@@ -93,6 +102,8 @@ TrialScene loadTrialScene(const Trial& trial, const std::vector<std::string>& bo
                                                        io::quoted(tc.calibration) + " at the trial's render size"));
         t.cameras.push_back(cam.camera);
         t.sequences.push_back(std::move(seq));
+        t.preparations.push_back(chooseCameraPreparation(tc, shape.bitsPerSample));
+        checkRoi(t, c);
     }
     t.frameCount = t.sequences[0].frameCount();
     for (std::size_t c = 1; c < t.sequences.size(); ++c) {
@@ -160,15 +171,18 @@ TrialScene loadTrialScene(const Trial& trial, const std::vector<std::string>& bo
     return t;
 }
 
-RadiographPreparation defaultTrialPreparation() {
-    RadiographPreparation p;
-    p.invert = true;       // raw fluoroscopy: dense matter dark; a DRR is bright there
-    p.excludeBelow = 0.0;  // the zero border undistortion leaves
-    return p;
+void overridePreparations(TrialScene& t, const PreparationOverride& override) {
+    for (std::size_t c = 0; c < t.preparations.size(); ++c) {
+        applyPreparationOverride(t.preparations[c], override);
+        if (override.erodePixels && !t.preparations[c].spec.excludeBelow)
+            throw Error("--erode: camera " + t.trial.cameras[c].name +
+                        " excludes no pixels (its preparation: " + t.preparations[c].source +
+                        "); give --exclude-below V with it");
+        checkRoi(t, c);
+    }
 }
 
-FrameViews trialFrameViews(const TrialScene& trial, const RadiographPreparation& preparation,
-                           const std::vector<std::size_t>& cameras) {
+FrameViews trialFrameViews(const TrialScene& trial, const std::vector<std::size_t>& cameras) {
     std::vector<std::size_t> use = cameras;
     if (use.empty())
         for (std::size_t c = 0; c < trial.sequences.size(); ++c) use.push_back(c);
@@ -176,7 +190,9 @@ FrameViews trialFrameViews(const TrialScene& trial, const RadiographPreparation&
         if (c >= trial.sequences.size())
             throw Error("camera " + std::to_string(c + 1) + " does not exist (the trial has " +
                         std::to_string(trial.sequences.size()) + ")");
-    return [&trial, preparation, use](int frame) {
+    std::vector<FramePreparation> preparations;
+    for (const CameraPreparation& p : trial.preparations) preparations.push_back(p.spec);
+    return [&trial, preparations, use](int frame) {
         // One camera per task: reading and preparing a 1760 x 1760 frame is serial work.
         std::vector<RegistrationView> views(use.size());
         parallelFor(static_cast<int>(use.size()), 0, [&](int begin, int end) {
@@ -188,9 +204,8 @@ FrameViews trialFrameViews(const TrialScene& trial, const RadiographPreparation&
                 const RadiographFile r = readRadiograph(file, seq.multiPage ? frame : -1);
                 checkImageSize(trial.cameras[c], io::quoted(trial.trial.cameras[c].calibration),
                                r.image.width, r.image.height, io::quoted(file));
-                RadiographPreparation p = preparation;
-                p.fullScale = radiographFullScale(r.bitsPerSample);
-                PreparedRadiograph prepared = prepareRadiograph(r.image, p);
+                const PreparedRadiograph prepared =
+                    prepareRadiograph(r.image, radiographPreparation(preparations[c], r.bitsPerSample));
                 const glm::ivec2 render = trial.scene.cameras[c].detector.size;
                 views[static_cast<std::size_t>(i)] = {c, resampleByArea(prepared.image, render),
                                                       resampleMaskByArea(prepared.valid, render)};

@@ -20,6 +20,7 @@
 #include "radiograph/RadiographPreparation.h"
 #include "scene/Scene.h"
 #include "track/Tracker.h"
+#include "track/TrialPreparation.h"
 #include "trial/ImageSequence.h"
 #include "trial/Trial.h"
 #include "volume/Volume.h"
@@ -41,6 +42,9 @@ struct TrialScene {
     std::map<std::string, std::shared_ptr<const Mesh>> meshes;
     // Bones with label masks (TrialBone::masks): one file per frame, camera 1's size.
     std::map<std::string, ImageSequence> masks;
+    // Per camera: how its frames are prepared (track/TrialPreparation.h: the trial's, else the
+    // default for its first frame's depth).
+    std::vector<CameraPreparation> preparations;
 };
 
 // The size a camera's frames are tracked at: the trial's RenderResolution (what Autoscoper
@@ -55,12 +59,14 @@ glm::ivec2 trialRenderSize(glm::ivec2 imageSize, glm::ivec2 renderResolution);
 // cameras are a warning (trial.warnings).
 TrialScene loadTrialScene(const Trial& trial, const std::vector<std::string>& bones, int threads = 0);
 
+// The command line's radiograph flags over every camera's preparation. fm::Error naming the
+// trial and the camera for an roi outside its images.
+void overridePreparations(TrialScene& trial, const PreparationOverride& override);
+
 // How the tracker reads frame k: each camera's radiograph, checked against its calibration's
-// image size and prepared (by default inverted, the zero border that undistortion leaves
-// excluded). A frame that cannot be read throws fm::Error naming the file.
-RadiographPreparation defaultTrialPreparation();
-FrameViews trialFrameViews(const TrialScene& trial, const RadiographPreparation& preparation,
-                           const std::vector<std::size_t>& cameras = {});
+// image size and prepared as trial.preparations says (taken when this is called). A frame that
+// cannot be read throws fm::Error naming the file.
+FrameViews trialFrameViews(const TrialScene& trial, const std::vector<std::size_t>& cameras = {});
 
 // The label mask of `bone` at `frame` (pixels above half the full scale), checked against camera
 // 1's image size. Throws fm::Error naming the file, or the bone when it has no masks.

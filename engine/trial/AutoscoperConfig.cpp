@@ -89,6 +89,8 @@ AutoscoperConfig readAutoscoperConfig(const fs::path& path) {
                 if (!(o[i] > 0.0)) throw Error(where(key) + ": offsets must be positive");
                 cfg.optimizationOffsets[i] = o[i];
             }
+        } else if (key == "RadiographPreparation") {
+            cfg.preparations.push_back(framePreparationFromText(value, where(key)));
         } else {
             cfg.warnings.push_back(where(key) + ": unknown key, ignored");
         }
@@ -103,6 +105,10 @@ AutoscoperConfig readAutoscoperConfig(const fs::path& path) {
         throw Error(file + ": " + std::to_string(cfg.calibrations.size()) +
                     " cameras (mayaCam_csv) but " + std::to_string(cfg.cameraRootDirs.size()) +
                     " image folders (CameraRootDir)");
+    if (!cfg.preparations.empty() && cfg.preparations.size() != cfg.calibrations.size())
+        throw Error(file + ": one RadiographPreparation per camera or none (" +
+                    std::to_string(cfg.calibrations.size()) + " cameras, " +
+                    std::to_string(cfg.preparations.size()) + " RadiographPreparation lines)");
     if (volumeFiles.empty()) throw Error(file + ": no volume (VolumeFile)");
     if (sizes.size() != volumeFiles.size())
         throw Error(file + ": " + std::to_string(volumeFiles.size()) + " volumes but " +
@@ -153,6 +159,10 @@ void writeAutoscoperConfig(const fs::path& path, const AutoscoperConfig& config)
     out << (config.meshes.empty() ? "Version 1.1\n" : "Version 1.2\n");
     for (const auto& p : config.calibrations) out << "mayaCam_csv " << rel(p) << "\n";
     for (const auto& p : config.cameraRootDirs) out << "CameraRootDir " << rel(p) << "\n";
+    // Ours (Autoscoper skips the key): how each camera's frames are prepared.
+    if (!config.preparations.empty() && config.preparations.size() != config.calibrations.size())
+        throw Error(io::quoted(path) + ": one preparation per camera or none");
+    for (const auto& p : config.preparations) out << "RadiographPreparation " << framePreparationText(p) << "\n";
     for (const auto& v : config.volumes) {
         out << "VolumeFile " << rel(v.file) << "\n";
         out << "VolumeFlip " << v.flip.x << " " << v.flip.y << " " << v.flip.z << "\n";

@@ -9,12 +9,19 @@
 // We are stricter than Autoscoper where it would go on with garbage: every number must parse,
 // unknown keys are reported (not silently dropped), and each refusal names the file and line.
 // A .cfg holds no poses: they live in .tra files.
+//
+// One key of ours: RadiographPreparation (trial/FramePreparation.h), one line per camera in camera
+// order, or none. Autoscoper's reader skips keys it does not know (Trial::parse at 203b721: an
+// if-else chain over its keys without an else), so such a .cfg still loads there; Autoscoper's
+// own Save drops the lines.
 #include <array>
 #include <filesystem>
 #include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
+
+#include "trial/FramePreparation.h"
 
 namespace fm {
 
@@ -32,6 +39,7 @@ struct AutoscoperConfig {
     std::vector<std::filesystem::path> cameraRootDirs;  // CameraRootDir
     std::vector<AutoscoperVolume> volumes;
     std::vector<std::filesystem::path> meshes;  // MeshFile: one per volume or none
+    std::vector<FramePreparation> preparations;  // RadiographPreparation: one per camera or none
     glm::ivec2 renderResolution{512, 512};
     std::array<double, 6> optimizationOffsets{0.1, 0.1, 0.1, 0.1, 0.1, 0.1};
     std::vector<std::string> warnings;  // unknown keys, a missing Version

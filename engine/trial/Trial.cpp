@@ -99,6 +99,12 @@ Trial readTrialJson(const fs::path& path) {
         if (cams[i].contains("name")) c.name = r.text(cams[i]["name"], f + ".name");
         c.calibration = resolve(base, r.text(r.member(cams[i], "calibration", f), f + ".calibration"));
         c.frames = resolve(base, r.text(r.member(cams[i], "frames", f), f + ".frames"));
+        if (cams[i].contains("preparation"))
+            c.preparation = framePreparationFromJson(cams[i]["preparation"], r.file, f + ".preparation");
+        for (auto it = cams[i].begin(); it != cams[i].end(); ++it)
+            if (it.key() != "name" && it.key() != "calibration" && it.key() != "frames" && it.key() != "preparation")
+                t.warnings.push_back(r.file + ": unknown key \"" + f + "." + it.key() +
+                                     "\" ignored (a camera has name, calibration, frames, preparation)");
         t.cameras.push_back(c);
     }
     const Json& bones = r.member(root, "bones", "trial");
@@ -192,7 +198,9 @@ Trial trialFromConfig(const fs::path& path) {
     for (std::size_t i = 0; i < cfg.calibrations.size(); ++i) {
         std::string name = "cam";  // piecewise: GCC 12 warns falsely on "literal" + string
         name += std::to_string(i + 1);
-        t.cameras.push_back({name, cfg.calibrations[i], cfg.cameraRootDirs[i]});
+        TrialCamera c{name, cfg.calibrations[i], cfg.cameraRootDirs[i], std::nullopt};
+        if (!cfg.preparations.empty()) c.preparation = cfg.preparations[i];
+        t.cameras.push_back(c);
     }
     for (std::size_t i = 0; i < cfg.volumes.size(); ++i) {
         TrialBone b;
@@ -275,8 +283,11 @@ void writeTrialJson(const fs::path& path, const Trial& trial) {
     auto rel = [&](const fs::path& p) { return fs::absolute(p).lexically_relative(base).generic_string(); };
     Json root;
     root["name"] = trial.name;
-    for (const TrialCamera& c : trial.cameras)
-        root["cameras"].push_back({{"name", c.name}, {"calibration", rel(c.calibration)}, {"frames", rel(c.frames)}});
+    for (const TrialCamera& c : trial.cameras) {
+        Json j{{"name", c.name}, {"calibration", rel(c.calibration)}, {"frames", rel(c.frames)}};
+        if (c.preparation) j["preparation"] = framePreparationToJson(*c.preparation);
+        root["cameras"].push_back(j);
+    }
     for (const TrialBone& b : trial.bones) {
         Json j{{"name", b.name}};
         if (!b.meshOnly()) {

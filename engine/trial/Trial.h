@@ -13,12 +13,14 @@
 // worldFromVolume as it stands.
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
 
 #include "scene/RigidTransform.h"
+#include "trial/FramePreparation.h"
 
 namespace fm {
 
@@ -26,6 +28,9 @@ struct TrialCamera {
     std::string name;                   // "cam01"
     std::filesystem::path calibration;  // MayaCam 1.0 / 2.0
     std::filesystem::path frames;       // folder of TIFFs or a multi-page TIFF
+    // How its frames are prepared, when the trial says (JSON "preparation", .cfg
+    // RadiographPreparation); none: chosen from the frames (track/TrialPreparation.h).
+    std::optional<FramePreparation> preparation;
 };
 
 struct TrialBone {

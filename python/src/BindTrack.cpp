@@ -9,6 +9,7 @@
 
 #include "Arrays.h"
 #include "Bindings.h"
+#include "Preparation.h"
 #include "Progress.h"
 #include "core/Error.h"
 #include "pose/AutoscoperTra.h"
@@ -56,7 +57,8 @@ void bindTrack(pb::module_& m) {
         [](const std::string& trialPath, const pb::object& boneArg, const std::string& frames, bool reverse,
            const std::string& init, const std::string& start, const std::string& out, std::uint64_t seed,
            int threads, std::optional<std::vector<int>> cameraList, const std::string& onLost, bool uncertainty,
-           const pb::object& progress) {
+           const pb::object& progress, bool invert, bool log, std::optional<double> i0,
+           std::optional<double> excludeBelow, std::optional<int> erode, std::optional<std::array<int, 4>> roi) {
             // 1. The trial, its bones, frames and keyframes, refused before any work.
             std::vector<std::string> bones;
             if (pb::isinstance<pb::str>(boneArg)) bones.push_back(boneArg.cast<std::string>());
@@ -65,12 +67,33 @@ void bindTrack(pb::module_& m) {
             if (!out.empty() && std::filesystem::path(out).extension() != ".tra")
                 throw Error("out: the result is an Autoscoper .tra; name it NAME.tra");
             if (threads < 0) throw Error("threads must be 0 (all cores) or more");
+            const PreparationOverride override = preparationOverrideOf(invert, log, i0, excludeBelow, erode, roi);
             const Trial trial = readTrial(trialPath);
             for (const std::string& b : bones) trial.bone(b);
             TrialScene scene;
             {
                 pb::gil_scoped_release unlock;
                 scene = loadTrialScene(trial, bones, threads);
+            }
+            overridePreparations(scene, override);
+            // How each camera's frames were prepared, and why (the CLI prints the same).
+            pb::list preparations;
+            for (std::size_t c = 0; c < scene.preparations.size(); ++c) {
+                const CameraPreparation& p = scene.preparations[c];
+                pb::dict d;
+                d["camera"] = scene.trial.cameras[c].name;
+                d["values"] = toString(p.spec.values);
+                d["i0"] = p.spec.values == FramePreparation::Values::Log
+                              ? (p.spec.i0 > 0.0 ? p.spec.i0 : radiographFullScale(p.bitsPerSample))
+                              : kNaN;
+                d["exclude_below"] = p.spec.excludeBelow ? pb::cast(*p.spec.excludeBelow) : pb::none();
+                d["erode"] = p.spec.erodePixels;
+                d["roi"] = p.spec.roi ? pb::cast(std::array<int, 4>{p.spec.roi->col0, p.spec.roi->row0, p.spec.roi->cols,
+                                                                   p.spec.roi->rows})
+                                      : pb::none();
+                d["source"] = p.source;
+                d["text"] = describePreparation(p.spec, p.bitsPerSample);
+                preparations.append(d);
             }
             std::vector<std::size_t> cameras;
             if (cameraList) {
@@ -102,7 +125,7 @@ void bindTrack(pb::module_& m) {
                         : (std::filesystem::path(out).parent_path() /
                            (std::filesystem::path(out).stem().string() + "_" + bone + ".tra")).string();
                 const Tracker tracker(sceneOfBoneAlone(scene, bone), bone,
-                                      trialFrameViews(scene, defaultTrialPreparation(), cameras), settings);
+                                      trialFrameViews(scene, cameras), settings);
                 TraFile tra;
                 tra.frames.assign(static_cast<std::size_t>(scene.frameCount), {std::nullopt});
                 std::vector<FrameRecord> records;
@@ -157,6 +180,7 @@ void bindTrack(pb::module_& m) {
                 result["poses"] = poses;
                 result["written"] = boneOut.empty() ? pb::none() : pb::cast(boneOut);
                 result["stopped"] = relay.stopped();
+                result["preparation"] = preparations;
                 results[pb::str(bone)] = result;
             }
             if (pb::isinstance<pb::str>(boneArg)) return pb::object(results[pb::str(bones[0])]);
@@ -166,20 +190,26 @@ void bindTrack(pb::module_& m) {
         pb::arg("init") = "extrapolate", pb::arg("start") = "", pb::arg("out") = "", pb::arg("seed") = 1,
         pb::arg("threads") = 0, pb::arg("cameras") = pb::none(), pb::arg("on_lost") = "search",
         pb::arg("uncertainty") = true, pb::arg("progress") = pb::none(),
+        pb::arg("invert") = false, pb::arg("log") = false, pb::arg("i0") = pb::none(),
+        pb::arg("exclude_below") = pb::none(), pb::arg("erode") = pb::none(), pb::arg("roi") = pb::none(),
         R"doc(
 Tracks a bone (or a list of bones) through a trial, as `fluoromatch track --trial T --bone B`
 does, with its options as keyword arguments: frames "A:B[:STEP]", reverse, init ("previous",
 "extrapolate", "keyframes"), start (a .tra of start poses / keyframes), out (a .tra, rewritten
 atomically after every frame; with several bones NAME_bone.tra), seed, threads, cameras
-(1-based list), on_lost ("search", "stop", "continue"), uncertainty. The same poses as the CLI
-for the same arguments.
+(1-based list), on_lost ("search", "stop", "continue"), uncertainty, and the radiograph
+keywords of the CLI's flags over every camera's preparation (invert, log, i0, exclude_below,
+erode, roi: each given one replaces its part of what the trial says, or of the default for its
+frames: 8-bit inverted, deeper log). The same poses as the CLI for the same arguments.
 
 Returns (for one bone) a dict: poses (frames, 4, 4) as the .tra holds them (Autoscoper's
 worldFromVolume; NaN where not tracked or lost), frames (one dict per tracked frame: frame,
 status, note, verdict ("ok", "doubtful", "lost"), verdict_text, uncertainty (per coordinate of
 the first taking camera's frame), similarity_ratio (against the last good frames), searches,
-pose, object_pose, costs per camera, cameras_used, evaluations, seconds),
-written, stopped; for a list of bones a dict of those by bone. progress(dict) is called after
+pose, object_pose, costs per camera, cameras_used, evaluations, seconds), written, stopped,
+preparation (per camera: camera, values, i0 (NaN unless log), exclude_below, erode, roi,
+source: "the trial's", "default for 8-bit frames: ...", text: as the CLI prints it); for a list
+of bones a dict of those by bone. progress(dict) is called after
 every frame; return False to stop after it (Ctrl-C stops too).)doc");
 }
 

@@ -77,7 +77,8 @@ TEST_F(TrackUi, TrackForwardFollowsTheFramesAndSavesTheTraTheCliWrites) {
     script->clickWidget("button:track-forward");
     bool sawRunning = false;
     idleUntil([&] {
-        sawRunning = sawRunning || app->state().track.run.running;
+        // A run may end before the UI first polls it (a loaded machine): finished counts too.
+        sawRunning = sawRunning || app->state().track.run.running || app->state().track.run.finished;
         return sawRunning && !app->state().track.run.running;
     });
     script->idle(2);

@@ -182,14 +182,14 @@ TEST(WorkspaceRaw, ARawRadiographIsNamedAndInvertFixesIt) {
     app::WorkspaceApp app(*backend, model, options);
     app::UiScript script(app);
     script.idle(2);
-    ASSERT_TRUE(app.state().canPrepare);
-    EXPECT_FALSE(app.state().invert);
+    ASSERT_EQ(app.state().cameraValues.size(), 1u);
+    EXPECT_FALSE(app.state().cameraValues[0].invert);
     EXPECT_NE(app.state().rawHint.find("Try invert"), std::string::npos) << app.state().rawHint;
     const float before = model->prepared(0).at(0).reference.pixels.at(512 * 1024 + 512);
     script.clickWidget("checkbox:invert");
     script.idle(1);
-    EXPECT_TRUE(app.state().invert);
-    EXPECT_TRUE(model->preparation().invert);
+    EXPECT_TRUE(app.state().cameraValues[0].invert);
+    EXPECT_EQ(model->preparation(0).spec.values, FramePreparation::Values::Invert);
     EXPECT_TRUE(app.state().rawHint.empty()) << app.state().rawHint;
     // The prepared frame is the inverted one (full scale minus the value, then resampled).
     EXPECT_NE(model->prepared(0).at(0).reference.pixels.at(512 * 1024 + 512), before);

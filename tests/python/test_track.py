@@ -48,3 +48,20 @@ def test_refusals(wrist, tmp_path):
         fm.track(wrist, "radius", cameras=[3])
     with pytest.raises(fm.Error, match=".tra"):
         fm.track(wrist, "radius", out=str(tmp_path / "x.csv"))
+
+
+def test_each_cameras_preparation_is_said_and_the_keywords_replace_their_part(wrist):
+    # The wrist's 8-bit frames: inverted by default, the zero border excluded; log=True, i0 over it.
+    result = fm.track(wrist, "radius", frames="0:0", cameras=[1], threads=2, log=True, i0=250)
+    cam1, cam2 = result["preparation"]
+    assert cam1["camera"] == "cam01" and cam1["values"] == "log" and cam1["i0"] == 250
+    assert cam1["exclude_below"] == 0 and cam1["erode"] == 3  # kept from the default
+    assert cam1["source"].startswith("log=True i0=250") and "default for 8-bit frames" in cam1["source"]
+    assert cam2["text"].startswith("log, -ln(I / I0), I0 = 250")
+    assert result["frames"][0]["status"] == "tracked"
+    with pytest.raises(fm.Error, match="invert=True with log=True"):
+        fm.track(wrist, "radius", invert=True, log=True)
+    with pytest.raises(fm.Error, match="i0 applies to log=True only"):
+        fm.track(wrist, "radius", i0=200)
+    with pytest.raises(fm.Error, match="must lie inside its 1760 x 1760 images"):
+        fm.track(wrist, "radius", roi=(0, 0, 2000, 10))

@@ -128,7 +128,7 @@ TEST(JtmlTrial, TracksAMeshFromThePreviousFramesPoseWithEdgeDistance) {
     const fm::TrialScene& t = jtmlScene();
     for (const char* bone : {"femur", "tibia"}) {
         const fm::Tracker tracker(fm::sceneOfBoneAlone(t, bone), bone,
-                                  fm::trialFrameViews(t, fm::defaultTrialPreparation()), {});
+                                  fm::trialFrameViews(t), {});
         EXPECT_EQ(tracker.settings().registration.similarity, fm::SimilarityMeasure::EdgeDistance);
         const auto& keys = t.trial.keyframes.at(bone);
         const fm::FrameRecord r = tracker.trackFrame(2, keys[1].worldFromVolume);

@@ -60,7 +60,7 @@ struct RealWrist : ::testing::Test {
         fm::TrackSettings settings;
         settings.registration.threads = 2;
         const fm::Tracker tracker(
-            scene.scene, bone, fm::trialFrameViews(scene, fm::defaultTrialPreparation(), cameras),
+            scene.scene, bone, fm::trialFrameViews(scene, cameras),
             settings);
         return tracker.trackFrame(0, start);
     }

@@ -10,6 +10,7 @@
 #include "pose/AutoscoperTra.h"
 #include "radiograph/Radiograph.h"
 #include "radiograph/RadiographPreparation.h"
+#include "scene/TrialPoseFiles.h"
 #include "track/PoseOverlay.h"
 #include "workspace/WorkspaceImages.h"
 #include "xray/ObjectRegistration.h"
@@ -78,6 +79,27 @@ TEST(WorkspaceModel, ATrialFrameIsPreparedAsTrackingReadsIt) {
     const PreparedRadiograph expected = prepareRadiograph(readRadiograph(jtmlDir() / "AT_K1_V1_0170.tif").image, p);
     expectSameImage(model->prepared(1).at(0).reference, expected.image);
     EXPECT_EQ(model->prepared(1).at(0).valid->inside, expected.valid.inside);
+}
+
+// A trial camera's log toggle: the frames are then what `radiograph --log --exclude-below 0`
+// gives, and the trial JSON the workspace saves (Save keyframes) says log for that camera only.
+TEST(WorkspaceModel, ATrialCamerasLogToggleIsWhatSolveComparesAndIsSavedWithTheTrial) {
+    FM_REQUIRE_SHIPPED_TRIAL_DATA("jtml-kneel-tka-fluoro");
+    const auto model = app::WorkspaceModel::open(jtmlTrialSource(), 2);
+    EXPECT_EQ(model->preparation(0).spec.values, FramePreparation::Values::Invert);  // 8-bit: the default
+    model->setInvertAndLog(0, false, true);
+    RadiographPreparation p;
+    p.logTransform = true;
+    p.excludeBelow = 0.0;
+    const PreparedRadiograph expected = prepareRadiograph(readRadiograph(jtmlDir() / "AT_K1_V1_0170.tif").image, p);
+    expectSameImage(model->prepared(1).at(0).reference, expected.image);
+    EXPECT_THROW(model->setInvertAndLog(0, true, true), Error);
+    const fs::path saved = test::scratchDir("ws_prep") / "t.json";
+    app::saveTrialJson(saved, model->trial(), {});
+    const Trial back = readTrial(saved);
+    ASSERT_TRUE(back.cameras.at(0).preparation);
+    EXPECT_EQ(back.cameras[0].preparation->values, FramePreparation::Values::Log);
+    EXPECT_EQ(back.cameras[0].preparation->excludeBelow, 0.0);
 }
 
 // The implants at the .jts poses give exactly the label masks (docs/real-xray.md: IoU 1.000).
