@@ -26,6 +26,11 @@ inline constexpr double kLostSimilarityRatio = 0.5;
 // nearly 1 (the knee phantom, cmaes with small budgets: every success at 0.958 or more, misses of
 // 1.2-3.3 mm at 0.92-0.958; docs/search.md, "Verdicts").
 inline constexpr double kConfirmedPerfectMatchRatio = 0.96;
+// Real radiographs, edge distance: a perfect outline match scores 1 (every outline pixel on an
+// image edge). On the JTML frames every start that ended within 1 mm / 2 deg scored at least
+// 0.90 and every miss at most 0.913, from starts 2.5x the range (docs/real-xray.md,
+// "Verdicts").
+inline constexpr double kConfirmedOutlineRatio = 0.92;
 
 enum class AnswerVerdict { Ok, Doubtful, Lost };
 const char* toString(AnswerVerdict verdict);  // "ok", "doubtful", "lost"

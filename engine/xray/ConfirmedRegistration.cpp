@@ -144,6 +144,11 @@ ObjectsRegistration registerObjects(const Scene& scene, const RegistrationView& 
             c.answer.profile += r.profile;
             c.answer.stopped = c.answer.stopped || r.stopped;
         }
+        if (settings.similarity == SimilarityMeasure::EdgeDistance) {
+            c.evidence.similarityRatio = c.answer.similarity;  // against a perfect outline match's 1
+            c.evidence.similarityReference = "a perfect outline match's";
+            c.evidence.confirmedRatio = kConfirmedOutlineRatio;
+        }
         c.evidence.runs = static_cast<int>(runs[k].size());
         c.evidence.agreeing = agreeing[k];
         c.evidence.stopped = c.answer.stopped;

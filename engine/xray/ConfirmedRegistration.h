@@ -11,7 +11,9 @@
 //      agree or `maxRuns` have run (the re-search's budget);
 //   4. the curvature of the cost at the answer (search/PoseUncertainty) says how well the image
 //      fixes each coordinate.
-// The evidence goes into checkAnswer (xray/AnswerCheck.h) with the caller's mask, if any.
+// With edge distance, the answer's similarity is evidence too (against a perfect outline match's
+// 1: kConfirmedOutlineRatio). The evidence goes into checkAnswer (xray/AnswerCheck.h) with the
+// caller's mask, if any.
 // Results depend on the seeds only, not on the thread count.
 #include <functional>
 #include <vector>
