@@ -42,7 +42,7 @@ bool readoutLine(const AppState& state, const std::string& pane) {
 
 void Ui::record(const std::string& id) {
     const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
-    rects_[id] = {{a.x, a.y}, {b.x, b.y}};
+    rects_[id] = {{a.x, a.y}, {b.x, b.y}, ImGui::IsItemVisible()};
 }
 
 std::optional<WidgetRect> Ui::rect(const std::string& id) const {

@@ -32,6 +32,7 @@ struct UiTextures {
 // A widget's screen rectangle (pixels, top-left origin), for scripted tests.
 struct WidgetRect {
     glm::vec2 min{0.0f}, max{0.0f};
+    bool visible = true;  // not clipped away by its pane (a click there would land elsewhere)
     glm::vec2 center() const { return 0.5f * (min + max); }
 };
 

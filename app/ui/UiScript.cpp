@@ -34,7 +34,9 @@ void UiScript::click(glm::vec2 position) {
 }
 
 void UiScript::clickWidget(const std::string& id) {
-    click(widget(id).center());
+    const WidgetRect w = widget(id);
+    if (!w.visible) throw Error("UI script: " + id + " is clipped by its pane (scrolled out of view): a click would miss it");
+    click(w.center());
 }
 
 void UiScript::drag(glm::vec2 from, glm::vec2 to, int steps, int button) {

@@ -51,7 +51,7 @@ WorkspaceLayout computeWorkspaceLayout(glm::vec2 display, int cameras, bool time
 
 void WorkspaceUi::record(const std::string& id) {
     const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
-    rects_[id] = {{a.x, a.y}, {b.x, b.y}};
+    rects_[id] = {{a.x, a.y}, {b.x, b.y}, ImGui::IsItemVisible()};
 }
 
 std::optional<WidgetRect> WorkspaceUi::rect(const std::string& id) const {
@@ -404,22 +404,7 @@ void WorkspaceUi::solvePane(WorkspaceState& state, const Pane& pane) {
     std::snprintf(overlay, sizeof overlay, "%d / %d", s.evaluations, s.budget);
     ImGui::ProgressBar(s.running || s.finished ? fraction : 0.0f, ImVec2(-1.0f, 0.0f), s.budget > 0 ? overlay : "");
     record("progress:solve");
-    if (s.running) dimWrapped("%s", s.stage.c_str());
-    if (!s.error.empty()) coloredWrapped(kBad, s.error);
-    if (s.finished && s.result) {
-        // Words and colour from the verdict: green only for an ok answer.
-        using Check = WorkspaceSolve::Check;
-        const ImVec4 colour = s.check == Check::Ok && !s.stopped ? kGood : s.check == Check::Lost ? kBad : kWarn;
-        coloredWrapped(colour, s.summary);
-        record("text:solve-summary");
-        coloredWrapped(colour, s.checkText);
-        record("text:solve-check");
-        bulletWrapped("moved in-plane %.2f mm, depth %.2f mm, rotation %.2f deg", s.inPlaneMm, s.depthMm, s.rotationDeg);
-        if (s.iou) bulletWrapped("IoU %.4f against the mask (start %.4f)", *s.iou, s.startIou.value_or(0.0));
-        if (!s.uncertaintyText.empty()) bulletWrapped("uncertainty %s", s.uncertaintyText.c_str());
-        if (state.showTimings) bulletWrapped("%.2f s, %d evaluations", s.seconds, s.evaluations);
-    }
-    ImGui::Separator();
+    // The save row before the answer's lines (they may run past the pane's foot).
     // Two saves in a trial: this one writes every object (Track's "Save <object>.tra" one): said
     // on the button.
     const char* saveLabel = state.objects.size() > 1 ? "Save all objects" : "Save";
@@ -436,6 +421,22 @@ void WorkspaceUi::solvePane(WorkspaceState& state, const Pane& pane) {
     if (!state.undoMessage.empty()) dimWrapped("%s", state.undoMessage.c_str());
     if (!state.saveMessage.empty()) coloredWrapped(state.saveFailed ? kBad : kGood, state.saveMessage);
     if (!state.error.empty()) coloredWrapped(kBad, state.error);
+    ImGui::Separator();
+    if (s.running) dimWrapped("%s", s.stage.c_str());
+    if (!s.error.empty()) coloredWrapped(kBad, s.error);
+    if (s.finished && s.result) {
+        // Words and colour from the verdict: green only for an ok answer.
+        using Check = WorkspaceSolve::Check;
+        const ImVec4 colour = s.check == Check::Ok && !s.stopped ? kGood : s.check == Check::Lost ? kBad : kWarn;
+        coloredWrapped(colour, s.summary);
+        record("text:solve-summary");
+        coloredWrapped(colour, s.checkText);
+        record("text:solve-check");
+        bulletWrapped("moved in-plane %.2f mm, depth %.2f mm, rotation %.2f deg", s.inPlaneMm, s.depthMm, s.rotationDeg);
+        if (s.iou) bulletWrapped("IoU %.4f against the mask (start %.4f)", *s.iou, s.startIou.value_or(0.0));
+        if (!s.uncertaintyText.empty()) bulletWrapped("uncertainty %s", s.uncertaintyText.c_str());
+        if (state.showTimings) bulletWrapped("%.2f s, %d evaluations", s.seconds, s.evaluations);
+    }
     ImGui::End();
 }
 
