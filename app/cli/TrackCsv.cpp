@@ -16,7 +16,9 @@ std::string trackCsvHeader(std::size_t cameras) {
     for (std::size_t c = 0; c < cameras; ++c) h += ",cost_cam" + std::to_string(c + 1);
     // How sure each frame is: the verdict, the spread the images allow per coordinate of the
     // first taking camera's frame (inf: not fixed), the similarity against the last good frames.
+    // The same spreads along the bone's own axes (its volume's x, y, z).
     return h + ",verdict,sd_u_mm,sd_v_mm,sd_depth_mm,sd_about_u_deg,sd_about_v_deg,sd_about_view_deg,"
+               "sd_bone_x_mm,sd_bone_y_mm,sd_bone_z_mm,sd_about_bone_x_deg,sd_about_bone_y_deg,sd_about_bone_z_deg,"
                "similarity_ratio,searches,evaluations,time_ms,note\n";
 }
 
@@ -29,8 +31,9 @@ std::string trackCsvRow(const FrameRecord& r, const std::string& bone) {
         row += std::isnan(c) ? std::string(",") : std::string(buf);
     }
     row += std::string(",") + (r.status == FrameRecord::Status::Tracked ? toString(r.verdict) : "lost");
-    for (int i = 0; i < 6; ++i) {
-        std::snprintf(buf, sizeof buf, ",%.4g", r.evidence.uncertainty ? r.evidence.uncertainty->sd[i] : 0.0);
+    for (int i = 0; i < 12; ++i) {
+        const double sd = !r.evidence.uncertainty ? 0.0 : i < 6 ? r.evidence.uncertainty->sd[i] : r.boneFrameSd[i - 6];
+        std::snprintf(buf, sizeof buf, ",%.4g", sd);
         row += r.evidence.uncertainty ? std::string(buf) : std::string(",");
     }
     std::snprintf(buf, sizeof buf, ",%.4f", r.evidence.similarityRatio.value_or(0.0));
@@ -59,7 +62,7 @@ std::map<int, std::string> keptTrackCsvRows(const std::filesystem::path& csv, st
     if (line != header)
         throw Error(where + ": its header \"" + line + "\" is not this run's \"" + header +
                     "\" (a CSV of another trial or camera set?)");
-    const std::size_t fields = 16 + cameras;
+    const std::size_t fields = 22 + cameras;
     for (int number = 2; std::getline(in, line); ++number) {
         std::size_t commas = 0;
         for (char ch : line) commas += ch == ',' ? 1 : 0;

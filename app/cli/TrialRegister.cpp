@@ -96,9 +96,14 @@ void runTrialRegister(const TrialRegisterArgs& a) {
     std::printf("time        %.3f s (%d evaluations in %zu %s)\n", r.seconds, r.evaluations, runs.size(),
                 runs.size() == 1 ? "search" : "searches from independent starts");
     std::printf("speed       %s\n", describeEvaluations(r.profile, a.threads).c_str());
-    if (evidence.uncertainty)
+    if (evidence.uncertainty) {
         std::printf("uncertainty %s (camera %zu's frame)\n", describeUncertainty(*evidence.uncertainty).c_str(),
                     (cameras.empty() ? 0 : cameras[0]) + 1);
+        const SearchPoint& b = r.boneFrameSd;
+        std::printf("            x %.3g mm, y %.3g mm, z %.3g mm, about x %.3g deg, about y %.3g deg, "
+                    "about z %.3g deg (the bone's axes)\n",
+                    b[0], b[1], b[2], b[3], b[4], b[5]);
+    }
     std::printf("verdict     %s\n", check.text.c_str());
     if (check.verdict == AnswerVerdict::Lost) throw Error("lost (nothing written): " + check.text);
     if (!a.out.empty()) {

@@ -35,15 +35,15 @@ expect_error "nothere.txt" "$FM" track --trial "$T/bad.cfg" --bone v --out "$T/x
 [ "$(wc -l < "$T/whole.tra")" -eq 3 ] || fail "the .tra must have one row per trial frame"
 awk -F, 'NR<=2 && (NF!=16 || $16+0!=1) {exit 1} NR==3 && $1!="NaN" {exit 1}' "$T/whole.tra" \
     || fail "rows must be 16 numbers (last 1), NaN where not tracked"
-head -1 "$T/whole.csv" | grep -q "cost_cam1,cost_cam2,verdict,sd_u_mm,sd_v_mm,sd_depth_mm,sd_about_u_deg,sd_about_v_deg,sd_about_view_deg,similarity_ratio,searches,evaluations,time_ms" \
+head -1 "$T/whole.csv" | grep -q "cost_cam1,cost_cam2,verdict,sd_u_mm,sd_v_mm,sd_depth_mm,sd_about_u_deg,sd_about_v_deg,sd_about_view_deg,sd_bone_x_mm,sd_bone_y_mm,sd_bone_z_mm,sd_about_bone_x_deg,sd_about_bone_y_deg,sd_about_bone_z_deg,similarity_ratio,searches,evaluations,time_ms" \
     || fail "CSV header"
 # How sure each frame is. Frame 0 starts from an arbitrary pose (single view): nothing to compare
 # it with, and a second search from another start ends elsewhere: doubtful, searched again.
 # Frame 1 starts from the trial's keyframe and stays by it: ok against the keyframe's
 # similarity. Every coordinate's spread is a positive number; the reasons are in the note.
-awk -F, 'NR>1 && (!($8>0) || !($10>0) || !($13>0)) {exit 1}
-         NR==2 && ($7!="doubtful" || $15!=2 || $0 !~ /no other search from a different start ends here/) {exit 1}
-         NR==3 && ($7!="ok" || !($14>=0.9) || $0 !~ /ok: similarity/) {exit 1}' \
+awk -F, 'NR>1 && (!($8>0) || !($10>0) || !($13>0) || !($14>0) || !($19>0)) {exit 1}
+         NR==2 && ($7!="doubtful" || $21!=2 || $0 !~ /no other search from a different start ends here/) {exit 1}
+         NR==3 && ($7!="ok" || !($20>=0.9) || $0 !~ /ok: similarity/) {exit 1}' \
     "$T/whole.csv" || fail "each frame's verdict, uncertainty and similarity ratio: $(cat "$T/whole.csv")"
 # "Killed" after frame 0, then resumed.
 "$FM" track --trial "$TRIAL" --bone radius --start "$T/start.tra" --frames 0:0 --threads 2 \

@@ -97,6 +97,19 @@ void WorkspaceUi::trackPane(WorkspaceState& state, const Pane& pane) {
                       v.backwards ? "back" : "forward", where.c_str(), seconds, v.lastCost);
         if (elidedText(v.running ? kSelected : kDim, line) && ImGui::IsItemHovered()) tooltip(line);
         record("text:track-status");
+        // How sure the frames are: green only when every frame is ok.
+        if (v.ok + v.doubtful + v.lost > 0) {
+            std::string verdicts = std::to_string(v.ok) + " ok, " + std::to_string(v.doubtful) + " doubtful, " +
+                                   std::to_string(v.lost) + " lost";
+            if (!v.notOk.empty()) {
+                verdicts += " (frames";
+                for (std::size_t i = 0; i < v.notOk.size() && i < 8; ++i) verdicts += " " + std::to_string(v.notOk[i]);
+                verdicts += v.notOk.size() > 8 ? " ...)" : ")";
+            }
+            const ImVec4 colour = v.worst == AnswerVerdict::Ok ? kGood : v.worst == AnswerVerdict::Lost ? kBad : kWarn;
+            if (elidedText(colour, verdicts) && ImGui::IsItemHovered()) tooltip(verdicts);
+            record("text:track-verdicts");
+        }
         if (!v.lastNote.empty() && elidedText(kDim, v.lastNote) && ImGui::IsItemHovered()) tooltip(v.lastNote);
     }
     if (!v.error.empty()) coloredWrapped(kBad, v.error);

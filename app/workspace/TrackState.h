@@ -11,6 +11,7 @@
 
 #include "scene/PoseCurves.h"
 #include "scene/RigidTransform.h"
+#include "search/AnswerVerdict.h"
 
 namespace fm::app {
 
@@ -33,6 +34,10 @@ struct TrackRunView {
     double lastCost = std::nan("");  // summed over the cameras, of the last tracked frame
     int currentFrame = -1;           // being tracked
     std::string lastNote;            // the last frame's: "cameras 1, 2", "bad frame: ..."
+    // How sure the run's frames are (search/AnswerVerdict): counts, the frames not ok, the worst.
+    int ok = 0, doubtful = 0, lost = 0;
+    std::vector<int> notOk;
+    AnswerVerdict worst = AnswerVerdict::Ok;
 };
 
 struct TrackState {

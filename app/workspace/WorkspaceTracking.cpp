@@ -59,9 +59,19 @@ void WorkspaceTracking::poll(const WorkspaceModel& model, WorkspaceState& state)
         if (!s.records.empty()) {
             const FrameRecord& r = s.records.back();
             t.run.lastNote = "frame " + std::to_string(r.frame) + ": " +
-                             (r.status == FrameRecord::Status::Tracked ? r.note
+                             (r.status == FrameRecord::Status::Tracked ? r.note + "; " + r.verdictText
                                                                         : std::string(toString(r.status)) +
                                                                               (r.note.empty() ? "" : " (" + r.note + ")"));
+        }
+        // Every frame of the run judged (a frame not tracked counts as lost).
+        t.run.ok = t.run.doubtful = t.run.lost = 0;
+        t.run.notOk.clear();
+        t.run.worst = AnswerVerdict::Ok;
+        for (const FrameRecord& r : s.records) {
+            const AnswerVerdict v = r.status == FrameRecord::Status::Tracked ? r.verdict : AnswerVerdict::Lost;
+            (v == AnswerVerdict::Ok ? t.run.ok : v == AnswerVerdict::Doubtful ? t.run.doubtful : t.run.lost) += 1;
+            if (v != AnswerVerdict::Ok) t.run.notOk.push_back(r.frame);
+            if (static_cast<int>(v) > static_cast<int>(t.run.worst)) t.run.worst = v;
         }
     }
     if (t.playing && state.frameCount > 1) {

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <algorithm>
 #include <limits>
 #include <vector>
 
@@ -19,6 +20,24 @@ constexpr double kFlatFraction = 1e-6;
 constexpr double kUnfixedShare = 0.1;
 
 }  // namespace
+
+SearchPoint spreadAlong(const PoseUncertainty& u, const glm::dmat3& axes) {
+    SearchPoint out{};
+    for (int block = 0; block < 2; ++block) {
+        const int o = 3 * block;
+        for (int a = 0; a < 3; ++a) {
+            const glm::dvec3 d = axes[a];
+            double v = 0.0;
+            bool unfixed = false;
+            for (int i = 0; i < 3; ++i) {
+                if (std::abs(d[i]) > 1e-9 && !std::isfinite(u.sd[o + i])) unfixed = true;
+                for (int j = 0; j < 3; ++j) v += d[i] * u.covariance[o + i][o + j] * d[j];
+            }
+            out[o + a] = unfixed ? std::numeric_limits<double>::infinity() : std::sqrt(std::max(0.0, v));
+        }
+    }
+    return out;
+}
 
 const char* searchCoordinateName(int i) {
     static const char* names[kN] = {"u", "v", "depth", "about u", "about v", "about view"};
@@ -82,6 +101,8 @@ PoseUncertainty poseUncertainty(const std::function<double(const SearchPoint&)>&
                 if (std::abs(e) >= kUnfixedShare) variance[i] = std::numeric_limits<double>::infinity();
             } else {
                 variance[i] += 2.0 * costResolution * e * e / values[k];
+                for (int j = 0; j < kN; ++j)
+                    out.covariance[i][j] += 2.0 * costResolution * e * vectors[j * kN + k] / values[k] * step[i] * step[j];
             }
         }
     }

@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include <glm/glm.hpp>
+
 #include "search/Registration.h"
 
 namespace fm {
@@ -32,12 +34,20 @@ struct PoseUncertainty {
     SearchPoint sd{};  // per search coordinate; +inf = not fixed by the images
     SearchPoint step{};  // the finite-difference steps used
     std::array<std::array<double, 6>, 6> hessian{};  // cost per unit^2 (mm, deg)
+    // 2k H^-1 over the directions the cost rises along (mm, deg); an unfixed coordinate's sd is inf.
+    std::array<std::array<double, 6>, 6> covariance{};
     bool bounded = false;  // every direction raises the cost (H positive definite)
     int evaluations = 0;
     bool measured() const { return evaluations > 0; }
     // The coordinates whose spread exceeds the weak bounds ("depth", "about v"), in order.
     std::vector<int> weak() const;
 };
+
+// The spread along other axes: translations and rotations along the columns of `axes` (unit
+// vectors given in the search coordinates' camera axes u, v, view; e.g. a bone's axes), from the
+// covariance's translation and rotation blocks (small angles: a rotation about an axis is the
+// rotation vector's component along it). +inf where an unfixed coordinate enters.
+SearchPoint spreadAlong(const PoseUncertainty& u, const glm::dmat3& axes);
 
 // The names of the search coordinates: "u", "v", "depth", "about u", "about v", "about view".
 const char* searchCoordinateName(int i);

@@ -30,6 +30,7 @@ struct Fixed {  // the part every record has, whatever the camera count
     std::int32_t hasRatio = 0;
     double sd[6] = {};
     double step[6] = {};
+    double boneSd[6] = {};
     double ratio = 0.0;
     std::int32_t verdictLength = 0;
     std::int32_t unused = 0;
@@ -72,7 +73,7 @@ void encodeFrameRecord(const FrameRecord& r, std::span<std::byte> out) {
         f.hasUncertainty = 1;
         f.uncertaintyBounded = u->bounded ? 1 : 0;
         f.uncertaintyEvaluations = u->evaluations;
-        for (int i = 0; i < 6; ++i) f.sd[i] = u->sd[i], f.step[i] = u->step[i];
+        for (int i = 0; i < 6; ++i) f.sd[i] = u->sd[i], f.step[i] = u->step[i], f.boneSd[i] = r.boneFrameSd[i];
     }
     if (r.evidence.similarityRatio) {
         f.hasRatio = 1;
@@ -138,7 +139,7 @@ FrameRecord decodeFrameRecord(std::span<const std::byte> in, std::size_t cameras
         PoseUncertainty u;
         u.bounded = f.uncertaintyBounded != 0;
         u.evaluations = f.uncertaintyEvaluations;
-        for (int i = 0; i < 6; ++i) u.sd[i] = f.sd[i], u.step[i] = f.step[i];
+        for (int i = 0; i < 6; ++i) u.sd[i] = f.sd[i], u.step[i] = f.step[i], r.boneFrameSd[i] = f.boneSd[i];
         r.evidence.uncertainty = u;
     }
     if (f.hasRatio) r.evidence.similarityRatio = f.ratio;

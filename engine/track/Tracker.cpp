@@ -184,6 +184,9 @@ FrameRecord Tracker::trackFrameWith(const TrackSettings& settings, int frame, co
     AnswerEvidence& evidence = record.evidence;
     if (settings.uncertainty) {
         evidence.uncertainty = poseUncertainty(*answeredBy, r.params);  // its evaluations are its own
+        // The bone's axes in the camera's frame: the same spreads along them.
+        const glm::dmat3 axes = glm::transpose(param->worldFromCamera().rotation) * record.worldFromBone->rotation;
+        record.boneFrameSd = spreadAlong(*evidence.uncertainty, axes);
     }
     std::vector<double> reference = context.referenceSimilarity;
     reference.resize(scene_.cameras.size(), std::numeric_limits<double>::quiet_NaN());

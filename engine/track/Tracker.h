@@ -102,6 +102,8 @@ struct FrameRecord {
     AnswerVerdict verdict = AnswerVerdict::Doubtful;
     std::string verdictText;                     // "ok: similarity 0.99 of the last good frames' ..."
     AnswerEvidence evidence;  // its uncertainty (first taking camera's frame) and similarity ratio
+    // The uncertainty along the bone's own axes (its volume's x, y, z; mm and deg), when measured.
+    SearchPoint boneFrameSd{};
     int searches = 0;                            // 2 when searched again
     // A pose to keep: tracked and not lost (a lost pose is neither written nor a later start).
     bool answered() const { return status == Status::Tracked && worldFromBone && verdict != AnswerVerdict::Lost; }

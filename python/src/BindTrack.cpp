@@ -35,6 +35,14 @@ pb::dict recordDict(const FrameRecord& r, const TrialScene& scene, const std::st
     d["verdict_text"] = r.verdictText;
     d["uncertainty"] = r.evidence.uncertainty ? pb::object(uncertaintyDict(*r.evidence.uncertainty)) : pb::none();
     d["similarity_ratio"] = r.evidence.similarityRatio ? pb::cast(*r.evidence.similarityRatio) : pb::none();
+    if (r.evidence.uncertainty) {  // the same spreads along the bone's axes
+        pb::dict bone;
+        static const char* names[6] = {"x", "y", "z", "about x", "about y", "about z"};
+        for (int i = 0; i < 6; ++i) bone[names[i]] = r.boneFrameSd[i];
+        d["uncertainty_bone"] = bone;
+    } else {
+        d["uncertainty_bone"] = pb::none();
+    }
     d["searches"] = r.searches;
     d["pose"] = r.worldFromBone ? pb::object(fromTransform(traPoseFromObject(scene, bone, *r.worldFromBone)))
                                 : pb::none();
@@ -205,7 +213,7 @@ frames: 8-bit inverted, deeper log). The same poses as the CLI for the same argu
 Returns (for one bone) a dict: poses (frames, 4, 4) as the .tra holds them (Autoscoper's
 worldFromVolume; NaN where not tracked or lost), frames (one dict per tracked frame: frame,
 status, note, verdict ("ok", "doubtful", "lost"), verdict_text, uncertainty (per coordinate of
-the first taking camera's frame), similarity_ratio (against the last good frames), searches,
+the first taking camera's frame; uncertainty_bone along the bone's axes), similarity_ratio (against the last good frames), searches,
 pose, object_pose, costs per camera, cameras_used, evaluations, seconds), written, stopped,
 preparation (per camera: camera, values, i0 (NaN unless log), exclude_below, erode, roi,
 source: "the trial's", "default for 8-bit frames: ...", text: as the CLI prints it); for a list

@@ -339,6 +339,11 @@ TEST_F(TrackUi, UndoTakesBackASolveATrackRunAndANudgeOneStepEach) {
     idleUntil([&] { return !app->state().track.run.running; });
     script->idle(2);
     ASSERT_TRUE(app->state().track.run.error.empty()) << app->state().track.run.error;
+    // Every frame of the run judged, the counts shown (coloured by the worst).
+    const app::TrackRunView& run = app->state().track.run;
+    EXPECT_EQ(run.ok + run.doubtful + run.lost, run.done);
+    EXPECT_EQ(static_cast<int>(run.notOk.size()), run.doubtful + run.lost);
+    EXPECT_NO_THROW(script->widget("text:track-verdicts"));
     const auto tracked = app->state().poses;
     ASSERT_FALSE(samePoses(tracked, nudged));
     // Another object selected: the ulna's run is not shown as its.

@@ -69,6 +69,30 @@ TEST(PoseUncertainty, QuadraticCostGivesTheMarginalSpreads) {
     EXPECT_TRUE(u.weak().empty()) << describeUncertainty(u);
 }
 
+TEST(PoseUncertainty, SpreadAlongOtherAxesRotatesTheCovariance) {
+    const Matrix h = singleViewHessian();
+    const double k = 2e-3;
+    const PoseUncertainty u = poseUncertainty([&](const SearchPoint& x) { return quadratic(h, x); }, kUncertaintySteps, k);
+    const Matrix c = inverse(h);  // the covariance is 2k H^-1
+    for (int i = 0; i < 6; ++i)
+        for (int j = 0; j < 6; ++j) EXPECT_NEAR(u.covariance[i][j], 2.0 * k * c[i][j], 1e-9) << i << j;
+    // The camera's own axes give the marginal spreads back.
+    const SearchPoint same = spreadAlong(u, glm::dmat3(1.0));
+    for (int i = 0; i < 6; ++i) EXPECT_NEAR(same[i], u.sd[i], 1e-12);
+    // Axes turned 90 deg about the view: u and v swap, view stays; a diagonal axis mixes u and v
+    // with their covariance: d' C d by hand.
+    const glm::dmat3 turned(glm::dvec3(0, 1, 0), glm::dvec3(-1, 0, 0), glm::dvec3(0, 0, 1));
+    const SearchPoint swapped = spreadAlong(u, turned);
+    EXPECT_NEAR(swapped[0], u.sd[1], 1e-12);
+    EXPECT_NEAR(swapped[1], u.sd[0], 1e-12);
+    EXPECT_NEAR(swapped[5], u.sd[5], 1e-12);
+    const double r = std::sqrt(0.5);
+    const glm::dmat3 diagonal(glm::dvec3(r, r, 0), glm::dvec3(-r, r, 0), glm::dvec3(0, 0, 1));
+    const SearchPoint mixed = spreadAlong(u, diagonal);
+    const double byHand = 0.5 * 2.0 * k * (c[3][3] + 2.0 * c[3][4] + c[4][4]);
+    EXPECT_NEAR(mixed[3], std::sqrt(byHand), 1e-12);
+}
+
 TEST(PoseUncertainty, FlatDirectionLeavesTheCoordinatesItMovesUnfixed) {
     Matrix h = singleViewHessian();
     h[2][2] = 0.0;  // depth free and uncoupled
@@ -79,6 +103,12 @@ TEST(PoseUncertainty, FlatDirectionLeavesTheCoordinatesItMovesUnfixed) {
     EXPECT_TRUE(std::isinf(u.sd[2]));
     for (int i : {0, 1, 3, 4, 5}) EXPECT_TRUE(std::isfinite(u.sd[i])) << searchCoordinateName(i);
     ASSERT_EQ(u.weak(), std::vector<int>{2});
+    // Along other axes: unfixed wherever depth enters, fixed where it does not.
+    const double r = std::sqrt(0.5);
+    const SearchPoint along = spreadAlong(u, glm::dmat3(glm::dvec3(r, 0, r), glm::dvec3(0, 1, 0), glm::dvec3(-r, 0, r)));
+    EXPECT_TRUE(std::isinf(along[0]));
+    EXPECT_TRUE(std::isfinite(along[1]));
+    EXPECT_TRUE(std::isinf(along[2]));
     EXPECT_NE(describeUncertainty(u).find("depth not fixed"), std::string::npos) << describeUncertainty(u);
     EXPECT_NE(describeUncertainty(u).find("weakly fixed: depth"), std::string::npos);
 }

@@ -36,6 +36,7 @@ FrameRecord sample() {
     u.bounded = false;
     u.evaluations = 73;
     r.evidence.uncertainty = u;
+    r.boneFrameSd = {0.06, 0.05, 0.3, std::numeric_limits<double>::infinity(), 0.25, 0.125};
     r.evidence.similarityRatio = 0.8712345678;
     return r;
 }
@@ -74,6 +75,7 @@ TEST(FrameRecordBytes, RoundTripIsExact) {
     for (int i = 0; i < 6; ++i) {
         EXPECT_EQ(d.evidence.uncertainty->sd[i], r.evidence.uncertainty->sd[i]) << i;
         EXPECT_EQ(d.evidence.uncertainty->step[i], r.evidence.uncertainty->step[i]) << i;
+        EXPECT_EQ(d.boneFrameSd[i], r.boneFrameSd[i]) << i;
     }
     EXPECT_FALSE(d.evidence.uncertainty->bounded);
     EXPECT_EQ(d.evidence.uncertainty->evaluations, 73);
