@@ -133,10 +133,16 @@ void runRegisterBone(const RegisterArgs& a) {
     std::printf("search      %s, %s, seed %llu, %s\n", fm::toString(settings.method),
                 fm::toString(settings.similarity), static_cast<unsigned long long>(settings.seed),
                 fm::cli::describeLevels(settings).c_str());
+    fm::ConfirmationSettings confirmation;
+    confirmation.runs = a.xray.runs;
+    confirmation.maxRuns = a.xray.maxRuns;
+    if (confirmation.maxRuns < confirmation.runs)
+        throw fm::Error("--max-runs (" + std::to_string(confirmation.maxRuns) + ") must be at least --runs (" +
+                        std::to_string(confirmation.runs) + ")");
     fm::cli::ProgressBar bar(isatty(fileno(stderr)) != 0);
     const fm::BoneRegistrationResult r =
         fm::registerBone(scene, bone.name, references, settings, a.marginMm,
-                         [&](const fm::RegistrationProgress& p) { bar.update(p); });
+                         [&](const fm::RegistrationProgress& p) { bar.update(p); }, nullptr, confirmation);
     bar.finish();
     const auto before = fm::bonePoseError(scene.cameras[0], truth, {}, targets);
     const auto after = fm::bonePoseError(scene.cameras[0], truth, r.worldFromBone, targets);
@@ -148,8 +154,11 @@ void runRegisterBone(const RegisterArgs& a) {
     std::printf("mTRE        start %.3f mm -> final %.3f mm (in-plane %.3f mm, out-of-plane "
                 "%.3f mm; %zu targets)\n",
                 before.meanMm, after.meanMm, after.meanInPlaneMm, after.meanDepthMm, targets.size());
-    std::printf("time        %.3f s (%d evaluations)%s\n", r.search.seconds, r.search.evaluations,
-                r.search.stopped ? " (stopped)" : "");
+    std::printf("time        %.3f s (%d evaluations in %d %s)%s\n", r.search.seconds, r.search.evaluations,
+                r.evidence.runs, r.evidence.runs == 1 ? "search" : "searches", r.search.stopped ? " (stopped)" : "");
+    if (r.evidence.uncertainty)
+        std::printf("uncertainty %s (camera 1's frame)\n", fm::describeUncertainty(*r.evidence.uncertainty).c_str());
+    std::printf("verdict     %s\n", fm::judgeEvidence(r.evidence).text.c_str());
 }
 
 void printPoseRow(const char* label, const std::array<double, 6>& v) {
@@ -190,7 +199,7 @@ const std::vector<fm::cli::CommandMode>& registerModes() {
                          "spacing", "thickness", "interpolation"})},
             {"register --bone", "one bone of a labelled CT against a reference it renders",
              withSearch({"volume", "labels", "label-table", "bone", "without", "bone-motion",
-                         "pose", "biplane", "no-rest", "footprint-margin", "values"})},
+                         "pose", "biplane", "no-rest", "footprint-margin", "values", "runs", "max-runs"})},
             {"register", "a CT against one image, the 2011 pose",
              withSearch({"volume", "reference-pose", "reference", "geometry", "start", "truth",
                          "values", "runs", "max-runs"})}};

@@ -31,6 +31,12 @@ out=$("$FM" register --reference "$IMG" --camera "$CAL" --model "$FEM" --invert 
 grep -q "^final pose" <<<"$out" || fail "no final pose: $out"
 grep -q "^similarity" <<<"$out" || fail "no similarity: $out"
 grep -q "^time" <<<"$out" || fail "no time: $out"
+# How sure: two searches from independent starts agree, the mask and the outline confirm it; the
+# spread per coordinate, depth the weak one of one view.
+grep -q "^verdict     ok: 2 of 2 searches from different starts end here; silhouette IoU" <<<"$out" ||
+    fail "no ok verdict with its reasons: $out"
+grep -q "^uncertainty u .* mm, v .* mm, depth .* mm, about u .* deg" <<<"$out" || fail "no uncertainty line: $out"
+grep -q "^run 2 " <<<"$out" || fail "no second search: $out"
 iou=$(sed -n 's/^IoU *\([0-9.]*\) .*/\1/p' <<<"$out")
 python3 -c "import sys; sys.exit(0 if float('$iou') >= 0.95 else 1)" || fail "IoU $iou < 0.95"
 python3 - "$OUT/fem.jts" "$D/fem.jts" <<'PY' || fail "written pose is not near fem.jts"
@@ -48,6 +54,7 @@ out=$("$FM" register --reference "$D/AT_K1_V1_0170.tif" --camera "$CAL" --model 
     --invert --start "$D/fem.jts" --start "$D/tib.jts" --frame 1 --out "$OUT/both.tra" --threads 2) ||
     fail "two-model register exited $?: $out"
 grep -q "^total time" <<<"$out" || fail "no total time: $out"
+[ "$(grep -c "^verdict     ok" <<<"$out")" = 2 ] || fail "both implants' verdicts must be ok: $out"
 python3 - "$OUT/both.tra" <<'PY' || fail "both.tra layout"
 import sys
 rows = [l for l in open(sys.argv[1]).read().split("\n") if l]
@@ -102,6 +109,8 @@ refuse "--out .txt" "must end in .jts or .tra" "${base[@]}" --start "$D/fem.jts"
 refuse "a frame the file does not have" "frame 5 does not exist" "${base[@]}" --start "$D/fem.jts" --frame 5
 refuse "two starts for one model" "one per --model" "${base[@]}" --start "$D/fem.jts" --start "$D/tib.jts"
 refuse "a mask per model" "--mask" "${base[@]}" --start "$D/fem.jts" --mask "$MASK" --mask "$MASK"
+refuse "--max-runs below --runs" "must be at least --runs" "${base[@]}" --start "$D/fem.jts" --runs 3 --max-runs 2
+refuse "--runs 0" "--runs" "${base[@]}" --start "$D/fem.jts" --runs 0
 # A mask of another size: a 16 x 16 PNG (stb reads it), written with python's zlib.
 python3 - "$OUT/small.png" <<'PY'
 import struct, sys, zlib

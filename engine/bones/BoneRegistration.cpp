@@ -37,11 +37,19 @@ Mask boneFootprint(const Scene& scene, const std::string& bone, std::size_t came
     return mask;
 }
 
+ConfirmationSettings singleBoneSearch() {
+    ConfirmationSettings one;
+    one.runs = 1;
+    one.maxRuns = 1;
+    one.uncertainty = false;
+    return one;
+}
+
 BoneRegistrationResult registerBone(const Scene& scene, const std::string& bone,
                                     const std::vector<Image>& references,
                                     const RegistrationSettings& settings, double marginMm,
                                     const RegistrationCallback& progress,
-                                    const std::atomic<bool>* stop) {
+                                    const std::atomic<bool>* stop, const ConfirmationSettings& confirmation) {
     if (references.size() != scene.cameras.size())
         throw Error("bone registration: " + std::to_string(references.size()) +
                     " reference images for " + std::to_string(scene.cameras.size()) + " cameras");
@@ -51,8 +59,20 @@ BoneRegistrationResult registerBone(const Scene& scene, const std::string& bone,
         views.push_back({c, references[c], boneFootprint(scene, bone, c, marginMm)});
     const Registration registration(scene, parameterization, std::move(views), settings);
     BoneRegistrationResult out;
-    out.search = registration.run(parameterization->referenceParams(), progress, stop);
+    const ConfirmedSearch confirmed =
+        runConfirmed(registration, parameterization->referenceParams(), confirmation, progress, stop);
+    out.search = confirmed.answer;
     out.worldFromBone = parameterization->worldFromObject(out.search.params);
+    out.evidence.runs = static_cast<int>(confirmed.runs.size());
+    out.evidence.agreeing = confirmed.agreeing;
+    out.evidence.stopped = out.search.stopped;
+    if (confirmed.uncertainty.measured()) out.evidence.uncertainty = confirmed.uncertainty;
+    const double ceiling = registration.referenceSelfSimilarity();
+    if (ceiling > 0.0) {
+        out.evidence.similarityRatio = out.search.similarity / ceiling;
+        out.evidence.similarityReference = "a perfect match's";
+        out.evidence.confirmedRatio = kConfirmedPerfectMatchRatio;
+    }
     return out;
 }
 

@@ -10,6 +10,8 @@
 #include "match/PoseError.h"
 #include "scene/ObjectPoseParameterization.h"
 #include "scene/Scene.h"
+#include "search/AnswerVerdict.h"
+#include "search/ConfirmedSearch.h"
 #include "search/Registration.h"
 #include "similarity/Mask.h"
 
@@ -28,8 +30,14 @@ Mask boneFootprint(const Scene& scene, const std::string& bone, std::size_t came
 
 struct BoneRegistrationResult {
     RigidTransform worldFromBone;  // the pose found
-    RegistrationResult search;
+    RegistrationResult search;     // the best search; evaluations and seconds are all searches'
+    // How sure it is, without the truth: the searches from independent starts, the curvature,
+    // and the similarity against a perfect match (the references are the scene's own DRRs).
+    AnswerEvidence evidence;
 };
+
+// One search, no uncertainty: what the games' Solve runs (they judge against their truth).
+ConfirmationSettings singleBoneSearch();
 
 // Registers `bone` from its current pose in `scene` against one reference image per camera
 // (references[i] for scene.cameras[i]); the other objects keep their poses. Every view is
@@ -38,7 +46,8 @@ BoneRegistrationResult registerBone(const Scene& scene, const std::string& bone,
                                     const std::vector<Image>& references,
                                     const RegistrationSettings& settings, double marginMm = 20.0,
                                     const RegistrationCallback& progress = {},
-                                    const std::atomic<bool>* stop = nullptr);
+                                    const std::atomic<bool>* stop = nullptr,
+                                    const ConfirmationSettings& confirmation = singleBoneSearch());
 
 // mTRE of a bone pose against the true one, over `targets` in the bone's own frame, measured
 // in `cameraInWorld`'s frame (in-plane and depth parts as for the 2011 poses).

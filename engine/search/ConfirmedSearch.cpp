@@ -39,7 +39,10 @@ ConfirmedSearch runConfirmed(const Registration& registration, const SceneParams
     const RegistrationSettings& settings = registration.settings();
     ConfirmedSearch out;
     std::size_t best = 0;
-    for (int run = 0; run < confirmation.maxRuns && (run < confirmation.runs || out.agreeing < 2); ++run) {
+    // More than `runs` only while no two agree, and never for one search (runs = 1: unconfirmed).
+    for (int run = 0; run < confirmation.maxRuns &&
+                      (run < confirmation.runs || (confirmation.runs >= 2 && out.agreeing < 2));
+         ++run) {
         if (run > 0 && stop && stop->load()) break;
         const SceneParams from =
             registration.parameterization().fromSearchPoint(start, confirmationPoint(settings, confirmation, run));

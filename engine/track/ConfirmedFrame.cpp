@@ -38,7 +38,10 @@ ConfirmedFrame registerFrameConfirmed(const Scene& scene, const std::string& bon
     own.confirming = true;  // the runs here confirm each other
     int agreeing = 0;
     std::size_t best = 0;
-    for (int run = 0; run < confirmation.maxRuns && (run < confirmation.runs || agreeing < 2); ++run) {
+    // More than `runs` only while no two agree, and never for one search (runs = 1: unconfirmed).
+    for (int run = 0; run < confirmation.maxRuns &&
+                      (run < confirmation.runs || (confirmation.runs >= 2 && agreeing < 2));
+         ++run) {
         if (run > 0 && stop && stop->load()) break;
         TrackSettings seeded = settings;
         seeded.registration.seed = settings.registration.seed + static_cast<std::uint64_t>(run);

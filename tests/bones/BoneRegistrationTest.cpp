@@ -76,7 +76,9 @@ TEST(BoneRegistration, FemurThenHipOnTheRealCtRecoverTheirPosesAndTheRelativePos
     refine.searchRadius = {2.0, 2.0, 4.0, 2.0, 2.0, 2.0};
     refine.globalEvaluations = 60;
     refine.levelFactors = {2, 1};
-    const fm::BoneRegistrationResult f2 = fm::registerBone(scene, "femur_right", references, refine);
+    // Confirmed (register --bone's default): two searches from independent starts, the curvature.
+    const fm::BoneRegistrationResult f2 =
+        fm::registerBone(scene, "femur_right", references, refine, 20.0, {}, nullptr, fm::ConfirmationSettings{});
     scene.object("femur_right").worldFromObject = f2.worldFromBone;
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -103,6 +105,17 @@ TEST(BoneRegistration, FemurThenHipOnTheRealCtRecoverTheirPosesAndTheRelativePos
     EXPECT_LT(femurError, 1.0);
     EXPECT_LT(hipError, 1.0);
     EXPECT_LT(relative, 1.0);
+    // How sure, without the truth: the searches agree, the similarity is a perfect match's.
+    const fm::AnswerCheck verdict = fm::judgeEvidence(f2.evidence);
+    EXPECT_EQ(verdict.verdict, fm::AnswerVerdict::Ok) << verdict.text;
+    EXPECT_GE(f2.evidence.runs, 2);
+    ASSERT_TRUE(f2.evidence.similarityRatio);
+    EXPECT_GT(*f2.evidence.similarityRatio, fm::kConfirmedPerfectMatchRatio);
+    ASSERT_TRUE(f2.evidence.uncertainty);
+    EXPECT_TRUE(f2.evidence.uncertainty->bounded);
+    // The first searches ran alone (the games' default): no confirmation, never ok on that.
+    EXPECT_EQ(f.evidence.runs, 1);
+    EXPECT_FALSE(f.evidence.uncertainty);
 }
 
 }  // namespace
