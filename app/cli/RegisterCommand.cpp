@@ -133,12 +133,7 @@ void runRegisterBone(const RegisterArgs& a) {
     std::printf("search      %s, %s, seed %llu, %s\n", fm::toString(settings.method),
                 fm::toString(settings.similarity), static_cast<unsigned long long>(settings.seed),
                 fm::cli::describeLevels(settings).c_str());
-    fm::ConfirmationSettings confirmation;
-    confirmation.runs = a.xray.runs;
-    confirmation.maxRuns = a.xray.maxRuns;
-    if (confirmation.maxRuns < confirmation.runs)
-        throw fm::Error("--max-runs (" + std::to_string(confirmation.maxRuns) + ") must be at least --runs (" +
-                        std::to_string(confirmation.runs) + ")");
+    const fm::ConfirmationSettings confirmation = fm::cli::confirmationFrom(a.xray);
     fm::cli::ProgressBar bar(isatty(fileno(stderr)) != 0);
     const fm::BoneRegistrationResult r =
         fm::registerBone(scene, bone.name, references, settings, a.marginMm,
@@ -301,12 +296,7 @@ void runRegister(const RegisterArgs& a, bool similarityGiven, int frame) {
         std::printf("            (finer levels left out: their rays would resample the %.3g mm "
                     "voxels)\n",
                     std::min({fm::drrVolumeInfo(*prepared).spacing.x, fm::drrVolumeInfo(*prepared).spacing.y, fm::drrVolumeInfo(*prepared).spacing.z}));
-    fm::ConfirmationSettings confirmation;
-    confirmation.runs = a.xray.runs;
-    confirmation.maxRuns = a.xray.maxRuns;
-    if (confirmation.maxRuns < confirmation.runs)
-        throw fm::Error("--max-runs (" + std::to_string(confirmation.maxRuns) + ") must be at least --runs (" +
-                        std::to_string(confirmation.runs) + ")");
+    const fm::ConfirmationSettings confirmation = fm::cli::confirmationFrom(a.xray);
     std::printf("            %d %s%s\n", confirmation.runs,
                 confirmation.runs == 1 ? "search" : "searches from independent starts",
                 confirmation.runs > 1
@@ -424,8 +414,7 @@ FM_REGISTER_COMMAND("register", 40, [](CLI::App& app) {
             trial->out = a->xray.outs.empty() ? std::string() : a->xray.outs[0];
             trial->seed = a->search.seed;
             trial->threads = a->search.threads;
-            trial->runs = a->xray.runs;
-            trial->maxRuns = a->xray.maxRuns;
+            trial->confirmation = fm::cli::confirmationFrom(a->xray);
             trial->prep = a->xray.prep;
             fm::cli::runTrialRegister(*trial);
         } else {

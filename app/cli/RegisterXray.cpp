@@ -71,6 +71,16 @@ void addXrayRegisterOptions(CLI::App* cmd, XrayRegisterArgs& a) {
     addRadiographOptions(cmd, a.prep);
 }
 
+ConfirmationSettings confirmationFrom(const XrayRegisterArgs& a) {
+    if (a.maxRuns < a.runs)
+        throw Error("--max-runs (" + std::to_string(a.maxRuns) + ") must be at least --runs (" +
+                    std::to_string(a.runs) + ")");
+    ConfirmationSettings c;
+    c.runs = a.runs;
+    c.maxRuns = a.maxRuns;
+    return c;
+}
+
 void runXrayRegister(const std::string& reference, const XrayRegisterArgs& a,
                      const std::vector<std::string>& starts, const SearchArgs& search,
                      bool similarityGiven) {
@@ -80,9 +90,7 @@ void runXrayRegister(const std::string& reference, const XrayRegisterArgs& a,
     if (starts.empty()) throw Error("--model needs --start POSES (a .jts, .tra or six numbers)");
     if (!a.masks.empty() && a.masks.size() != n)
         throw Error("--mask: give one per --model (" + std::to_string(n) + ")");
-    if (a.maxRuns < a.runs)
-        throw Error("--max-runs (" + std::to_string(a.maxRuns) + ") must be at least --runs (" +
-                    std::to_string(a.runs) + ")");
+    const ConfirmationSettings confirmation = confirmationFrom(a);
     if (!(a.mu >= 0.0) || a.mu > 1e3)
         throw Error("--mu must be 0 (the default) or a positive attenuation in 1/mm");
     // Everything that can be refused is checked before the search.
@@ -138,9 +146,6 @@ void runXrayRegister(const std::string& reference, const XrayRegisterArgs& a,
                 file.format.c_str(), size.x, size.y, prepared.valid.count(),
                 prepared.valid.inside.size());
     std::printf("camera      %s (%s)\n", a.camera.c_str(), cam.format.c_str());
-    ConfirmationSettings confirmation;
-    confirmation.runs = a.runs;
-    confirmation.maxRuns = a.maxRuns;
     const bool sideBySide = registersSideBySide(n * static_cast<std::size_t>(a.runs), settings);
     std::printf("search      %s, %s, seed %llu, %s, %d %s per model%s, %s\n",
                 toString(settings.method), toString(settings.similarity),

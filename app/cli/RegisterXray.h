@@ -6,6 +6,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "search/ConfirmedSearch.h"
+
 #include "cli/RadiographOptions.h"
 #include "cli/SearchCli.h"
 
@@ -25,6 +27,10 @@ struct XrayRegisterArgs {
     int maxRuns = 4;      // --max-runs: the re-search's budget while no two agree
     RadiographOptions prep;
 };
+
+// --runs and --max-runs as a confirmation (search/ConfirmedSearch.h); fm::Error when --max-runs
+// is below --runs. register's every mode that searches uses it.
+ConfirmationSettings confirmationFrom(const XrayRegisterArgs& args);
 
 // --camera, --model, --out, --mask, --mu, --page and the preparation flags (--start,
 // --reference and --frame are the register command's own).

@@ -60,9 +60,6 @@ void runTrialRegister(const TrialRegisterArgs& a) {
     }
     if (!start) throw Error("no start pose for " + a.bone + " at frame " + std::to_string(a.frame) +
                             ": give --start S.tra or a keyframe in the trial");
-    if (a.maxRuns < a.runs)
-        throw Error("--max-runs (" + std::to_string(a.maxRuns) + ") must be at least --runs (" +
-                    std::to_string(a.runs) + ")");
     const std::vector<std::size_t> cameras = parseCameraList(a.cameras, scene.cameras.size());
     TrackSettings settings;
     settings.registration.seed = a.seed;
@@ -72,11 +69,8 @@ void runTrialRegister(const TrialRegisterArgs& a) {
     FrameContext context;
     context.startIsKeyframe = a.start.empty();
     // Searches from independent starts, as register --model confirms a model.
-    ConfirmationSettings confirmation;
-    confirmation.runs = a.runs;
-    confirmation.maxRuns = a.maxRuns;
     const ConfirmedFrame confirmed =
-        registerFrameConfirmed(scene.scene, a.bone, views, settings, a.frame, *start, context, confirmation);
+        registerFrameConfirmed(scene.scene, a.bone, views, settings, a.frame, *start, context, a.confirmation);
     const FrameRecord& r = confirmed.answer;
     const AnswerEvidence& evidence = confirmed.evidence;
     const AnswerCheck& check = confirmed.check;

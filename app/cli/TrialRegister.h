@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/RadiographOptions.h"
+#include "search/ConfirmedSearch.h"
 
 namespace fm::cli {
 
@@ -18,8 +19,7 @@ struct TrialRegisterArgs {
     std::string out;      // .tra with the result at --frame
     std::uint64_t seed = 1;
     int threads = 0;
-    int runs = 2;     // searches from independent starts (register's --runs)
-    int maxRuns = 4;  // --max-runs
+    ConfirmationSettings confirmation;  // register's --runs, --max-runs
     RadiographOptions prep;  // over the trial's preparation of every camera (register's flags)
 };
 

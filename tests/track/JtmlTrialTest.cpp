@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include "common/ErrorText.h"
 #include "common/TestData.h"
 #include "core/Error.h"
 #include "scene/MeshXrayModel.h"
@@ -19,14 +20,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string errorOf(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const fm::Error& e) {
-        return e.what();
-    }
-    return "";
-}
+using fm::test::errorOf;
 
 fs::path writeText(const fs::path& p, const std::string& text) {
     std::ofstream(p) << text;

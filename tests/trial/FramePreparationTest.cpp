@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "common/ErrorText.h"
 #include "common/TestData.h"
 #include "core/Error.h"
 #include "trial/AutoscoperConfig.h"
@@ -16,14 +17,7 @@ namespace {
 namespace fs = std::filesystem;
 using fm::FramePreparation;
 
-std::string errorOf(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const fm::Error& e) {
-        return e.what();
-    }
-    return "";
-}
+using fm::test::errorOf;
 
 // One of each kind: log with I0, inverted with an exclusion and an roi, as stored.
 std::vector<FramePreparation> examples() {

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include "common/ErrorText.h"
 #include "common/TestData.h"
 #include "core/Error.h"
 #include "trial/AutoscoperConfig.h"
@@ -20,14 +21,7 @@ fs::path writeText(const fs::path& dir, const std::string& name, const std::stri
     return p;
 }
 
-std::string errorOf(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const fm::Error& e) {
-        return e.what();
-    }
-    return "";
-}
+using fm::test::errorOf;
 
 using fm::test::sharedDataBesideRepo;
 

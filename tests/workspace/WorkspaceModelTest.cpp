@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include "common/ErrorText.h"
 #include "WorkspaceTestData.h"
 #include "core/Error.h"
 #include "pose/AutoscoperTra.h"
@@ -20,15 +21,6 @@ namespace fm::test {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string errorOf(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const Error& e) {
-        return e.what();
-    }
-    return "";
-}
 
 void expectSameImage(const Image& a, const Image& b) {
     ASSERT_EQ(a.width, b.width);
