@@ -191,7 +191,7 @@ const std::vector<fm::cli::CommandMode>& registerModes() {
             {"register --model", "models in a real radiograph", xray},
             {"register --slice", "a 2D image against slices of a volume",
              withSearch({"slice", "volume", "reference-pose", "reference", "start", "truth", "size",
-                         "spacing", "thickness", "interpolation"})},
+                         "spacing", "thickness", "interpolation", "runs", "max-runs"})},
             {"register --bone", "one bone of a labelled CT against a reference it renders",
              withSearch({"volume", "labels", "label-table", "bone", "without", "bone-motion",
                          "pose", "biplane", "no-rest", "footprint-margin", "values", "runs", "max-runs"})},
@@ -233,6 +233,7 @@ void runRegister(const RegisterArgs& a, bool similarityGiven, int frame) {
         s.grid = a.grid;
         s.interpolation = a.interpolation;
         s.search = a.search;
+        s.confirmation = fm::cli::confirmationFrom(a.xray);
         return fm::cli::runSliceRegister(s);
     }
     if (!a.bones.bone.empty() || !a.bones.labels.empty() || !a.bones.without.empty())

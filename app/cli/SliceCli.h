@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/SearchCli.h"
+#include "search/ConfirmedSearch.h"
 #include "core/Image.h"
 #include "similarity/Mask.h"
 #include "slice/SliceGeometry.h"
@@ -44,6 +45,7 @@ struct SliceRegisterArgs {
     SliceGridArgs grid;
     std::string interpolation = "cubic";
     SearchArgs search;
+    ConfirmationSettings confirmation;  // register's --runs, --max-runs
 };
 void runSliceRegister(const SliceRegisterArgs& args);
 

@@ -9,6 +9,7 @@
 #include "cli/SliceCli.h"
 #include "core/Error.h"
 #include "core/Parallel.h"
+#include "search/AnswerVerdict.h"
 #include "slice/SliceEvaluation.h"
 #include "slice/SlicePoseError.h"
 #include "source/VolumeSource.h"
@@ -77,10 +78,21 @@ void runSliceRegister(const SliceRegisterArgs& a) {
 
     const SliceRegistration registration(prepared, reference, &mask, setup, volume->center(),
                                          settings);
+    // Searches from independent starts (register's rule, search/ConfirmedSearch.h).
     ProgressBar bar(isatty(fileno(stderr)) != 0);
-    const RegistrationResult result =
-        registration.run(start, [&](const RegistrationProgress& p) { bar.update(p); });
+    const ConfirmedSearch confirmed = runConfirmed(
+        [&](const SceneParams& from, std::uint64_t seed, const RegistrationCallback& p) {
+            return registration.run(Pose::fromArray(from), p, nullptr, seed);
+        },
+        [](const SceneParams& s, const SearchPoint& point) {
+            SceneParams p = s;
+            for (int i = 0; i < 6; ++i) p[i] += point[i];
+            return p;
+        },
+        start.toArray(), settings.seed, settings.searchRadius, a.confirmation,
+        [&](const RegistrationProgress& p) { bar.update(p); });
     bar.finish();
+    const RegistrationResult& result = confirmed.answer;
     std::printf("\nfinal pose  %s\n", formatPose(result.pose()).c_str());
     std::printf("similarity  %.5f (%s at the finest level)\n", result.similarity,
                 toString(settings.similarity));
@@ -98,9 +110,33 @@ void runSliceRegister(const SliceRegisterArgs& a) {
             "mm; %zu targets)\n",
             before.meanMm, after.meanMm, after.meanInPlaneMm, after.meanDepthMm, targets.size());
     }
-    std::printf("time        %.3f s (%d evaluations, %.2f ms each)%s\n", result.seconds,
-                result.evaluations, 1000.0 * result.seconds / std::max(1, result.evaluations),
-                result.stopped ? " (stopped)" : "");
+    std::printf("time        %.3f s (%d evaluations in %zu %s, %.2f ms each)%s\n", result.seconds,
+                result.evaluations, confirmed.runs.size(), confirmed.runs.size() == 1 ? "search" : "searches",
+                1000.0 * result.seconds / std::max(1, result.evaluations), result.stopped ? " (stopped)" : "");
+    // How sure, without the truth: the searches' agreement, the curvature of the finest level's
+    // cost, and the similarity against a perfect match (a slice of this volume scores it).
+    AnswerEvidence evidence;
+    evidence.runs = static_cast<int>(confirmed.runs.size());
+    evidence.agreeing = confirmed.agreeing;
+    evidence.stopped = result.stopped;
+    if (!result.stopped) {
+        const int finest = registration.levelCount() - 1;
+        evidence.uncertainty = poseUncertainty(
+            [&](const SearchPoint& x) {
+                SceneParams p = result.params;
+                for (int i = 0; i < 6; ++i) p[i] += x[i];
+                return registration.cost(Pose::fromArray(p), finest);
+            },
+            kUncertaintySteps);
+        static const std::array<const char*, 6> names{"x", "y", "z", "azimuth", "elevation", "rotation"};
+        std::printf("uncertainty %s (the 2011 pose's numbers)\n", describeUncertainty(*evidence.uncertainty, &names).c_str());
+    }
+    if (synthetic) {
+        evidence.similarityRatio = result.similarity / registration.referenceSelfSimilarity();
+        evidence.similarityReference = "a perfect match's";
+        evidence.confirmedRatio = kConfirmedPerfectMatchRatio;
+    }
+    std::printf("verdict     %s\n", judgeEvidence(evidence).text.c_str());
 }
 
 void runSliceEvaluate(const SliceEvaluateArgs& a) {

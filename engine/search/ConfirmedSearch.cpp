@@ -7,12 +7,11 @@
 
 namespace fm {
 
-SearchPoint confirmationPoint(const RegistrationSettings& settings, const ConfirmationSettings& confirmation,
-                              int run) {
+SearchPoint confirmationPoint(std::uint64_t seed, const std::array<double, 6>& radius,
+                              const ConfirmationSettings& confirmation, int run) {
     SearchPoint point{};
     if (run <= 0) return point;
-    Rng rng(settings.seed * 0x9E3779B97F4A7C15ull + static_cast<std::uint64_t>(run));
-    const auto& radius = settings.searchRadius;
+    Rng rng(seed * 0x9E3779B97F4A7C15ull + static_cast<std::uint64_t>(run));
     const double spread = confirmation.startSpread;
     const double r = std::sqrt(rng.uniform()), a = 2.0 * M_PI * rng.uniform();
     point[0] = spread * radius[0] * r * std::cos(a);
@@ -31,12 +30,12 @@ bool parametersAgree(const SceneParams& a, const SceneParams& b, const Confirmat
     return true;
 }
 
-ConfirmedSearch runConfirmed(const Registration& registration, const SceneParams& start,
+ConfirmedSearch runConfirmed(const SeededSearch& search, const SearchStart& startAt, const SceneParams& start,
+                             std::uint64_t seed, const std::array<double, 6>& radius,
                              const ConfirmationSettings& confirmation, const RegistrationCallback& progress,
                              const std::atomic<bool>* stop) {
     if (confirmation.runs < 1 || confirmation.maxRuns < confirmation.runs)
         throw Error("registration: confirmation runs must be at least 1 and at most maxRuns");
-    const RegistrationSettings& settings = registration.settings();
     ConfirmedSearch out;
     std::size_t best = 0;
     // More than `runs` only while no two agree, and never for one search (runs = 1: unconfirmed).
@@ -44,10 +43,9 @@ ConfirmedSearch runConfirmed(const Registration& registration, const SceneParams
                       (run < confirmation.runs || (confirmation.runs >= 2 && out.agreeing < 2));
          ++run) {
         if (run > 0 && stop && stop->load()) break;
-        const SceneParams from =
-            registration.parameterization().fromSearchPoint(start, confirmationPoint(settings, confirmation, run));
-        out.runs.push_back(registration.run(from, run == 0 ? progress : RegistrationCallback{}, stop,
-                                            settings.seed + static_cast<std::uint64_t>(run)));
+        const SceneParams from = startAt(start, confirmationPoint(seed, radius, confirmation, run));
+        out.runs.push_back(search(from, seed + static_cast<std::uint64_t>(run),
+                                  run == 0 ? progress : RegistrationCallback{}));
         best = 0;
         for (std::size_t i = 1; i < out.runs.size(); ++i)
             if (out.runs[i].similarity > out.runs[best].similarity) best = i;
@@ -66,6 +64,21 @@ ConfirmedSearch runConfirmed(const Registration& registration, const SceneParams
         out.answer.profile += r.profile;
         out.answer.stopped = out.answer.stopped || r.stopped;
     }
+    return out;
+}
+
+ConfirmedSearch runConfirmed(const Registration& registration, const SceneParams& start,
+                             const ConfirmationSettings& confirmation, const RegistrationCallback& progress,
+                             const std::atomic<bool>* stop) {
+    const RegistrationSettings& settings = registration.settings();
+    ConfirmedSearch out = runConfirmed(
+        [&](const SceneParams& from, std::uint64_t seed, const RegistrationCallback& p) {
+            return registration.run(from, p, stop, seed);
+        },
+        [&](const SceneParams& s, const SearchPoint& point) {
+            return registration.parameterization().fromSearchPoint(s, point);
+        },
+        start, settings.seed, settings.searchRadius, confirmation, progress, stop);
     if (confirmation.uncertainty && !out.answer.stopped)
         out.uncertainty = poseUncertainty(registration, out.answer.params);
     return out;

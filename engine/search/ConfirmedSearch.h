@@ -6,6 +6,8 @@
 // answer. One scene searched here (`register` on a CT); xray/ConfirmedRegistration runs the same
 // rule for every object of a radiograph side by side, track/ConfirmedFrame for a trial's frame.
 #include <atomic>
+#include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "search/PoseUncertainty.h"
@@ -24,10 +26,14 @@ struct ConfirmationSettings {
     bool uncertainty = true;  // the curvature at the answer (73 evaluations at the finest level)
 };
 
-// The search point (search coordinates: u, v, depth mm; angles deg) run `run` starts from;
-// zero for run 0. Depends on (seed, run) only.
-SearchPoint confirmationPoint(const RegistrationSettings& settings, const ConfirmationSettings& confirmation,
-                              int run);
+// The search point (search coordinates: u, v, depth mm; angles deg) run `run` starts from, within
+// startSpread x `radius` per coordinate; zero for run 0. Depends on (seed, run) only.
+SearchPoint confirmationPoint(std::uint64_t seed, const std::array<double, 6>& radius,
+                              const ConfirmationSettings& confirmation, int run);
+inline SearchPoint confirmationPoint(const RegistrationSettings& settings, const ConfirmationSettings& confirmation,
+                                     int run) {
+    return confirmationPoint(settings.seed, settings.searchRadius, confirmation, run);
+}
 
 struct ConfirmedSearch {
     RegistrationResult answer;  // the best run; evaluations, seconds and profile are the runs' sums
@@ -39,6 +45,17 @@ struct ConfirmedSearch {
 // Two parameter sets agree: the first three (mm) within agreeInPlaneMm as a vector, each of the
 // last three (deg, wrapped) within agreeRotationDeg.
 bool parametersAgree(const SceneParams& a, const SceneParams& b, const ConfirmationSettings& bounds);
+
+// The rule for any search: `search(start, seed, progress)` runs one; `startAt(start, point)` gives
+// the parameters of a search point around the start. No uncertainty (the caller's cost knows
+// how). fm::Error for runs < 1 or maxRuns < runs.
+using SeededSearch =
+    std::function<RegistrationResult(const SceneParams& start, std::uint64_t seed, const RegistrationCallback& progress)>;
+using SearchStart = std::function<SceneParams(const SceneParams& start, const SearchPoint& point)>;
+ConfirmedSearch runConfirmed(const SeededSearch& search, const SearchStart& startAt, const SceneParams& start,
+                             std::uint64_t seed, const std::array<double, 6>& radius,
+                             const ConfirmationSettings& confirmation, const RegistrationCallback& progress = {},
+                             const std::atomic<bool>* stop = nullptr);
 
 // Throws as Registration::run; fm::Error for runs < 1 or maxRuns < runs. `progress` is the
 // first run's.

@@ -36,6 +36,7 @@ std::vector<EvaluationTrial> runSliceEvaluation(
         rs.method = method;
         const SliceRegistration registration(volume, reference, referenceMask, setup,
                                              volumeCenter, rs);
+        const double ceiling = registration.referenceSelfSimilarity();
         for (std::size_t b = 0; b < settings.bins.size(); ++b)
             for (int s = 0; s < settings.startsPerBin; ++s) {
                 if (stop && stop->load()) return trials;
@@ -52,6 +53,14 @@ std::vector<EvaluationTrial> runSliceEvaluation(
                 t.cpuSeconds = double(std::clock() - cpu0) / CLOCKS_PER_SEC;
                 t.evaluations = r.evaluations;
                 t.success = t.final.meanMm < settings.successMm;
+                // Judged without the truth, as evaluate's X-ray trials (search/Evaluation.cpp).
+                AnswerEvidence evidence;
+                evidence.similarityRatio = ceiling > 0.0 ? r.similarity / ceiling : 0.0;
+                evidence.similarityReference = "a perfect match's";
+                evidence.confirmedRatio = kConfirmedPerfectMatchRatio;
+                evidence.stopped = r.stopped;
+                t.similarityRatio = *evidence.similarityRatio;
+                t.verdict = judgeEvidence(evidence).verdict;
                 trials.push_back(t);
                 if (onTrial) onTrial(t, static_cast<int>(trials.size()), total);
             }

@@ -154,15 +154,21 @@ double SliceRegistration::cost(const Pose& pose, int level) const {
     return levelCost(pose, levels_[level], settings_.threads);
 }
 
+double SliceRegistration::referenceSelfSimilarity() const {
+    const Level& level = levels_.back();
+    return similarity(settings_.similarity, level.reference, level.reference.image, &level.mask);
+}
+
 RegistrationResult SliceRegistration::run(const Pose& start, const RegistrationCallback& progress,
-                                          const std::atomic<bool>* stop) const {
+                                          const std::atomic<bool>* stop,
+                                          std::optional<std::uint64_t> seed) const {
     const auto t0 = std::chrono::steady_clock::now();
     const DetectorGeometry startAxes = axesAsFilm(sliceGeometry(start, setup_, center_));
     auto toPose = [&](const Point& p) {
         return poseFromSearchPoint(start, startAxes, {p[0], p[1], p[2], p[3], p[4], p[5]});
     };
     RegistrationResult result;
-    Rng seeds(settings_.seed);
+    Rng seeds(seed.value_or(settings_.seed));
     Point current(6, 0.0);
     int evaluationsBefore = 0;
     const int budget = totalBudget();

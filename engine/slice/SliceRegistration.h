@@ -17,6 +17,7 @@
 // evidence), so the search cannot win by sliding the plane off the volume.
 #include <array>
 #include <atomic>
+#include <optional>
 #include <vector>
 
 #include "core/Image.h"
@@ -54,8 +55,14 @@ class SliceRegistration {
                       const SliceSetup& setup, const glm::dvec3& volumeCenter,
                       SliceRegistrationSettings settings);
 
+    // `seed` replaces the settings' (independent searches of one prepared registration).
     RegistrationResult run(const Pose& start, const RegistrationCallback& progress = {},
-                           const std::atomic<bool>* stop = nullptr) const;
+                           const std::atomic<bool>* stop = nullptr,
+                           std::optional<std::uint64_t> seed = std::nullopt) const;
+
+    // What a perfect match scores at the finest level: the reference against itself over its
+    // data pixels (the ceiling for a reference sliced from this volume).
+    double referenceSelfSimilarity() const;
 
     // -similarity of `pose` at level `level` (what the optimizers minimise).
     double cost(const Pose& pose, int level) const;
