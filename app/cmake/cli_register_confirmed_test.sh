@@ -18,7 +18,11 @@ run() {  # run SEED [options]: prints "mTRE verdict"
     [ -n "$mtre" ] && [ -n "$verdict" ] || fail "seed $seed: no mTRE or verdict line: $out"
     echo "$mtre $verdict"
 }
-for seed in 1 2 3 4 5 6 7 8 9 10 11 12; do
+# FM_CONFIRMED_SEEDS: fewer seeds for the sanitizer build (app/CMakeLists.txt).
+seeds=${FM_CONFIRMED_SEEDS:-1 2 3 4 5 6 7 8 9 10 11 12}
+count=0
+for seed in $seeds; do
+    count=$((count + 1))
     read -r mtre verdict < <(run "$seed")
     awk -v m="$mtre" 'BEGIN { exit !(m < 1.0) }' || fail "seed $seed: final mTRE $mtre mm"
     [ "$verdict" = ok ] || fail "seed $seed: within $mtre mm but the verdict is $verdict"
@@ -26,4 +30,4 @@ done
 read -r mtre verdict < <(run 7 --runs 1)
 awk -v m="$mtre" 'BEGIN { exit !(m > 1.0) }' || fail "seed 7 alone no longer misses ($mtre mm): the test lost its case"
 [ "$verdict" != ok ] || fail "seed 7 alone missed by $mtre mm and said ok"
-echo "register confirmed: 12 of 12 seeds within 1 mm and ok; seed 7 alone $mtre mm, $verdict"
+echo "register confirmed: $count of $count seeds within 1 mm and ok; seed 7 alone $mtre mm, $verdict"

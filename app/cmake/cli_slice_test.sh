@@ -54,6 +54,11 @@ echo "$out" | tail -3
 final=$(sed -n 's/^mTRE .*-> final \([0-9.]*\) mm.*/\1/p' <<<"$out")
 [ -n "$final" ] || fail "register --slice printed no mTRE"
 python3 -c "import sys; sys.exit(0 if float('$final') < 1.0 else 1)" || fail "final mTRE $final mm"
+# How sure, without the truth: searches from independent starts agree and the slice matches the
+# reference as a slice of the volume does (its similarity against a perfect match's).
+grep -q "^verdict     ok: 2 of 2 searches from different starts end here; similarity 1.00 of a perfect match's" <<<"$out" ||
+    fail "register --slice: no ok verdict with its reasons: $out"
+grep -q "^uncertainty x .* mm, y .* mm, z .* mm, azimuth" <<<"$out" || fail "register --slice: no uncertainty line: $out"
 
 # 5. Bad input, named.
 msg=$("$FM" slice --volume phantom:sphere --thickness -1 --out "$OUT/t.png" 2>&1)
