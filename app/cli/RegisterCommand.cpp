@@ -343,14 +343,11 @@ void runRegister(const RegisterArgs& a, bool similarityGiven, int frame) {
         evidence.uncertainty = confirmed.uncertainty;
         static const std::array<const char*, 6> names{"offset u", "offset v", "offset depth", "azimuth",
                                                       "elevation", "rotation"};
+        evidence.coordinateNames = &names;
         std::printf("uncertainty %s (the CT offset along the start camera's axes)\n",
                     fm::describeUncertainty(confirmed.uncertainty, &names).c_str());
     }
-    if (synthetic) {
-        evidence.similarityRatio = result.similarity / registration.referenceSelfSimilarity();
-        evidence.similarityReference = "a perfect match's";
-        evidence.confirmedRatio = fm::kConfirmedPerfectMatchRatio;
-    }
+    if (synthetic) fm::judgeAgainstPerfectMatch(evidence, result.similarity, registration.referenceSelfSimilarity());
     std::printf("verdict     %s\n", fm::judgeEvidence(evidence).text.c_str());
 }
 

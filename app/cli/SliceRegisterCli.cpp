@@ -129,13 +129,10 @@ void runSliceRegister(const SliceRegisterArgs& a) {
             },
             kUncertaintySteps);
         static const std::array<const char*, 6> names{"x", "y", "z", "azimuth", "elevation", "rotation"};
+        evidence.coordinateNames = &names;
         std::printf("uncertainty %s (the 2011 pose's numbers)\n", describeUncertainty(*evidence.uncertainty, &names).c_str());
     }
-    if (synthetic) {
-        evidence.similarityRatio = result.similarity / registration.referenceSelfSimilarity();
-        evidence.similarityReference = "a perfect match's";
-        evidence.confirmedRatio = kConfirmedPerfectMatchRatio;
-    }
+    if (synthetic) judgeAgainstPerfectMatch(evidence, result.similarity, registration.referenceSelfSimilarity());
     std::printf("verdict     %s\n", judgeEvidence(evidence).text.c_str());
 }
 

@@ -67,12 +67,7 @@ BoneRegistrationResult registerBone(const Scene& scene, const std::string& bone,
     out.evidence.agreeing = confirmed.agreeing;
     out.evidence.stopped = out.search.stopped;
     if (confirmed.uncertainty.measured()) out.evidence.uncertainty = confirmed.uncertainty;
-    const double ceiling = registration.referenceSelfSimilarity();
-    if (ceiling > 0.0) {
-        out.evidence.similarityRatio = out.search.similarity / ceiling;
-        out.evidence.similarityReference = "a perfect match's";
-        out.evidence.confirmedRatio = kConfirmedPerfectMatchRatio;
-    }
+    judgeAgainstPerfectMatch(out.evidence, out.search.similarity, registration.referenceSelfSimilarity());
     return out;
 }
 

@@ -34,6 +34,13 @@ std::string format(const char* pattern, double a, double b = 0.0) {
 
 }  // namespace
 
+void judgeAgainstPerfectMatch(AnswerEvidence& evidence, double similarity, double ceiling) {
+    if (!(ceiling > 0.0)) return;
+    evidence.similarityRatio = similarity / ceiling;
+    evidence.similarityReference = "a perfect match's";
+    evidence.confirmedRatio = kConfirmedPerfectMatchRatio;
+}
+
 AnswerCheck judgeEvidence(const AnswerEvidence& evidence) {
     using V = AnswerVerdict;
     Judgement j;
@@ -65,7 +72,9 @@ AnswerCheck judgeEvidence(const AnswerEvidence& evidence) {
         std::string unfixed;
         for (int i = 0; i < 6; ++i)
             if (!std::isfinite(evidence.uncertainty->sd[i]))
-                unfixed += (unfixed.empty() ? "" : ", ") + std::string(searchCoordinateName(i));
+                unfixed += (unfixed.empty() ? "" : ", ") +
+                           std::string(evidence.coordinateNames ? (*evidence.coordinateNames)[static_cast<std::size_t>(i)]
+                                                                : searchCoordinateName(i));
         j.add(V::Doubtful, "the cost does not rise along " + (unfixed.empty() ? std::string("some direction") : unfixed));
     }
     if (evidence.stopped) j.add(V::Doubtful, "stopped before the search ended");

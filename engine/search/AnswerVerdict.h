@@ -6,6 +6,7 @@
 // (search/PoseUncertainty). The verdict is the worst the evidence says, and "ok" needs at least
 // one piece that confirms the answer: nothing unconfirmed is shown or written as right.
 // xray/AnswerCheck adds the check that the model covers valid pixels at all.
+#include <array>
 #include <optional>
 #include <string>
 
@@ -40,6 +41,8 @@ struct AnswerEvidence {
     int runs = 0;               // searches from independent starts (0: not run)
     int agreeing = 0;           // of them, those that ended at the answer
     std::optional<PoseUncertainty> uncertainty;
+    // The names of its coordinates in the reasons (null: the camera frame's, searchCoordinateName).
+    const std::array<const char*, 6>* coordinateNames = nullptr;
     // The answer's similarity over a reference: tracking's last good frames, evaluate's
     // perfect match (Registration::referenceSelfSimilarity). Named in the text.
     std::optional<double> similarityRatio;
@@ -53,6 +56,11 @@ struct AnswerCheck {
     // "ok: 2 of 2 searches from different starts end here" or "doubtful: ...; ..." (every reason).
     std::string text;
 };
+
+// The answer's similarity judged against a perfect match's (`ceiling`: the reference against
+// itself, for references the model rendered or sliced itself): ok from
+// kConfirmedPerfectMatchRatio. A ceiling that is not positive says nothing (left unset).
+void judgeAgainstPerfectMatch(AnswerEvidence& evidence, double similarity, double ceiling);
 
 // The verdict of the evidence alone.
 AnswerCheck judgeEvidence(const AnswerEvidence& evidence);

@@ -119,11 +119,9 @@ EvaluationTrial runEvaluationTrial(const Registration& registration, const Evalu
     // How sure, without the truth: against what a perfect match scores on this reference.
     const double ceiling = registration.referenceSelfSimilarity();
     AnswerEvidence evidence;
-    evidence.similarityRatio = ceiling > 0.0 ? r.similarity / ceiling : 0.0;
-    evidence.similarityReference = "a perfect match's";
-    evidence.confirmedRatio = kConfirmedPerfectMatchRatio;
+    judgeAgainstPerfectMatch(evidence, r.similarity, ceiling);
     evidence.stopped = r.stopped;
-    t.similarityRatio = *evidence.similarityRatio;
+    t.similarityRatio = evidence.similarityRatio.value_or(0.0);
     t.verdict = judgeEvidence(evidence).verdict;
     return t;
 }

@@ -55,11 +55,9 @@ std::vector<EvaluationTrial> runSliceEvaluation(
                 t.success = t.final.meanMm < settings.successMm;
                 // Judged without the truth, as evaluate's X-ray trials (search/Evaluation.cpp).
                 AnswerEvidence evidence;
-                evidence.similarityRatio = ceiling > 0.0 ? r.similarity / ceiling : 0.0;
-                evidence.similarityReference = "a perfect match's";
-                evidence.confirmedRatio = kConfirmedPerfectMatchRatio;
+                judgeAgainstPerfectMatch(evidence, r.similarity, ceiling);
                 evidence.stopped = r.stopped;
-                t.similarityRatio = *evidence.similarityRatio;
+                t.similarityRatio = evidence.similarityRatio.value_or(0.0);
                 t.verdict = judgeEvidence(evidence).verdict;
                 trials.push_back(t);
                 if (onTrial) onTrial(t, static_cast<int>(trials.size()), total);
