@@ -272,9 +272,7 @@ void runTrack(const TrackArgs& a) {
                         } catch (const fm::Error&) {
                         }
                     }
-                    double cost = 0.0;
-                    for (double c : r.viewCost)
-                        if (!std::isnan(c)) cost += c;
+                    const double cost = -r.similarity();
                     std::fprintf(stderr, "%s%s%s frame %d  [%d/%zu]  %.2f s/frame  cost %.4f  %s%s",
                                  interactive ? "\r" : "", who.c_str(), b.name.c_str(), r.frame,
                                  count, todo, seconds / count, cost,

@@ -103,7 +103,10 @@ void WorkspaceUi::trackPane(WorkspaceState& state, const Pane& pane) {
                                    std::to_string(v.lost) + " lost";
             if (!v.notOk.empty()) {
                 verdicts += " (frames";
-                for (std::size_t i = 0; i < v.notOk.size() && i < 8; ++i) verdicts += " " + std::to_string(v.notOk[i]);
+                for (std::size_t i = 0; i < v.notOk.size() && i < 8; ++i) {  // piecewise: GCC 12's -Wrestrict
+                    verdicts += ' ';
+                    verdicts += std::to_string(v.notOk[i]);
+                }
                 verdicts += v.notOk.size() > 8 ? " ...)" : ")";
             }
             const ImVec4 colour = v.worst == AnswerVerdict::Ok ? kGood : v.worst == AnswerVerdict::Lost ? kBad : kWarn;

@@ -107,17 +107,12 @@ void WorkspaceSolver::start(std::shared_ptr<const WorkspaceModel> model, int obj
                             s.budget = p.evaluationBudget;
                         });
                     });
-                const FrameRecord& r = confirmed.answer;
-                if (r.status != FrameRecord::Status::Tracked && !(r.status == FrameRecord::Status::Stopped))
-                    throw Error("frame " + std::to_string(frame) + ": " + toString(r.status) + ": " + r.note);
+                const FrameRecord& r = confirmed.answer;  // registerFrameConfirmed refuses untracked frames
                 publish([&](WorkspaceSolveSnapshot& s) {
                     s.result = r.worldFromBone;
                     s.stopped = r.status == FrameRecord::Status::Stopped;
                     s.viewCosts = r.viewCost;
-                    double sum = 0.0;
-                    for (double c : r.viewCost)
-                        if (!std::isnan(c)) sum += c;
-                    s.similarity = -sum;
+                    s.similarity = r.similarity();
                     s.evaluations = r.evaluations;
                     s.evidence = confirmed.evidence;
                     s.note = r.note + ", " + std::to_string(confirmed.runs.size()) + " searches from independent starts";

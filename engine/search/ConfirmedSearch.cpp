@@ -54,16 +54,8 @@ ConfirmedSearch runConfirmed(const SeededSearch& search, const SearchStart& star
             out.agreeing += parametersAgree(out.runs[best].params, r.params, confirmation) ? 1 : 0;
         if (out.runs.back().stopped) break;
     }
-    out.answer = out.runs[best];
-    out.answer.evaluations = 0;
-    out.answer.seconds = 0.0;
-    out.answer.profile = {};
-    for (const RegistrationResult& r : out.runs) {
-        out.answer.evaluations += r.evaluations;
-        out.answer.seconds += r.seconds;
-        out.answer.profile += r.profile;
-        out.answer.stopped = out.answer.stopped || r.stopped;
-    }
+    out.answer = answerOfRuns(out.runs, best);
+    for (const RegistrationResult& r : out.runs) out.answer.stopped = out.answer.stopped || r.stopped;
     return out;
 }
 

@@ -42,6 +42,22 @@ struct ConfirmedSearch {
     PoseUncertainty uncertainty;  // at the answer, when measured
 };
 
+// runs[best] carrying the evaluations, seconds and profile of every run (what the confirmation
+// cost) and stopped if any was. Run: RegistrationResult, ObjectRegistrationResult, FrameRecord.
+template <class Run>
+Run answerOfRuns(const std::vector<Run>& runs, std::size_t best) {
+    Run answer = runs.at(best);
+    answer.evaluations = 0;
+    answer.seconds = 0.0;
+    answer.profile = {};
+    for (const Run& r : runs) {
+        answer.evaluations += r.evaluations;
+        answer.seconds += r.seconds;
+        answer.profile += r.profile;
+    }
+    return answer;
+}
+
 // Two parameter sets agree: the first three (mm) within agreeInPlaneMm as a vector, each of the
 // last three (deg, wrapped) within agreeRotationDeg.
 bool parametersAgree(const SceneParams& a, const SceneParams& b, const ConfirmationSettings& bounds);

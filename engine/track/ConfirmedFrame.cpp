@@ -8,16 +8,6 @@
 
 namespace fm {
 
-namespace {
-
-double similarityOf(const FrameRecord& r) {
-    double s = 0.0;
-    for (double c : r.viewCost)
-        if (!std::isnan(c)) s -= c;
-    return s;
-}
-
-}  // namespace
 
 ConfirmedFrame registerFrameConfirmed(const Scene& scene, const std::string& bone, const FrameViews& views,
                                       const TrackSettings& settings, int frame, const RigidTransform& start,
@@ -30,9 +20,11 @@ ConfirmedFrame registerFrameConfirmed(const Scene& scene, const std::string& bon
     const SceneObject& object = scene.objects[*index];
     const glm::dvec3 pivot = defaultPivot(*object.model);
     // The first camera that has an image of the frame draws the starts (its film axes, depth).
-    std::vector<RegistrationView> frameViews = views(frame);
+    const std::vector<RegistrationView> frameViews = views(frame);
     if (frameViews.empty()) throw Error("frame " + std::to_string(frame) + ": no camera has an image of it");
     const ProjectionGeometry& camera = scene.cameras.at(frameViews[0].camera);
+    // The frame is read once: every run searches the same images.
+    const FrameViews read = [&](int f) { return f == frame ? frameViews : views(f); };
     ConfirmedFrame out;
     FrameContext own = context;
     own.confirming = true;  // the runs here confirm each other
@@ -45,7 +37,7 @@ ConfirmedFrame registerFrameConfirmed(const Scene& scene, const std::string& bon
         if (run > 0 && stop && stop->load()) break;
         TrackSettings seeded = settings;
         seeded.registration.seed = settings.registration.seed + static_cast<std::uint64_t>(run);
-        const Tracker tracker(scene, bone, views, seeded);
+        const Tracker tracker(scene, bone, read, seeded);
         const RigidTransform from = confirmationStart(camera, start, pivot, settings.registration, confirmation, run);
         out.runs.push_back(tracker.trackFrame(frame, from, stop, run == 0 ? progress : RegistrationCallback{}, own));
         const FrameRecord& last = out.runs.back();
@@ -55,24 +47,16 @@ ConfirmedFrame registerFrameConfirmed(const Scene& scene, const std::string& bon
         // The best run, and the runs that end within the bounds of it.
         best = 0;
         for (std::size_t i = 1; i < out.runs.size(); ++i)
-            if (out.runs[i].worldFromBone && similarityOf(out.runs[i]) > similarityOf(out.runs[best])) best = i;
+            if (out.runs[i].worldFromBone && out.runs[i].similarity() > out.runs[best].similarity()) best = i;
         const RigidTransform& answer = *out.runs[best].worldFromBone;
         agreeing = 0;
         for (const FrameRecord& r : out.runs)
             agreeing += r.worldFromBone && posesAgree(answer, *r.worldFromBone, pivot, confirmation);
         if (last.status == FrameRecord::Status::Stopped) break;
     }
-    out.answer = out.runs[best];
-    out.answer.evaluations = 0;
-    out.answer.seconds = 0.0;
-    out.answer.profile = {};
+    out.answer = answerOfRuns(out.runs, best);
     bool stopped = false;
-    for (const FrameRecord& r : out.runs) {
-        out.answer.evaluations += r.evaluations;
-        out.answer.seconds += r.seconds;
-        out.answer.profile += r.profile;
-        stopped = stopped || r.status == FrameRecord::Status::Stopped;
-    }
+    for (const FrameRecord& r : out.runs) stopped = stopped || r.status == FrameRecord::Status::Stopped;
     out.answer.searches = static_cast<int>(out.runs.size());
     out.evidence = out.answer.evidence;
     out.evidence.runs = static_cast<int>(out.runs.size());

@@ -35,6 +35,13 @@ RegistrationSettings TrackSettings::defaultTrackingRegistration() {
     return s;
 }
 
+double FrameRecord::similarity() const {
+    double s = 0.0;
+    for (double c : viewCost)
+        if (!std::isnan(c)) s -= c;
+    return s;
+}
+
 const char* toString(FrameRecord::Status status) {
     switch (status) {
         case FrameRecord::Status::Tracked: return "tracked";
@@ -82,12 +89,12 @@ double Tracker::inViewFraction(std::size_t camera, const RigidTransform& pose) c
 
 FrameRecord Tracker::trackFrame(int frame, const RigidTransform& start, const std::atomic<bool>* stop,
                                 const RegistrationCallback& progress, const FrameContext& context) const {
-    return trackFrameWith(settings_, frame, start, stop, progress, context);
+    return trackFrameWith(settings_, frames_, frame, start, stop, progress, context);
 }
 
-FrameRecord Tracker::trackFrameWith(const TrackSettings& settings, int frame, const RigidTransform& start,
-                                    const std::atomic<bool>* stop, const RegistrationCallback& progress,
-                                    const FrameContext& context) const {
+FrameRecord Tracker::trackFrameWith(const TrackSettings& settings, const FrameViews& frames, int frame,
+                                    const RigidTransform& start, const std::atomic<bool>* stop,
+                                    const RegistrationCallback& progress, const FrameContext& context) const {
     const auto t0 = std::chrono::steady_clock::now();
     FrameRecord record;
     record.frame = frame;
@@ -106,17 +113,17 @@ FrameRecord Tracker::trackFrameWith(const TrackSettings& settings, int frame, co
     // 2. The views: every camera with an image of the frame that sees the bone.
     std::vector<RegistrationView> all;
     try {
-        all = frames_(frame);
+        all = frames(frame);
     } catch (const Error& e) {
         return finish(FrameRecord::Status::BadFrame, e.what());
     }
     std::vector<RegistrationView> views;
     std::string cameras;
-    for (RegistrationView& v : all) {
+    for (const RegistrationView& v : all) {  // copied: `all` serves a confirming search (5b)
         if (v.camera >= scene_.cameras.size()) continue;
         if (inViewFraction(v.camera, start) < settings.minInViewFraction) continue;
         cameras += (cameras.empty() ? "" : ", ") + std::to_string(v.camera + 1);
-        views.push_back(std::move(v));
+        views.push_back(v);
     }
     if (views.empty()) return finish(FrameRecord::Status::NotInView, "the bone is in no camera's view");
 
@@ -211,25 +218,23 @@ FrameRecord Tracker::trackFrameWith(const TrackSettings& settings, int frame, co
     if (!evidence.similarityRatio && settings.confirmWithoutReference && !context.confirming) {
         TrackSettings other = settings;
         other.registration.seed = rs.seed + 1;
-        other.uncertainty = false;
         FrameContext sub;
         sub.confirming = true;
         const RigidTransform from = confirmationStart(scene_.cameras[views[0].camera], start,
                                                       defaultPivot(*bone.model), settings.registration, bounds, 1);
-        const FrameRecord second = trackFrameWith(other, frame, from, stop, {}, sub);
+        const FrameRecord second =
+            trackFrameWith(other, [&all](int) { return all; }, frame, from, stop, {}, sub);
         record.evaluations += second.evaluations;
         record.profile += second.profile;
         if (second.status == FrameRecord::Status::Tracked && second.worldFromBone) {
             evidence.runs = 2;
             evidence.agreeing = agrees(*record.worldFromBone, *second.worldFromBone) ? 2 : 1;
-            double mine = 0.0, theirs = 0.0;
-            for (double c : record.viewCost)
-                if (!std::isnan(c)) mine -= c;
-            for (double c : second.viewCost)
-                if (!std::isnan(c)) theirs -= c;
-            if (theirs > mine && second.camerasUsed == record.camerasUsed) {
+            // The better answer, with the uncertainty measured at it.
+            if (second.similarity() > record.similarity() && second.camerasUsed == record.camerasUsed) {
                 record.worldFromBone = second.worldFromBone;
                 record.viewCost = second.viewCost;
+                evidence.uncertainty = second.evidence.uncertainty;
+                record.boneFrameSd = second.boneFrameSd;
             }
         }
     }
@@ -262,12 +267,7 @@ bool better(const FrameRecord& a, const FrameRecord& b) {
     if (a.status != FrameRecord::Status::Tracked) return false;
     if (b.status != FrameRecord::Status::Tracked) return true;
     if (a.verdict != b.verdict) return static_cast<int>(a.verdict) < static_cast<int>(b.verdict);
-    double sa = 0.0, sb = 0.0;
-    for (double c : a.viewCost)
-        if (!std::isnan(c)) sa -= c;
-    for (double c : b.viewCost)
-        if (!std::isnan(c)) sb -= c;
-    return sa > sb;
+    return a.similarity() > b.similarity();
 }
 
 }  // namespace
@@ -284,6 +284,12 @@ void Tracker::run(const std::vector<int>& frames, const std::map<int, RigidTrans
     wider.registration.globalEvaluations =
         static_cast<int>(std::lround(settings_.researchScale * settings_.registration.globalEvaluations));
     wider.refineRadius *= settings_.researchScale;
+    // One read per frame: the wider search reads the images the first one read.
+    std::optional<std::pair<int, std::vector<RegistrationView>>> read;
+    const FrameViews once = [&](int f) {
+        if (!read || read->first != f) read.emplace(f, frames_(f));
+        return read->second;
+    };
     // The similarity the bone scored in its last good frame, per camera.
     FrameContext context;
     context.referenceSimilarity.assign(scene_.cameras.size(), std::numeric_limits<double>::quiet_NaN());
@@ -301,13 +307,13 @@ void Tracker::run(const std::vector<int>& frames, const std::map<int, RigidTrans
             record.viewCost.assign(scene_.cameras.size(), std::numeric_limits<double>::quiet_NaN());
         } else {
             context.startIsKeyframe = keyframes.count(frame) != 0;
-            record = trackFrame(frame, *start, stop, {}, context);
+            record = trackFrameWith(settings_, once, frame, *start, stop, {}, context);
             // Not ok: searched once more, wider (a lost one only when onLost says search).
             const bool again = record.status == FrameRecord::Status::Tracked &&
                                (record.verdict == AnswerVerdict::Doubtful ||
                                 (record.verdict == AnswerVerdict::Lost && settings_.onLost == OnLost::Search));
             if (again && !(stop && stop->load())) {
-                FrameRecord second = trackFrameWith(wider, frame, *start, stop, {}, context);
+                FrameRecord second = trackFrameWith(wider, once, frame, *start, stop, {}, context);
                 second.searches = 2;
                 second.evaluations += record.evaluations;
                 second.seconds += record.seconds;

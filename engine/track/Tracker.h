@@ -105,6 +105,8 @@ struct FrameRecord {
     // The uncertainty along the bone's own axes (its volume's x, y, z; mm and deg), when measured.
     SearchPoint boneFrameSd{};
     int searches = 0;                            // 2 when searched again
+    // -cost summed over the cameras it used (0 when none): what two records of a frame compare by.
+    double similarity() const;
     // A pose to keep: tracked and not lost (a lost pose is neither written nor a later start).
     bool answered() const { return status == Status::Tracked && worldFromBone && verdict != AnswerVerdict::Lost; }
 };
@@ -151,9 +153,11 @@ class Tracker {
     const TrackSettings& settings() const { return settings_; }
 
   private:
-    FrameRecord trackFrameWith(const TrackSettings& settings, int frame, const RigidTransform& start,
-                               const std::atomic<bool>* stop, const RegistrationCallback& progress,
-                               const FrameContext& context) const;
+    // `frames` is where the frame's images come from: frames_, or the images already read for it
+    // (a confirming or a repeated search reads nothing again).
+    FrameRecord trackFrameWith(const TrackSettings& settings, const FrameViews& frames, int frame,
+                               const RigidTransform& start, const std::atomic<bool>* stop,
+                               const RegistrationCallback& progress, const FrameContext& context) const;
     Scene scene_;
     std::size_t bone_ = 0;
     FrameViews frames_;

@@ -134,16 +134,8 @@ ObjectsRegistration registerObjects(const Scene& scene, const RegistrationView& 
     for (std::size_t k = 0; k < n; ++k) {
         ConfirmedObject& c = out.objects[k];
         c.runs = runs[k];
-        c.answer = runs[k][static_cast<std::size_t>(best[k])];
-        c.answer.evaluations = 0;
-        c.answer.seconds = 0.0;
-        c.answer.profile = {};
-        for (const ObjectRegistrationResult& r : runs[k]) {
-            c.answer.evaluations += r.evaluations;
-            c.answer.seconds += r.seconds;
-            c.answer.profile += r.profile;
-            c.answer.stopped = c.answer.stopped || r.stopped;
-        }
+        c.answer = answerOfRuns(runs[k], static_cast<std::size_t>(best[k]));
+        for (const ObjectRegistrationResult& r : runs[k]) c.answer.stopped = c.answer.stopped || r.stopped;
         if (settings.similarity == SimilarityMeasure::EdgeDistance) {
             c.evidence.similarityRatio = c.answer.similarity;  // against a perfect outline match's 1
             c.evidence.similarityReference = "a perfect outline match's";

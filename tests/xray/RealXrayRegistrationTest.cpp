@@ -198,12 +198,16 @@ TEST(RealXray, RegistrationFromPerturbedStartsReachesTheJtsPose) {
                             c.evidence.agreeing, toString(check.verdict), u.sd[2], u.sd[3], u.sd[4], u.sd[5],
                             r.evaluations, r.seconds);
                 std::fflush(stdout);
-                if (spread() <= 1.0) EXPECT_GE(iou, kMinIoU) << kFrames[f] << " " << implant.name << " start " << s;
+                if (spread() <= 1.0) {
+                    EXPECT_GE(iou, kMinIoU) << kFrames[f] << " " << implant.name << " start " << s;
+                }
             }
         }
     }
     std::printf("met %d of %d; misses %d (each not ok), met but not ok %d\n", met_, total, misses, falseAlarms);
-    if (spread() <= 1.0) EXPECT_GE(met_, kMinMetShare * total) << met_ << " of " << total << " met";
+    if (spread() <= 1.0) {
+        EXPECT_GE(met_, kMinMetShare * total) << met_ << " of " << total << " met";
+    }
 }
 
 }  // namespace
