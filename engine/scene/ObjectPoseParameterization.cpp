@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/Error.h"
+#include "geometry/EulerAngles.h"
 
 namespace fm {
 
@@ -65,6 +66,16 @@ SceneParams ObjectPoseParameterization::referenceParams() const {
     const glm::dvec3 c =
         worldFromCamera_.inverse().applyToPoint(reference_.applyToPoint(pivot_));
     return {c.x, c.y, viewSign_ * c.z, 0.0, 0.0, 0.0};
+}
+
+SceneParams ObjectPoseParameterization::paramsOf(const RigidTransform& worldFromObject) const {
+    worldFromObject.validate("pose of '" + object_ + "'");
+    const RigidTransform cameraFromObject = worldFromCamera_.inverse() * worldFromObject;
+    // turn = R_w(viewSign c) R_u(a) R_v(b): JointTrack's 3-1-2 order in the camera's axes.
+    const glm::dvec3 zxy =
+        anglesZxy(cameraFromObject.rotation * glm::transpose(referenceInCamera_));
+    const glm::dvec3 pivotInCamera = cameraFromObject.applyToPoint(pivot_);
+    return {pivotInCamera.x, pivotInCamera.y, viewSign_ * pivotInCamera.z, zxy.y, zxy.z, viewSign_ * zxy.x};
 }
 
 void ObjectPoseParameterization::apply(const SceneParams& params, Scene& scene) const {

@@ -43,6 +43,9 @@ class ObjectPoseParameterization final : public SceneParameterization {
     // The object's pose for these numbers, and the numbers of the reference pose (angles 0).
     RigidTransform worldFromObject(const SceneParams& params) const;
     SceneParams referenceParams() const;
+    // The numbers of any pose (the inverse of worldFromObject; angles in (-180, 180], about u
+    // within [-90, 90]). Throws fm::Error for a transform that is not a rigid motion.
+    SceneParams paramsOf(const RigidTransform& worldFromObject) const;
 
     const std::string& objectName() const { return object_; }
     const glm::dvec3& pivot() const { return pivot_; }

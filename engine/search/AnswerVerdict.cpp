@@ -26,9 +26,9 @@ struct Judgement {
     }
 };
 
-std::string format(const char* pattern, double a, double b = 0.0) {
-    char text[200];
-    std::snprintf(text, sizeof text, pattern, a, b);
+std::string format(const char* pattern, double a, double b = 0.0, double c = 0.0, double d = 0.0) {
+    char text[300];
+    std::snprintf(text, sizeof text, pattern, a, b, c, d);
     return text;
 }
 
@@ -77,6 +77,12 @@ AnswerCheck judgeEvidence(const AnswerEvidence& evidence) {
                                                                 : searchCoordinateName(i));
         j.add(V::Doubtful, "the cost does not rise along " + (unfixed.empty() ? std::string("some direction") : unfixed));
     }
+    // 6. A pose found with no start: a different pose that scores nearly as well.
+    if (evidence.rival && evidence.rival->similarityRatio >= kRivalSimilarityRatio)
+        j.add(V::Doubtful, format("a different pose %.1f mm / %.1f deg away scores %.2f of the answer's similarity "
+                                  "(at least %.2f): the image cannot tell them apart (a near-symmetric outline?)",
+                                  evidence.rival->inPlaneMm, evidence.rival->rotationDeg,
+                                  evidence.rival->similarityRatio, kRivalSimilarityRatio));
     if (evidence.stopped) j.add(V::Doubtful, "stopped before the search ended");
     if (!j.confirmed && j.verdict == V::Ok)
         j.add(V::Doubtful, "nothing confirms it (no second search, mask or earlier frame): check the outline");

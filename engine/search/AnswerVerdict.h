@@ -33,6 +33,13 @@ inline constexpr double kConfirmedPerfectMatchRatio = 0.96;
 // "Verdicts").
 inline constexpr double kConfirmedOutlineRatio = 0.92;
 
+// A pose found with no start (find/PoseFinder): a different answer of the search (not within the
+// agreement bounds) that scores at least this share of the answer's similarity is a rival the image
+// cannot rule out - a near-symmetric silhouette's mirror pose. On the JTML frames the runner-up
+// answers (the mirror tilts of the femoral component and the tray) scored 0.78-0.86 of the right
+// pose's (docs/find.md).
+inline constexpr double kRivalSimilarityRatio = 0.95;
+
 enum class AnswerVerdict { Ok, Doubtful, Lost };
 const char* toString(AnswerVerdict verdict);  // "ok", "doubtful", "lost"
 
@@ -49,6 +56,14 @@ struct AnswerEvidence {
     std::string similarityReference = "the last good frames'";
     double confirmedRatio = kConfirmedSimilarityRatio;  // ok from this ratio on
     bool stopped = false;                   // the search was stopped before it ended
+    // The best different answer of a search with no start: its similarity over the answer's, and
+    // how far it is (as the camera sees it).
+    struct Rival {
+        double similarityRatio = 0.0;
+        double inPlaneMm = 0.0;
+        double rotationDeg = 0.0;
+    };
+    std::optional<Rival> rival;
 };
 
 struct AnswerCheck {

@@ -1,0 +1,50 @@
+#include "find/FindSpace.h"
+
+#include <cstdio>
+
+#include "core/Error.h"
+#include "io/HeaderText.h"
+
+namespace fm {
+
+FindSpace parseFindSpace(const std::string& text, const std::string& option) {
+    FindSpace space;
+    const std::string keys = " (tilt=DEG, roll=DEG, depth=NEAR:FAR as fractions of the source-to-detector distance)";
+    std::size_t start = 0;
+    while (start < text.size()) {
+        const std::size_t comma = text.find(',', start);
+        const std::string part = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+        const std::size_t eq = part.find('=');
+        if (eq == std::string::npos) throw Error(option + " \"" + text + "\": expected key=value" + keys);
+        const std::string key = part.substr(0, eq), value = part.substr(eq + 1);
+        if (key == "tilt") {
+            space.tiltDeg = io::parseFinite(value, option + " tilt");
+            if (!(space.tiltDeg >= 0.0 && space.tiltDeg <= 90.0)) throw Error(option + ": tilt must be 0 to 90 deg");
+        } else if (key == "roll") {
+            space.rollDeg = io::parseFinite(value, option + " roll");
+            if (!(space.rollDeg >= 0.0 && space.rollDeg <= 180.0)) throw Error(option + ": roll must be 0 to 180 deg");
+        } else if (key == "depth") {
+            const std::size_t colon = value.find(':');
+            if (colon == std::string::npos) throw Error(option + ": depth must be NEAR:FAR, e.g. depth=0.25:0.92");
+            space.nearFraction = io::parseFinite(value.substr(0, colon), option + " depth (near)");
+            space.farFraction = io::parseFinite(value.substr(colon + 1), option + " depth (far)");
+            if (!(space.nearFraction > 0.0 && space.nearFraction < space.farFraction && space.farFraction < 1.0))
+                throw Error(option + ": depth NEAR:FAR must satisfy 0 < NEAR < FAR < 1 (fractions of the "
+                                     "source-to-detector distance)");
+        } else {
+            throw Error(option + ": unknown \"" + key + "\"" + keys);
+        }
+        if (comma == std::string::npos) break;
+        start = comma + 1;
+    }
+    return space;
+}
+
+std::string describeFindSpace(const FindSpace& space) {
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "tilt +-%.0f deg, roll +-%.0f deg, depth %.2f-%.2f of the source-to-detector distance",
+                  space.tiltDeg, space.rollDeg, space.nearFraction, space.farFraction);
+    return buf;
+}
+
+}  // namespace fm

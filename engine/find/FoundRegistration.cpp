@@ -1,0 +1,56 @@
+#include "find/FoundRegistration.h"
+
+#include <algorithm>
+
+#include "core/Error.h"
+#include "scene/ObjectPoseParameterization.h"
+#include "xray/CameraPoseDifference.h"
+
+namespace fm {
+
+FoundRegistration registerObjectsFinding(const Scene& scene, const std::vector<bool>& findPose,
+                                         const RegistrationView& view, const RegistrationSettings& settings,
+                                         const FindSettings& find, const ConfirmationSettings& confirmation,
+                                         const std::function<RegistrationCallback(std::size_t)>& progressFor,
+                                         const std::atomic<bool>* stop) {
+    if (findPose.size() != scene.objects.size())
+        throw Error("find: one flag per object expected (" + std::to_string(scene.objects.size()) + "), got " +
+                    std::to_string(findPose.size()));
+    FoundRegistration out;
+    out.found.resize(scene.objects.size());
+    Scene started = scene;
+    for (std::size_t k = 0; k < scene.objects.size(); ++k) {
+        if (!findPose[k]) continue;
+        FoundPose found = findObjectPose(scene, k, view, settings, find, stop);
+        if (found.candidates.empty()) {  // stopped before any answer
+            out.found[k] = std::move(found);
+            out.registration.objects.resize(scene.objects.size());
+            for (ConfirmedObject& c : out.registration.objects) c.evidence.stopped = c.answer.stopped = true;
+            return out;
+        }
+        started.objects[k].worldFromObject = found.candidates.front().worldFromObject;
+        out.found[k] = std::move(found);
+    }
+    out.registration = registerObjects(started, view, settings, confirmation, progressFor, stop);
+    const ProjectionGeometry& camera = scene.cameras.at(view.camera);
+    for (std::size_t k = 0; k < scene.objects.size(); ++k) {
+        if (!out.found[k]) continue;
+        ConfirmedObject& c = out.registration.objects[k];
+        const glm::dvec3 pivot = defaultPivot(*scene.objects[k].model);
+        for (const FoundCandidate& candidate : out.found[k]->candidates) {
+            const CameraPoseDifference d =
+                cameraPoseDifference(camera, c.answer.worldFromObject, candidate.worldFromObject, pivot);
+            // Within the registration's start radius it is the answer's own basin (a search from it
+            // ends at the answer), not a rival. Candidates are best first: the first beyond is it.
+            const double radiusDeg = std::max({settings.searchRadius[3], settings.searchRadius[4], settings.searchRadius[5]});
+            if (d.inPlaneMm <= std::max(settings.searchRadius[0], settings.searchRadius[1]) && d.rotationDeg <= radiusDeg)
+                continue;
+            if (c.answer.similarity > 0.0)
+                c.evidence.rival = AnswerEvidence::Rival{candidate.similarity / c.answer.similarity, d.inPlaneMm, d.rotationDeg};
+            break;
+        }
+    }
+    return out;
+}
+
+}  // namespace fm

@@ -1,0 +1,237 @@
+#include "find/PoseFinder.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+
+#include "core/Error.h"
+#include "core/Parallel.h"
+#include "find/OrientedEdges.h"
+#include "find/OutlineTemplates.h"
+#include "find/SeenPose.h"
+#include "find/TemplateScan.h"
+#include "scene/ObjectPoseParameterization.h"
+#include "similarity/EdgeDistance.h"
+#include "similarity/ImagePyramid.h"
+#include "xray/CameraPoseDifference.h"
+#include "xray/ObjectRegistration.h"
+
+namespace fm {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+void validate(const FindSettings& s) {
+    const auto powerOfTwo = [](int f) { return f >= 1 && (f & (f - 1)) == 0; };
+    if (!powerOfTwo(s.maxScanFactor) || s.maxScanFactor < 2 || !powerOfTwo(s.refineFactor) || s.refineFactor < 2)
+        throw Error("find: the scan and refinement factors must be powers of two, at least 2");
+    if (!(s.minScanSpanPixels >= 4.0)) throw Error("find: the model must span at least 4 scan pixels");
+    if (!(s.tiltStepDeg > 0.0 && s.rollStepDeg > 0.0 && s.scaleStep > 1.0 && s.capPixels > 0.0))
+        throw Error("find: grid steps and the cap must be positive (the scale step above 1)");
+    if (s.hypotheses < 1 || s.refineEvaluations < 1 || s.finalists < 1 || s.finalists > s.hypotheses)
+        throw Error("find: at least one hypothesis, refinement evaluation and finalist (finalists <= hypotheses)");
+}
+
+// The scales of the scan: the band's depths as magnifications over the templates', in steps of
+// at most `step`.
+std::vector<double> scaleGrid(const FindSpace& space, double templateDepth, double distance, double step) {
+    const double low = templateDepth / (space.farFraction * distance);
+    const double high = templateDepth / (space.nearFraction * distance);
+    const int gaps = std::max(1, static_cast<int>(std::ceil(std::log(high / low) / std::log(step) - 1e-9)));
+    std::vector<double> scales;
+    for (int k = 0; k <= gaps; ++k) scales.push_back(low * std::pow(high / low, double(k) / gaps));
+    return scales;
+}
+
+// The coarsest power of two up to maxScanFactor at which the model, seen along the optical axis at
+// the band's far end, spans minScanSpanPixels (twice its outline's largest distance from the
+// pivot: JTML's femoral component 236 px, the tray 175 px).
+int scanFactorFor(const SceneObject& target, const CameraAxes& axes, const FindSettings& settings) {
+    FindSpace flat = settings.space;
+    flat.tiltDeg = 0.0;
+    const OutlineTemplates probe = renderOutlineTemplates(target, axes, flat, 1.0, axes.spacing.x * 4.0, 1);
+    const double far = settings.space.farFraction * axes.distance;
+    const double spanPixels = 2.0 * probe.templates.front().radius * 4.0 * probe.depth / far;
+    int factor = 2;
+    while (factor * 2 <= settings.maxScanFactor && spanPixels / (factor * 2) >= settings.minScanSpanPixels) factor *= 2;
+    return factor;
+}
+
+}  // namespace
+
+int FoundPose::evaluations() const {
+    int n = 0;
+    for (const FindStage& s : stages)
+        if (s.name != "templates" && s.name != "scan") n += static_cast<int>(s.evaluations);
+    return n;
+}
+
+double FoundPose::seconds() const {
+    double t = 0.0;
+    for (const FindStage& s : stages) t += s.seconds;
+    return t;
+}
+
+FoundPose findObjectPose(const Scene& scene, std::size_t object, const RegistrationView& view,
+                         const RegistrationSettings& finish, const FindSettings& settings,
+                         const std::atomic<bool>* stop) {
+    validate(settings);
+    if (object >= scene.objects.size())
+        throw Error("find: object " + std::to_string(object + 1) + " is not in the scene");
+    if (view.camera >= scene.cameras.size())
+        throw Error("find: camera " + std::to_string(view.camera + 1) + " is not in the scene");
+    const SceneObject& target = scene.objects[object];
+    if (!target.model) throw Error("find: object '" + target.name + "' has no model");
+    const ProjectionGeometry& camera = scene.cameras[view.camera];
+    if (view.reference.width != camera.detector.size.x || view.reference.height != camera.detector.size.y)
+        throw Error("find: the radiograph's size differs from camera " + std::to_string(view.camera + 1) + "'s");
+    const CameraAxes axes = cameraAxes(camera);
+    const glm::dvec3 pivot = defaultPivot(*target.model);
+    const int threads = settings.threads > 0 ? settings.threads : defaultThreadCount();
+    const auto stopped = [&] { return stop && stop->load(); };
+    FoundPose found;
+
+    // 1. Templates: one outline per pair of tilts, on the optical axis at the band's middle depth,
+    //    at half the scan's pixel; the scan as coarse as keeps the model kMinScanSpanPixels wide at
+    //    the band's far end (a probe template at 1/4 measures it).
+    auto t0 = Clock::now();
+    const int scanFactor = scanFactorFor(target, axes, settings);
+    const double scanPixelMm = axes.spacing.x * scanFactor;
+    const OutlineTemplates templates = renderOutlineTemplates(
+        target, axes, settings.space, settings.tiltStepDeg, axes.spacing.x * scanFactor / 2, threads);
+    found.scanFactor = scanFactor;
+    found.stages.push_back({"templates", since(t0), static_cast<int>(templates.templates.size()),
+                            static_cast<int>(templates.templates.size())});
+
+    // 2. Scan: the edges found at half the scan's pixel, pooled to it; every template turned,
+    //    scaled and shifted over the whole image.
+    t0 = Clock::now();
+    const OrientedDistances distances = orientedEdgeDistances(downsampleBy(view.reference, scanFactor / 2), 2);
+    const Image& coarse = distances.distance[0];
+    std::optional<Mask> coarseValid;
+    if (view.valid) coarseValid = downsampleMaskBy(*view.valid, scanFactor);
+    ScanGrid grid;
+    grid.rollsDeg = evenGrid(settings.space.rollDeg, settings.rollStepDeg, settings.space.rollDeg >= 180.0);
+    grid.scales = scaleGrid(settings.space, templates.depth, axes.distance, settings.scaleStep);
+    grid.rollSign = axes.rollSign;
+    grid.templateToScan = templates.pixelMm / scanPixelMm;
+    grid.capPixels = settings.capPixels;
+    const std::vector<ScanHypothesis> scanned =
+        scanTemplates(distances, coarseValid ? &*coarseValid : nullptr, templates, grid, threads);
+    const std::vector<ScanHypothesis> hypotheses =
+        distinctBest(scanned, templates, grid, static_cast<std::size_t>(settings.hypotheses), settings.perPlace);
+    found.stages.push_back({"scan", since(t0), static_cast<long long>(scanned.size()) * coarse.width * coarse.height,
+                            static_cast<int>(hypotheses.size())});
+    if (stopped()) {
+        found.stopped = true;
+        return found;
+    }
+
+    // 3. Refine: each hypothesis as a pose, polished at the refinement level (exact renders).
+    t0 = Clock::now();
+    const auto poseOf = [&](const ScanHypothesis& h) {
+        const OutlineTemplate& t = templates.templates[static_cast<std::size_t>(h.templateIndex)];
+        SeenPose seen;
+        // The scan pixel's centre in full-resolution pixel coordinates.
+        seen.pixel = (glm::dvec2(h.position) + 0.5) * double(scanFactor) - 0.5;
+        seen.depth = templates.depth / h.scale;
+        seen.rollDeg = h.rollDeg;
+        seen.tiltUDeg = t.tiltUDeg;
+        seen.tiltVDeg = t.tiltVDeg;
+        return worldFromSeen(axes, seen, pivot);
+    };
+    Scene alone = scene;
+    for (std::size_t i = 0; i < alone.objects.size(); ++i) alone.objects[i].visible = i == object;
+    SeenPose middle;
+    middle.pixel = axes.principalPixel;
+    middle.depth = templates.depth;
+    const auto parameterization = std::make_shared<ObjectPoseParameterization>(
+        target.name, camera, worldFromSeen(axes, middle, pivot), pivot, DepthSearch::AlongRay);
+    RegistrationSettings refine = finish;
+    refine.levelFactors = {settings.refineFactor, settings.refineFactor / 2};
+    refine.method = SearchMethod::NelderMead;
+    refine.globalEvaluations = settings.refineEvaluations;
+    refine.polishEvaluations = settings.refineEvaluations / 2;
+    refine.finestPolishEvaluations = -1;
+    refine.polishCoarsest = false;
+    refine.hypothesisTiltDeg = 0.0;
+    refine.depthRounds = 2;
+    const double atObject = scanPixelMm * templates.depth / axes.distance;  // a scan pixel at the middle depth
+    refine.searchRadius = {0.5 * atObject, 0.5 * atObject, templates.depth * (settings.scaleStep - 1.0),
+                           0.5 * settings.tiltStepDeg, 0.5 * settings.tiltStepDeg, 0.5 * settings.rollStepDeg};
+    refine.depthStepMm = 0.5 * refine.searchRadius[2];
+    refine.threads = 1;
+    const Registration refinement(alone, parameterization, {view}, refine);
+    struct Refined {
+        RigidTransform pose;
+        double cost = 0.0;
+        int evaluations = 0;
+        int hypothesis = 0;
+    };
+    std::vector<Refined> refined(hypotheses.size());
+    parallelFor(static_cast<int>(hypotheses.size()), threads, [&](int begin, int end) {
+        for (int k = begin; k < end; ++k) {
+            const SceneParams start = parameterization->paramsOf(poseOf(hypotheses[static_cast<std::size_t>(k)]));
+            const RegistrationResult r = refinement.run(start, {}, stop);
+            refined[static_cast<std::size_t>(k)] = {parameterization->worldFromObject(r.params), -r.similarity,
+                                                    r.evaluations, k};
+        }
+    }, 4);
+    int refineEvaluations = 0;
+    for (const Refined& r : refined) refineEvaluations += r.evaluations;
+    std::stable_sort(refined.begin(), refined.end(), [](const Refined& a, const Refined& b) { return a.cost < b.cost; });
+    const std::size_t finalists = std::min(refined.size(), static_cast<std::size_t>(settings.finalists));
+    found.stages.push_back({"refine", since(t0), refineEvaluations, static_cast<int>(finalists)});
+    if (stopped()) {
+        found.stopped = true;
+        return found;
+    }
+
+    // 4. Finish: the best refined hypotheses registered fully, side by side.
+    t0 = Clock::now();
+    RegistrationSettings full = finish;
+    full.threads = finalists >= static_cast<std::size_t>(threads) ? 1 : threads;
+    std::vector<FoundCandidate> answers(finalists);
+    parallelFor(static_cast<int>(finalists), full.threads == 1 ? threads : 1, [&](int begin, int end) {
+        for (int k = begin; k < end; ++k) {
+            const Refined& from = refined[static_cast<std::size_t>(k)];
+            const ObjectRegistrationResult r = registerObject(scene, object, view, from.pose, full, {}, stop);
+            answers[static_cast<std::size_t>(k)] = {r.worldFromObject, r.similarity, from.hypothesis, r.evaluations};
+        }
+    });
+    int finishEvaluations = 0;
+    for (const FoundCandidate& a : answers) finishEvaluations += a.evaluations;
+    std::stable_sort(answers.begin(), answers.end(),
+                     [](const FoundCandidate& a, const FoundCandidate& b) { return a.similarity > b.similarity; });
+    for (const FoundCandidate& a : answers) {
+        const bool same = std::any_of(found.candidates.begin(), found.candidates.end(), [&](const FoundCandidate& b) {
+            const CameraPoseDifference d = cameraPoseDifference(camera, b.worldFromObject, a.worldFromObject, pivot);
+            return d.inPlaneMm <= 1.0 && d.rotationDeg <= 2.0;
+        });
+        if (!same) found.candidates.push_back(a);
+    }
+    found.stages.push_back({"finish", since(t0), finishEvaluations, static_cast<int>(found.candidates.size())});
+    found.stopped = stopped();
+    return found;
+}
+
+std::vector<std::string> describeFindStages(const FoundPose& found) {
+    std::vector<std::string> lines;
+    for (const FindStage& s : found.stages) {
+        char buf[200];
+        const char* what = s.name == "templates" ? "renders -> templates"
+                           : s.name == "scan"    ? "placements -> hypotheses"
+                           : s.name == "refine"  ? "evaluations -> finalists"
+                                                 : "evaluations -> distinct answers";
+        std::snprintf(buf, sizeof buf, "%-9s %6.2f s %10lld %s %d", s.name.c_str(), s.seconds, s.evaluations, what, s.kept);
+        lines.push_back(buf);
+    }
+    return lines;
+}
+
+}  // namespace fm
