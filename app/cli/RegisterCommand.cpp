@@ -368,7 +368,8 @@ FM_REGISTER_COMMAND("register", 40, [](CLI::App& app) {
     cmd->add_option("--start", a->start,
                     "Start pose x,y,z,az,el,rot (default 0,0,0,0,0,0); with --model: a .jts or "
                     ".tra file (row --frame) or x,y,z,zrot,xrot,yrot, one per --model (or one "
-                    ".tra for all); with --trial: a .tra (its pose at --frame; default the "
+                    ".tra for all), 'find' for a model to be found (none given: all are found, "
+                    "see --find-space); with --trial: a .tra (its pose at --frame; default the "
                     "trial's keyframe)");
     cmd->add_option("--truth", a->truth, "True pose of --reference, if known (errors reported)")
         ->check(fm::cli::kPoseText);

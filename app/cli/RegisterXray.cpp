@@ -1,6 +1,7 @@
 #include "cli/RegisterXray.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <memory>
 #include <vector>
@@ -8,6 +9,9 @@
 #include "camera/CameraFile.h"
 #include "cli/ValueChecks.h"
 #include "core/Error.h"
+#include "find/FindSpace.h"
+#include "find/FoundRegistration.h"
+#include "find/SeenPose.h"
 #include "meshdrr/MeshDrr.h"
 #include "model/MeshModel.h"
 #include "radiograph/LabelMask.h"
@@ -40,6 +44,16 @@ const std::string& perModel(const std::vector<std::string>& list, std::size_t k,
                 ") or a single .tra for all");
 }
 
+// How a model's pose was found: the stages, and the answer as the camera sees it.
+void printFound(const FoundPose& found, const ProjectionGeometry& camera, const glm::dvec3& pivot) {
+    for (const std::string& line : describeFindStages(found)) std::printf("found       %s\n", line.c_str());
+    const SeenPose seen = seenFrom(cameraAxes(camera), found.candidates.front().worldFromObject, pivot);
+    std::printf("found at    pixel %.1f %.1f, depth %.1f mm, roll %.1f deg, tilts %.1f %.1f deg (as the camera "
+                "sees it; scan at 1/%d, %.2f s)\n",
+                seen.pixel.x, seen.pixel.y, seen.depth, seen.rollDeg, seen.tiltUDeg, seen.tiltVDeg,
+                found.scanFactor, found.seconds());
+}
+
 }  // namespace
 
 void addXrayRegisterOptions(CLI::App* cmd, XrayRegisterArgs& a) {
@@ -67,6 +81,11 @@ void addXrayRegisterOptions(CLI::App* cmd, XrayRegisterArgs& a) {
                     "While no two searches agree, search again from further starts up to this many")
         ->check(CLI::Range(1, 32))
         ->capture_default_str();
+    cmd->add_option("--find-space", a.findSpace,
+                    "Where a model with no start is looked for (no --start, or 'find' in its place): "
+                    "tilt=DEG (about the film axes from the model's frame as the camera sees it, default "
+                    "35), roll=DEG (about the ray, default 180: any), depth=NEAR:FAR (fractions of the "
+                    "source-to-detector distance, default 0.25:0.92)");
     addPageOption(cmd, a.page, "Page of a multi-page TIFF reference (0-based)");
     addRadiographOptions(cmd, a.prep);
 }
@@ -87,7 +106,18 @@ void runXrayRegister(const std::string& reference, const XrayRegisterArgs& a,
     if (reference.empty()) throw Error("--model needs --reference IMG (the radiograph)");
     if (a.camera.empty()) throw Error("--model needs --camera CALIB (the radiograph's calibration)");
     const std::size_t n = a.models.size();
-    if (starts.empty()) throw Error("--model needs --start POSES (a .jts, .tra or six numbers)");
+    // No --start: every model is found; `find` in a model's place finds that one.
+    std::vector<bool> findPose(n, starts.empty());
+    for (std::size_t k = 0; k < n && !starts.empty(); ++k) findPose[k] = perModel(starts, k, n, "--start") == "find";
+    const bool finding = std::find(findPose.begin(), findPose.end(), true) != findPose.end();
+    if (!finding && !a.findSpace.empty())
+        throw Error("--find-space applies to models with no start; every --model has a --start");
+    const FindSettings find = [&] {
+        FindSettings f;
+        if (!a.findSpace.empty()) f.space = parseFindSpace(a.findSpace, "--find-space");
+        f.threads = search.threads;
+        return f;
+    }();
     if (!a.masks.empty() && a.masks.size() != n)
         throw Error("--mask: give one per --model (" + std::to_string(n) + ")");
     const ConfirmationSettings confirmation = confirmationFrom(a);
@@ -125,14 +155,19 @@ void runXrayRegister(const std::string& reference, const XrayRegisterArgs& a,
         const std::string name =
             uniqueObjectName(scene, std::filesystem::path(a.models[k]).stem().string());
         auto xray = std::make_shared<MeshXrayModel>(prepareMeshDrr(model), mu, name);
-        const std::string& spec = perModel(starts, k, n, "--start");
-        const bool one = starts.size() != n;  // one .tra for all models
-        startPoses.push_back(readPoseSpec(spec, a.frame, one ? k : 0, one ? static_cast<int>(n) : 0,
-                                          a.traForm.empty() ? TraForm::Auto : parseTraForm(a.traForm, "--tra-form")));
+        if (findPose[k]) {
+            startPoses.emplace_back();  // replaced by the pose found
+        } else {
+            const std::string& spec = perModel(starts, k, n, "--start");
+            const bool one = starts.size() != n;  // one .tra for all models
+            startPoses.push_back(readPoseSpec(spec, a.frame, one ? k : 0, one ? static_cast<int>(n) : 0,
+                                              a.traForm.empty() ? TraForm::Auto : parseTraForm(a.traForm, "--tra-form")));
+        }
         scene.objects.push_back({name, xray, startPoses.back(), true});
     }
     // A start that covers no valid pixel leaves the search blind: refused with the numbers.
     for (std::size_t k = 0; k < n; ++k) {
+        if (findPose[k]) continue;
         const std::string blind = blindness(
             modelCoverage(scene.objects[k], scene.cameras[0], prepared.valid, search.threads));
         if (!blind.empty())
@@ -153,9 +188,12 @@ void runXrayRegister(const std::string& reference, const XrayRegisterArgs& a,
                 a.runs, a.runs == 1 ? "search" : "searches from independent starts",
                 a.runs > 1 ? (" (up to " + std::to_string(a.maxRuns) + " while no two agree)").c_str() : "",
                 sideBySide ? "side by side, one per core" : "one after the other");
+    if (finding) std::printf("find        %s\n", describeFindSpace(find.space).c_str());
     const RegistrationView view{0, prepared.image, prepared.valid};
-    const ObjectsRegistration all = registerObjects(scene, view, settings, confirmation);
-    const double wallSeconds = all.wallSeconds;
+    const auto started = std::chrono::steady_clock::now();
+    const FoundRegistration result = registerObjectsFinding(scene, findPose, view, settings, find, confirmation);
+    const ObjectsRegistration& all = result.registration;
+    const double wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     std::vector<std::string> lost, doubtful;
     for (std::size_t k = 0; k < n; ++k) {
         SceneObject& object = scene.objects[k];
@@ -163,11 +201,16 @@ void runXrayRegister(const std::string& reference, const XrayRegisterArgs& a,
         const ObjectRegistrationResult& r = c.answer;
         object.worldFromObject = r.worldFromObject;
         const glm::dvec3 pivot = defaultPivot(*object.model);
+        std::printf("\nmodel       %s (%s)\n", a.models[k].c_str(), object.model->describe().c_str());
+        if (const std::optional<FoundPose>& found = result.found[k]) {
+            if (found->candidates.empty()) throw Error(a.models[k] + ": stopped before a pose was found");
+            startPoses[k] = found->candidates.front().worldFromObject;
+            printFound(*found, scene.cameras[0], pivot);
+        }
+        std::printf("start       %s%s\n", formatPoseSpec(startPoses[k]).c_str(), findPose[k] ? " (found)" : "");
+        std::printf("final pose  %s\n", formatPoseSpec(r.worldFromObject).c_str());
         const CameraPoseDifference d =
             cameraPoseDifference(scene.cameras[0], startPoses[k], r.worldFromObject, pivot);
-        std::printf("\nmodel       %s (%s)\n", a.models[k].c_str(), object.model->describe().c_str());
-        std::printf("start       %s\n", formatPoseSpec(startPoses[k]).c_str());
-        std::printf("final pose  %s\n", formatPoseSpec(r.worldFromObject).c_str());
         std::printf("moved       in-plane %.3f mm (u %.3f, v %.3f), depth %.3f mm; rotation %.3f deg "
                     "(about the view %.3f, out of plane %.3f)\n",
                     d.inPlaneMm, d.translationMm.x, d.translationMm.y, d.depthMm, d.rotationDeg,

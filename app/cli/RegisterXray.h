@@ -25,6 +25,7 @@ struct XrayRegisterArgs {
     std::string traForm;  // --tra-form: "" (from the counts), matrix or xyzypr
     int runs = 2;         // --runs: searches from independent starts per model (1 = unconfirmed)
     int maxRuns = 4;      // --max-runs: the re-search's budget while no two agree
+    std::string findSpace;  // --find-space: where models with no start are looked for
     RadiographOptions prep;
 };
 
@@ -37,7 +38,8 @@ ConfirmationSettings confirmationFrom(const XrayRegisterArgs& args);
 void addXrayRegisterOptions(CLI::App* cmd, XrayRegisterArgs& args);
 
 // Throws fm::Error naming the file and the field for bad input.
-// The similarity is edge distance unless --similarity was given (`similarityGiven`).
+// The similarity is edge distance unless --similarity was given (`similarityGiven`). Models
+// with no start (no --start at all, or `find` in its place) are found (engine/find).
 void runXrayRegister(const std::string& reference, const XrayRegisterArgs& args,
                      const std::vector<std::string>& starts, const SearchArgs& search,
                      bool similarityGiven);

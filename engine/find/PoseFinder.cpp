@@ -48,6 +48,23 @@ std::vector<double> scaleGrid(const FindSpace& space, double templateDepth, doub
     return scales;
 }
 
+// The pose whose outline one view can barely tell from `pose`'s: the object mirrored through the
+// plane across the view at its pivot, and back through its own plane most across the view (so
+// the result is a rotation). For a planar object seen under parallel projection the two outlines
+// are the same; for a near-symmetric one (a femoral component's condyles seen from the side) nearly.
+RigidTransform mirrorPose(const RigidTransform& pose, const glm::dvec3& pivotInObject, const glm::dvec3& view) {
+    int across = 0;
+    for (int k = 1; k < 3; ++k)
+        if (std::abs(glm::dot(pose.rotation[k], view)) > std::abs(glm::dot(pose.rotation[across], view))) across = k;
+    const glm::dmat3 inWorld = glm::dmat3(1.0) - 2.0 * glm::outerProduct(view, view);
+    glm::dmat3 inObject(1.0);
+    inObject[across][across] = -1.0;
+    RigidTransform mirrored;
+    mirrored.rotation = inWorld * pose.rotation * inObject;
+    mirrored.translation = pose.applyToPoint(pivotInObject) - mirrored.rotation * pivotInObject;
+    return mirrored;
+}
+
 // The coarsest power of two up to maxScanFactor at which the model, seen along the optical axis at
 // the band's far end, spans minScanSpanPixels (twice its outline's largest distance from the
 // pivot: JTML's femoral component 236 px, the tray 175 px).
@@ -192,18 +209,21 @@ FoundPose findObjectPose(const Scene& scene, std::size_t object, const Registrat
         return found;
     }
 
-    // 4. Finish: the best refined hypotheses registered fully, side by side.
+    // 4. Finish: the best refined hypotheses registered fully, side by side, and the mirror image
+    //    of the best (one view cannot tell a near-planar or near-symmetric outline from it).
     t0 = Clock::now();
+    std::vector<Refined> starts(refined.begin(), refined.begin() + static_cast<std::ptrdiff_t>(finalists));
+    starts.push_back({mirrorPose(refined.front().pose, pivot, axes.view), 0.0, 0, refined.front().hypothesis});
     RegistrationSettings full = finish;
-    full.threads = finalists >= static_cast<std::size_t>(threads) ? 1 : threads;
-    std::vector<FoundCandidate> answers(finalists);
-    parallelFor(static_cast<int>(finalists), full.threads == 1 ? threads : 1, [&](int begin, int end) {
+    full.threads = starts.size() >= static_cast<std::size_t>(threads) ? 1 : threads;
+    std::vector<FoundCandidate> answers(starts.size());
+    parallelFor(static_cast<int>(starts.size()), full.threads == 1 ? threads : 1, [&](int begin, int end) {
         for (int k = begin; k < end; ++k) {
-            const Refined& from = refined[static_cast<std::size_t>(k)];
+            const Refined& from = starts[static_cast<std::size_t>(k)];
             const ObjectRegistrationResult r = registerObject(scene, object, view, from.pose, full, {}, stop);
             answers[static_cast<std::size_t>(k)] = {r.worldFromObject, r.similarity, from.hypothesis, r.evaluations};
         }
-    });
+    }, 4);
     int finishEvaluations = 0;
     for (const FoundCandidate& a : answers) finishEvaluations += a.evaluations;
     std::stable_sort(answers.begin(), answers.end(),

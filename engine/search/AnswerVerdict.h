@@ -36,8 +36,8 @@ inline constexpr double kConfirmedOutlineRatio = 0.92;
 // A pose found with no start (find/PoseFinder): a different answer of the search (not within the
 // agreement bounds) that scores at least this share of the answer's similarity is a rival the image
 // cannot rule out - a near-symmetric silhouette's mirror pose. On the JTML frames the runner-up
-// answers (the mirror tilts of the femoral component and the tray) scored 0.78-0.86 of the right
-// pose's (docs/find.md).
+// answers (the mirror images of the femoral component and the tray) scored 0.80-0.92 of the right
+// pose's; a box's half turn scores 1 (docs/find.md).
 inline constexpr double kRivalSimilarityRatio = 0.95;
 
 enum class AnswerVerdict { Ok, Doubtful, Lost };
