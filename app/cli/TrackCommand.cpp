@@ -29,6 +29,8 @@
 #include "io/ByteSource.h"
 #include "io/OutputPath.h"
 #include "pose/AutoscoperTra.h"
+#include "find/FindSpace.h"
+#include "track/FoundKeyframe.h"
 #include "track/FrameRecordBytes.h"
 #include "track/SegmentTracking.h"
 #include "track/TrackSegments.h"
@@ -54,6 +56,7 @@ struct TrackArgs {
     std::string cameras;  // "1,2" (1-based), empty = all
     std::string onLost = "search";
     bool uncertainty = true;
+    std::string findSpace;  // --find-space: where a bone with no keyframe is looked for
     fm::cli::RadiographOptions prep;  // over the trial's preparation of every camera
 };
 
@@ -129,6 +132,42 @@ void checkTrackOutputs(const TrackArgs& a) {
     fm::io::checkOutputPath(a.csv, "--csv");
 }
 
+// A bone with no keyframe (no trial keyframe, nothing in --start): its pose found in `frame`
+// with no start (track/FoundKeyframe.h); a lost answer is refused.
+fm::RigidTransform foundKeyframe(const fm::TrialScene& scene, const std::string& bone,
+                                 const std::vector<std::size_t>& cameras, int frame, const TrackArgs& a,
+                                 bool writer) {
+    fm::FindSettings find;
+    if (!a.findSpace.empty()) find.space = fm::parseFindSpace(a.findSpace, "--find-space");
+    find.threads = a.threads;
+    const fm::Scene alone = fm::sceneOfBoneAlone(scene, bone);
+    const fm::SceneObject& object = alone.object(bone);
+    fm::RegistrationSettings settings = fm::realXraySettings(fm::defaultSimilarityFor(*object.model));
+    settings.seed = a.seed;
+    settings.threads = a.threads;
+    const fm::FoundKeyframe k =
+        fm::findKeyframe(alone, bone, fm::trialFrameViews(scene, cameras), frame, settings, find);
+    if (writer) {
+        std::printf("find      %s has no keyframe: found in frame %d (%s)\n", bone.c_str(), frame,
+                    fm::describeFindSpace(find.space).c_str());
+        for (const fm::CameraFind& c : k.cameras) {
+            const fm::FoundPose& f = *c.result.found[0];
+            std::printf("          camera %zu: %.2f s, scan at 1/%d, %s\n", c.camera + 1, f.seconds(), f.scanFactor,
+                        c.check.text.c_str());
+        }
+        if (k.rayMissMm)
+            std::printf("          centre where the cameras' rays meet (within %.2f mm), orientation from camera %zu\n",
+                        *k.rayMissMm, k.cameras[k.best].camera + 1);
+    }
+    if (k.verdict == fm::AnswerVerdict::Lost)
+        throw fm::Error(bone + " has no keyframe and the pose found in frame " + std::to_string(frame) +
+                        " is lost in every camera: give a keyframe (--start) or a --find-space that holds it");
+    if (k.verdict == fm::AnswerVerdict::Doubtful && writer)
+        std::fprintf(stderr, "warning: %s: the pose found in frame %d is doubtful; its frame's verdict says more\n",
+                     bone.c_str(), frame);
+    return k.pose;
+}
+
 void runTrack(const TrackArgs& a) {
     checkTrackOutputs(a);
     fm::distributed::Transport& transport = fm::distributed::processTransport();
@@ -166,7 +205,9 @@ void runTrack(const TrackArgs& a) {
     if (!a.start.empty()) startTra = fm::readTrialTra(a.start, scene);
     const bool several = a.bones.size() > 1;
 
-    // Every rank works out the same bones, segments and jobs.
+    // Every rank works out the same bones, segments and jobs (a bone with no keyframe is found in
+    // the first frame on every rank alike: deterministic).
+    bool anyFound = false;
     std::vector<BoneRun> bones;
     std::vector<TrackJob> jobs;
     std::size_t longest = 0;
@@ -181,8 +222,12 @@ void runTrack(const TrackArgs& a) {
             for (const auto& [frame, pose] : b.done) kept.insert(frame);
             b.keptRows = fm::cli::keptTrackCsvRows(a.csv, scene.cameras.size(), b.name, kept);
         }
-        b.segments =
-            fm::splitAtKeyframes(frames, fm::boneKeyframes(scene, b.name, startTra, a.start));
+        std::map<int, fm::RigidTransform> keyframes = fm::boneKeyframes(scene, b.name, startTra, a.start);
+        if (keyframes.empty()) {
+            keyframes[frames.front()] = foundKeyframe(scene, b.name, cameras, frames.front(), a, writer);
+            anyFound = true;
+        }
+        b.segments = fm::splitAtKeyframes(frames, keyframes);
         for (std::size_t s = 0; s < b.segments.size(); ++s) {
             jobs.push_back({bi, s});
             longest = std::max(longest, b.segments[s].frames.size());
@@ -193,6 +238,8 @@ void runTrack(const TrackArgs& a) {
                          b.done.size(), b.name.c_str(), b.out.string().c_str(), b.todo);
         bones.push_back(std::move(b));
     }
+    if (!anyFound && !a.findSpace.empty())
+        throw fm::Error("--find-space applies to a bone with no keyframe; every --bone has one");
     // Each bone is tracked alone, as Autoscoper does: the other bones have no pose in this
     // frame yet (they sit at the identity), so they are hidden from its DRRs.
     std::vector<fm::Tracker> trackers;
@@ -369,6 +416,10 @@ FM_REGISTER_COMMAND("track", 45, [](CLI::App& app) {
         ->required();
     cmd->add_option("--frames", a->frames, "Frames A:B[:STEP], 0-based, inclusive (default: all)");
     cmd->add_flag("--reverse", a->reverse, "Track from the last frame of the range to the first");
+    cmd->add_option("--find-space", a->findSpace,
+                    "A bone with no keyframe (none in the trial or --start) is found in the first frame of "
+                    "--frames with no start: where to look (tilt=DEG, roll=DEG, depth=NEAR:FAR; see "
+                    "register --find-space)");
     cmd->add_option("--init", a->init, "Start of each frame: previous, extrapolate or keyframes")
         ->capture_default_str();
     cmd->add_option("--start", a->start,

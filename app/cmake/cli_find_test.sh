@@ -5,7 +5,10 @@
 #     verdicts ok, the written .jts rows within 1 mm (x, y) and 2 deg of fem.jts / tib.jts;
 #  2. `--start find` for one model and a .jts for the other: only that one is found;
 #  3. refused before any search, naming the option and the key: --find-space when every model has a
-#     start, an unknown key, a depth band out of range, a tilt above 90.
+#     start, an unknown key, a depth band out of range, a tilt above 90;
+#  4. `track` on the JTML trial with its keyframes removed: the tibia is found in frame 0 and
+#     tracked through frames 0-1, every frame ok and within 1 mm in-plane and 2 deg of tib.jts
+#     (`compare`'s camera axes); --find-space is refused for a bone that has a keyframe.
 set -uo pipefail
 FM=$1
 DATA=${FM_DATA_DIR:-$(dirname "$0")/../../../shared/data}
@@ -63,4 +66,35 @@ refuse "a depth band beyond the film" "0 < NEAR < FAR < 1" "${base[@]}" --find-s
 refuse "a depth band without a colon" "NEAR:FAR" "${base[@]}" --find-space depth=0.5
 refuse "a tilt of 100 deg" "tilt must be 0 to 90" "${base[@]}" --find-space tilt=100
 refuse "a tilt that is not a number" "tilt" "${base[@]}" --find-space tilt=abc
-echo "find: both implants found with no start, refusals named"
+# 4. Tracking with no keyframe: the trial's JSON without "keyframes", its paths made absolute.
+python3 - "$(dirname "$0")/../../data/trials/jtml-knee.json" "$D" "$OUT/nokey.json" <<'PY' || fail "trial copy"
+import json, sys
+t = json.load(open(sys.argv[1]))
+del t["keyframes"]
+d = sys.argv[2]
+t["cameras"][0]["calibration"] = d + "/calibration.txt"
+t["cameras"][0]["frames"] = d
+for b, stem in zip(t["bones"], ("fem", "tib")):
+    b["mesh"] = d + ("/KR_right_7_fem.stl" if stem == "fem" else "/KR_right_6_tib.stl")
+    b["masks"] = d + "/Labels/" + stem
+json.dump(t, open(sys.argv[3], "w"))
+PY
+out=$("$FM" track --trial "$OUT/nokey.json" --bone tibia --frames 0:1 --out "$OUT/tib.tra" --threads 2) ||
+    fail "track with no keyframe exited $?: $out"
+grep -q "^find      tibia has no keyframe: found in frame 0" <<<"$out" || fail "no find line: $out"
+grep -q "^          camera 1: .* ok: " <<<"$out" || fail "the pose found is not ok: $out"
+grep -q "^tibia: verdict 2 ok, 0 doubtful, 0 lost" <<<"$out" || fail "tracked frames not ok: $out"
+cmp=$("$FM" compare --truth "$D/tib.jts" --tra "$OUT/tib.tra" --trial "$OUT/nokey.json" --bone tibia --csv "$OUT/cmp.csv") ||
+    fail "compare exited $?: $cmp"
+python3 - "$OUT/cmp.csv" <<'PY' || fail "tracked tibia not within 1 mm in-plane / 2 deg of tib.jts: $(cat "$OUT/cmp.csv")"
+import csv, math, sys
+rows = [r for r in csv.DictReader(open(sys.argv[1])) if r["status"] == "compared"]
+assert len(rows) == 2, rows
+for r in rows:
+    assert math.hypot(float(r["camera_x"]), float(r["camera_y"])) < 1.0, r
+    assert float(r["rotation_deg"]) < 2.0, r
+PY
+msg=$("$FM" track --trial "$(dirname "$0")/../../data/trials/jtml-knee.json" --bone tibia --frames 0:0 \
+    --out "$OUT/k.tra" --find-space tilt=20 2>&1) && fail "--find-space with a keyframe accepted"
+grep -q "applies to a bone with no keyframe" <<<"$msg" || fail "--find-space refusal does not say why: $msg"
+echo "find: both implants found with no start, a trial tracked with no keyframe, refusals named"
