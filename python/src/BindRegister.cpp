@@ -2,6 +2,7 @@
 // the same search as `fluoromatch register --reference IMG --camera CALIB --model M --start S`
 // (xray/ObjectRegistration.h), with the CLI's options as keyword arguments and the same pose for
 // the same seed. Every result says how sure it is (xray/AnswerCheck.h).
+#include <algorithm>
 #include <filesystem>
 #include <optional>
 
@@ -14,6 +15,7 @@
 #include "PyMesh.h"
 #include "camera/CameraFile.h"
 #include "core/Error.h"
+#include "find/FoundRegistration.h"
 #include "radiograph/LabelMask.h"
 #include "radiograph/Radiograph.h"
 #include "radiograph/RadiographPreparation.h"
@@ -72,18 +74,30 @@ void bindRegister(pb::module_& m) {
            std::optional<std::array<int, 4>> roi, int page, int bits, const std::string& traForm,
            const std::string& method, const std::string& similarity, std::uint64_t seed, int budget,
            int polishBudget, std::optional<std::vector<int>> levels, std::optional<std::vector<double>> radius,
-           int threads, const std::string& polish, int runs, int maxRuns, const pb::object& progress) {
+           int threads, const std::string& polish, int runs, int maxRuns, const std::string& findSpace,
+           const pb::object& progress) {
             // 1. Everything that can be refused, before the search.
             if (runs < 1 || runs > 16) throw Error("runs must be 1 to 16 (searches from independent starts)");
             if (maxRuns < runs || maxRuns > 32) throw Error("max_runs must be at least runs and at most 32");
             const std::vector<pb::object> modelList = listOf(models);
             const std::size_t n = modelList.size();
             if (n == 0) throw Error("models: give at least one model");
-            const std::vector<pb::object> starts = listOf(start);
+            // No start: every model is found (engine/find); None or "find" in a model's place finds that one.
+            const std::vector<pb::object> starts = start.is_none() ? std::vector<pb::object>(n, pb::none()) : listOf(start);
             const bool oneTra = starts.size() == 1 && n > 1 && isPath(starts[0]) &&
                                 fs::path(starts[0].cast<std::string>()).extension() == ".tra";
             if (starts.size() != n && !oneTra)
                 throw Error("start: give one per model (" + std::to_string(n) + ") or a single .tra for all");
+            std::vector<bool> findPose(n, false);
+            for (std::size_t k = 0; k < n && !oneTra; ++k)
+                findPose[k] = starts[k].is_none() ||
+                              (pb::isinstance<pb::str>(starts[k]) && starts[k].cast<std::string>() == "find");
+            const bool finding = std::find(findPose.begin(), findPose.end(), true) != findPose.end();
+            if (!finding && !findSpace.empty())
+                throw Error("find_space applies to models with no start; every model has a start");
+            FindSettings find;
+            if (!findSpace.empty()) find.space = parseFindSpace(findSpace, "find_space");
+            find.threads = threads;
             if (!(mu >= 0.0) || mu > 1e3) throw Error("mu must be 0 (the default) or a positive attenuation in 1/mm");
             std::vector<std::string> outs;
             if (!out.is_none())
@@ -164,13 +178,17 @@ void bindRegister(pb::module_& m) {
                 const std::string name = uniqueObjectName(scene, fs::path(file).stem().string());
                 auto xray = std::make_shared<MeshXrayModel>(mesh->tracedPtr(), mu > 0.0 ? mu : kMuCobaltChromePerMm, name);
                 const pb::object& s = oneTra ? starts[0] : starts[k];
-                startPoses.push_back(isPath(s) ? readPoseSpec(pb::str(s).cast<std::string>(), frame, oneTra ? k : 0,
-                                                              oneTra ? static_cast<int>(n) : 0, form)
-                                               : toTransform(s, "start"));
+                if (findPose[k])
+                    startPoses.emplace_back();  // replaced by the pose found
+                else
+                    startPoses.push_back(isPath(s) ? readPoseSpec(pb::str(s).cast<std::string>(), frame, oneTra ? k : 0,
+                                                                  oneTra ? static_cast<int>(n) : 0, form)
+                                                   : toTransform(s, "start"));
                 scene.objects.push_back({name, xray, startPoses.back(), true});
                 names.push_back(name);
             }
             for (std::size_t k = 0; k < n; ++k) {
+                if (findPose[k]) continue;
                 const std::string blind = blindness(modelCoverage(scene.objects[k], scene.cameras[0], prepared.valid, threads));
                 if (!blind.empty()) throw Error(names[k] + " at its start " + formatPoseSpec(startPoses[k]) + " " + blind);
             }
@@ -178,14 +196,14 @@ void bindRegister(pb::module_& m) {
             // 4. The searches: side by side, one per core, as the CLI runs them.
             ProgressRelay relay(progress);
             const RegistrationView view{0, prepared.image, prepared.valid};
-            ObjectsRegistration all;
+            FoundRegistration result;
             {
                 pb::gil_scoped_release unlock;
                 ConfirmationSettings confirmation;
                 confirmation.runs = runs;
                 confirmation.maxRuns = maxRuns;
-                all = registerObjects(
-                    scene, view, settings, confirmation,
+                result = registerObjectsFinding(
+                    scene, findPose, view, settings, find, confirmation,
                     [&](std::size_t k) -> RegistrationCallback {
                         return [&, k](const RegistrationProgress& p) {
                             relay.report([&] { return progressDict(p, names[k]); });
@@ -193,8 +211,14 @@ void bindRegister(pb::module_& m) {
                     },
                     relay.stopFlag());
             }
+            const ObjectsRegistration& all = result.registration;
             const double wallSeconds = all.wallSeconds;
             relay.rethrowIfFailed();
+            for (std::size_t k = 0; k < n; ++k)
+                if (result.found[k]) {
+                    if (result.found[k]->candidates.empty()) throw Error(names[k] + ": stopped before a pose was found");
+                    startPoses[k] = result.found[k]->candidates.front().worldFromObject;
+                }
 
             // 5. The answers, each with its verdict; written (like the CLI) unless lost.
             pb::list answers;
@@ -240,6 +264,24 @@ void bindRegister(pb::module_& m) {
                 moved["rotation_deg"] = d.rotationDeg;
                 a["moved"] = moved;
                 a["written"] = pb::none();
+                a["found"] = pb::none();
+                if (const std::optional<FoundPose>& f = result.found[k]) {
+                    pb::dict found;
+                    pb::list stages;
+                    for (const FindStage& st : f->stages) {
+                        pb::dict sd;
+                        sd["name"] = st.name;
+                        sd["seconds"] = st.seconds;
+                        sd["evaluations"] = st.evaluations;
+                        sd["kept"] = st.kept;
+                        stages.append(sd);
+                    }
+                    found["stages"] = stages;
+                    found["scan_factor"] = f->scanFactor;
+                    found["seconds"] = f->seconds();
+                    found["rival"] = c.evidence.rival ? pb::cast(c.evidence.rival->similarityRatio) : pb::object(pb::none());
+                    a["found"] = found;
+                }
                 if (!outs.empty() && check.verdict != AnswerVerdict::Lost && !r.stopped) {
                     const std::string& path = oneOutTra ? outs[0] : outs[k];
                     writePoseSpec(path, frame, oneOutTra ? k : 0, r.worldFromObject);
@@ -249,14 +291,15 @@ void bindRegister(pb::module_& m) {
             }
             return answers;
         },
-        pb::arg("reference"), pb::arg("camera"), pb::arg("models"), pb::arg("start"), pb::kw_only(),
+        pb::arg("reference"), pb::arg("camera"), pb::arg("models"), pb::arg("start") = pb::none(), pb::kw_only(),
         pb::arg("frame") = 0, pb::arg("out") = pb::none(), pb::arg("mask") = pb::none(), pb::arg("mu") = 0.0,
         pb::arg("invert") = false, pb::arg("log") = false, pb::arg("i0") = pb::none(),
         pb::arg("exclude_below") = pb::none(), pb::arg("erode") = 3, pb::arg("roi") = pb::none(),
         pb::arg("page") = -1, pb::arg("bits") = 8, pb::arg("tra_form") = "auto", pb::arg("method") = "cmaes",
         pb::arg("similarity") = "edge", pb::arg("seed") = 1, pb::arg("budget") = 0, pb::arg("polish_budget") = -1,
         pb::arg("levels") = pb::none(), pb::arg("radius") = pb::none(), pb::arg("threads") = 0,
-        pb::arg("polish") = "nm", pb::arg("runs") = 2, pb::arg("max_runs") = 4, pb::arg("progress") = pb::none(),
+        pb::arg("polish") = "nm", pb::arg("runs") = 2, pb::arg("max_runs") = 4, pb::arg("find_space") = "",
+        pb::arg("progress") = pb::none(),
         R"doc(
 Registers implant or bone meshes in a real radiograph, as `fluoromatch register --reference IMG
 --camera CALIB --model M ... --start S` does, with its options as keyword arguments (--exclude-
@@ -266,7 +309,8 @@ as lists). The same pose as the CLI for the same arguments and seed.
 reference: a radiograph path or a (rows, cols) array (then bits= gives its full scale);
 camera: a calibration path or a Camera; models: path(s) or Mesh(es); start: per model a .jts /
 .tra path (row `frame`), six numbers as text, or a worldFromObject 4x4 array; one .tra for
-all models. mask: a label mask per model (path or boolean array): the silhouette IoU and the
+all models; None (or "find" in a model's place) finds the pose with no start (docs/find.md;
+find_space="tilt=35,roll=180,depth=0.25:0.92" as --find-space). mask: a label mask per model (path or boolean array): the silhouette IoU and the
 verdict use it. out: .jts per model or one .tra, written as the CLI does (not when lost).
 progress(dict) is called as the search goes; return False to stop it (Ctrl-C stops it too).
 
@@ -277,7 +321,9 @@ needs a second search from another start ending there or a mask that agrees), ve
 reasons), runs and agreeing (searches from independent starts: `runs=` at first, up to
 `max_runs=` while no two agree; the answer is the best), uncertainty (per camera-frame
 coordinate u, v, depth mm and about u, v, view deg: the spread the image allows, "weak": the
-weakly fixed ones), iou, start_iou, moved, written.)doc");
+weakly fixed ones), iou, start_iou, moved, written, found (for a model found with no start:
+stages [{name, seconds, evaluations, kept}], scan_factor, seconds, rival: the best different
+answer's similarity over the answer's; else None).)doc");
 }
 
 }  // namespace fm::py

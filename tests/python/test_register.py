@@ -112,3 +112,22 @@ def test_the_gil_is_released_while_the_engine_works():
     # Held, the loop would turn only until the worker enters the engine (one switch interval:
     # about 1 % of the free rate here).
     assert seconds > 0.1 and count / seconds > 0.3 * free / free_seconds, (count, seconds, free, free_seconds)
+
+
+def test_a_model_with_no_start_is_found_as_the_cli_finds_it(jtml, cli, tmp_path):
+    """start=None finds the pose (docs/find.md): the same .jts bytes as `register` with no --start."""
+    ref, cal, tib = jtml / "AT_K1_V1_0160.tif", jtml / "calibration.txt", jtml / "KR_right_6_tib.stl"
+    cli("register", "--reference", ref, "--camera", cal, "--model", tib, "--invert", "--runs", "1",
+        "--out", tmp_path / "cli.jts", "--threads", "2")
+    [answer] = fm.register(str(ref), str(cal), str(tib), invert=True, runs=1, out=str(tmp_path / "py.jts"), threads=2)
+    assert (tmp_path / "py.jts").read_bytes() == (tmp_path / "cli.jts").read_bytes()
+    truth = fm.read_jts(jtml / "tib.jts")[0]
+    assert np.linalg.norm(answer["pose"][:2, 3] - truth[:2, 3]) < 1.0
+    found = answer["found"]
+    assert [s["name"] for s in found["stages"]] == ["templates", "scan", "refine", "finish"]
+    assert found["scan_factor"] == 8 and found["seconds"] > 0 and found["rival"] < 0.95
+    np.testing.assert_allclose(answer["start"][:3, :3] @ answer["pose"][:3, :3].T, np.eye(3), atol=0.1)
+    with pytest.raises(fm.Error, match="find_space applies to models with no start"):
+        fm.register(str(ref), str(cal), str(tib), str(jtml / "tib.jts"), invert=True, find_space="tilt=20")
+    with pytest.raises(fm.Error, match='unknown "spin"'):
+        fm.register(str(ref), str(cal), str(tib), invert=True, find_space="spin=2")
