@@ -152,16 +152,20 @@ fm::RigidTransform foundKeyframe(const fm::TrialScene& scene, const std::string&
                     fm::describeFindSpace(find.space).c_str());
         for (const fm::CameraFind& c : k.cameras) {
             const fm::FoundPose& f = *c.result.found[0];
-            std::printf("          camera %zu: %.2f s, scan at 1/%d, %s\n", c.camera + 1, f.seconds(), f.scanFactor,
-                        c.check.text.c_str());
+            std::printf("          camera %zu: %s; %.2f s, scan at 1/%d, %s\n", c.camera + 1,
+                        fm::describeFindSpace(c.space).c_str(), f.seconds(), f.scanFactor, c.check.text.c_str());
         }
         if (k.rayMissMm)
-            std::printf("          centre where the cameras' rays meet (within %.2f mm), orientation from camera %zu\n",
-                        *k.rayMissMm, k.cameras[k.best].camera + 1);
+            std::printf("          the cameras agree: orientations %.1f deg apart, centres on rays within %.2f mm of one point\n",
+                        k.camerasAgreeDeg, *k.rayMissMm);
+        else if (k.cameras.size() > 1)
+            std::printf("          the cameras' answers disagree (no two within %.0f deg and %.0f mm)\n", fm::kCamerasAgreeDeg,
+                        fm::kCamerasAgreeMm);
     }
     if (k.verdict == fm::AnswerVerdict::Lost)
         throw fm::Error(bone + " has no keyframe and the pose found in frame " + std::to_string(frame) +
-                        " is lost in every camera: give a keyframe (--start) or a --find-space that holds it");
+                        (k.cameras.size() > 1 ? " is not the same in its cameras" : " is lost") +
+                        ": give a keyframe (--start) or a --find-space that holds it");
     if (k.verdict == fm::AnswerVerdict::Doubtful && writer)
         std::fprintf(stderr, "warning: %s: the pose found in frame %d is doubtful; its frame's verdict says more\n",
                      bone.c_str(), frame);

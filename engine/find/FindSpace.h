@@ -21,14 +21,25 @@ struct FindSpace {
     // intensifier (the JTML knee at 0.86), so the default reaches further.
     double nearFraction = 0.25;
     double farFraction = 0.92;
+    // Or in mm from the source (both > 0): a pinhole calibration (MayaCam) has no physical film,
+    // its detector plane is a virtual one 10 m away (camera/PinholeCamera.h), and a biplane
+    // trial knows better: where its cameras' views cross (track/FoundKeyframe.h).
+    double nearMm = 0.0;
+    double farMm = 0.0;
+
+    // The band in mm for a camera whose film lies `distance` mm from its source.
+    double nearDepth(double distance) const { return nearMm > 0.0 ? nearMm : nearFraction * distance; }
+    double farDepth(double distance) const { return farMm > 0.0 ? farMm : farFraction * distance; }
 };
 
-// "tilt=35,roll=180,depth=0.25:0.92" (any subset, any order) over the defaults. Throws
-// fm::Error naming `option` and the key for an unknown key, a value that is not a number or
-// out of range (tilt 0-90, roll 0-180, 0 < near < far < 1).
+// "tilt=35,roll=180,depth=0.25:0.92" (any subset, any order) over the defaults; depth in mm as
+// "depth=600mm:1400mm". Throws fm::Error naming `option` and the key for an unknown key, a value
+// that is not a number or out of range (tilt 0-90, roll 0-180, 0 < near < far < 1, or
+// 0 < near mm < far mm).
 FindSpace parseFindSpace(const std::string& text, const std::string& option = "--find-space");
 
-// "tilt +-35 deg, roll +-180 deg, depth 0.25-0.92 of the source-to-detector distance"
+// "tilt +-35 deg, roll +-180 deg, depth 0.25-0.92 of the source-to-detector distance" (or
+// "depth 600-1400 mm from the source")
 std::string describeFindSpace(const FindSpace& space);
 
 }  // namespace fm

@@ -36,6 +36,9 @@ FoundRegistration registerObjectsFinding(const Scene& scene, const std::vector<b
     for (std::size_t k = 0; k < scene.objects.size(); ++k) {
         if (!out.found[k]) continue;
         ConfirmedObject& c = out.registration.objects[k];
+        // Searches around a found pose share its basin, right or wrong: what confirms it is the
+        // outline's ratio (edge distance), a mask or a second camera, not their agreement.
+        c.evidence.agreementConfirms = false;
         const glm::dvec3 pivot = defaultPivot(*scene.objects[k].model);
         for (const FoundCandidate& candidate : out.found[k]->candidates) {
             const CameraPoseDifference d =

@@ -47,7 +47,7 @@ OutlineTemplates renderOutlineTemplates(const SceneObject& object, const CameraA
     if (box.empty()) throw Error("find: object '" + object.name + "' has no bounds to render");
     const glm::dvec3 pivot = defaultPivot(*object.model);
     OutlineTemplates out;
-    out.depth = std::sqrt(space.nearFraction * space.farFraction) * axes.distance;
+    out.depth = std::sqrt(space.nearDepth(axes.distance) * space.farDepth(axes.distance));
     out.pixelMm = pixelMm;
     out.tilts = evenGrid(space.tiltDeg, tiltStepDeg);
     const double radiusMm = 0.5 * glm::length(box.upper - box.lower);

@@ -40,8 +40,8 @@ void validate(const FindSettings& s) {
 // The scales of the scan: the band's depths as magnifications over the templates', in steps of
 // at most `step`.
 std::vector<double> scaleGrid(const FindSpace& space, double templateDepth, double distance, double step) {
-    const double low = templateDepth / (space.farFraction * distance);
-    const double high = templateDepth / (space.nearFraction * distance);
+    const double low = templateDepth / space.farDepth(distance);
+    const double high = templateDepth / space.nearDepth(distance);
     const int gaps = std::max(1, static_cast<int>(std::ceil(std::log(high / low) / std::log(step) - 1e-9)));
     std::vector<double> scales;
     for (int k = 0; k <= gaps; ++k) scales.push_back(low * std::pow(high / low, double(k) / gaps));
@@ -72,7 +72,7 @@ int scanFactorFor(const SceneObject& target, const CameraAxes& axes, const FindS
     FindSpace flat = settings.space;
     flat.tiltDeg = 0.0;
     const OutlineTemplates probe = renderOutlineTemplates(target, axes, flat, 1.0, axes.spacing.x * 4.0, 1);
-    const double far = settings.space.farFraction * axes.distance;
+    const double far = settings.space.farDepth(axes.distance);
     const double spanPixels = 2.0 * probe.templates.front().radius * 4.0 * probe.depth / far;
     int factor = 2;
     while (factor * 2 <= settings.maxScanFactor && spanPixels / (factor * 2) >= settings.minScanSpanPixels) factor *= 2;
@@ -108,6 +108,10 @@ FoundPose findObjectPose(const Scene& scene, std::size_t object, const Registrat
     if (view.reference.width != camera.detector.size.x || view.reference.height != camera.detector.size.y)
         throw Error("find: the radiograph's size differs from camera " + std::to_string(view.camera + 1) + "'s");
     const CameraAxes axes = cameraAxes(camera);
+    if (settings.space.farDepth(axes.distance) >= axes.distance)
+        throw Error("find: the depth band reaches " + std::to_string(settings.space.farDepth(axes.distance)) +
+                    " mm from the source, beyond camera " + std::to_string(view.camera + 1) + "'s film (" +
+                    std::to_string(axes.distance) + " mm)");
     const glm::dvec3 pivot = defaultPivot(*target.model);
     const int threads = settings.threads > 0 ? settings.threads : defaultThreadCount();
     const auto stopped = [&] { return stop && stop->load(); };

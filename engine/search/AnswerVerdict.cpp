@@ -48,7 +48,7 @@ AnswerCheck judgeEvidence(const AnswerEvidence& evidence) {
     if (evidence.runs >= 2) {
         const std::string counted = std::to_string(evidence.agreeing) + " of " + std::to_string(evidence.runs) +
                                     " searches from different starts end here";
-        if (evidence.agreeing >= 2) j.add(V::Ok, counted, true);
+        if (evidence.agreeing >= 2) j.add(V::Ok, counted, evidence.agreementConfirms);
         else j.add(V::Doubtful, "no other search from a different start ends here (" + counted + ")");
     }
     // 3. The mask, where there is one: the silhouette must cover it.

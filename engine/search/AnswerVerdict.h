@@ -47,6 +47,10 @@ struct AnswerEvidence {
     std::optional<double> iou;  // silhouette IoU against the object's mask
     int runs = 0;               // searches from independent starts (0: not run)
     int agreeing = 0;           // of them, those that ended at the answer
+    // Whether their agreement confirms the answer. Not for a pose found with no start under a
+    // measure with no ceiling (gradient NCC): the searches start around the found pose and share
+    // its basin, right or wrong; an outline's ratio, a mask or a second camera must confirm it.
+    bool agreementConfirms = true;
     std::optional<PoseUncertainty> uncertainty;
     // The names of its coordinates in the reasons (null: the camera frame's, searchCoordinateName).
     const std::array<const char*, 6>* coordinateNames = nullptr;

@@ -1,6 +1,10 @@
 #include "track/FoundKeyframe.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include "core/Error.h"
+#include "find/SharedView.h"
 #include "scene/ObjectPoseParameterization.h"
 
 namespace fm {
@@ -44,39 +48,74 @@ FoundKeyframe findKeyframe(const Scene& scene, const std::string& bone, const Fr
     for (const RegistrationView& view : views) {
         CameraFind c;
         c.camera = view.camera;
-        c.result = registerObjectsFinding(alone, findPose, view, settings, find, confirmation, {}, stop);
+        // With other cameras and no band in mm given: the depths this camera's rays spend in
+        // their views.
+        FindSettings here = find;
+        std::vector<ProjectionGeometry> others;
+        for (const RegistrationView& o : views)
+            if (o.camera != view.camera) others.push_back(scene.cameras.at(o.camera));
+        if (!others.empty() && find.space.nearMm <= 0.0)
+            if (const auto band = sharedViewDepths(scene.cameras.at(view.camera), others)) {
+                here.space.nearMm = band->first;
+                here.space.farMm = band->second;
+            }
+        c.space = here.space;
+        c.result = registerObjectsFinding(alone, findPose, view, settings, here, confirmation, {}, stop);
         const ConfirmedObject& answer = c.result.registration.objects[0];
         c.check = checkAnswer(alone.objects[0], answer.answer.worldFromObject, {view}, alone.cameras,
                               answer.evidence, settings.threads);
         out.cameras.push_back(std::move(c));
     }
     // The best camera: the least bad verdict, then the highest similarity.
+    const auto similarityOf = [](const CameraFind& c) { return c.result.registration.objects[0].answer.similarity; };
     const auto better = [&](const CameraFind& a, const CameraFind& b) {
         if (a.check.verdict != b.check.verdict) return a.check.verdict < b.check.verdict;
-        return a.result.registration.objects[0].answer.similarity > b.result.registration.objects[0].answer.similarity;
+        return similarityOf(a) > similarityOf(b);
     };
     for (std::size_t k = 1; k < out.cameras.size(); ++k)
         if (better(out.cameras[k], out.cameras[out.best])) out.best = k;
-    const CameraFind& best = out.cameras[out.best];
-    out.pose = best.result.registration.objects[0].answer.worldFromObject;
-    out.verdict = best.check.verdict;
-    // Several cameras not lost: the centre where their rays through the found centres meet.
+    out.pose = out.cameras[out.best].result.registration.objects[0].answer.worldFromObject;
+    out.verdict = out.cameras[out.best].check.verdict;
+    if (out.cameras.size() < 2) return out;
+    // Several cameras: each camera's answers (its confirmed one, then the finder's others), found
+    // independently, must agree in 3D - the same orientation (within kCamerasAgreeDeg) and centres on
+    // rays that pass within kCamerasAgreeMm of one point. The best-scoring agreeing pair gives the
+    // pose: its centre where the rays meet, its orientation the better answer's. No agreeing pair:
+    // lost (one view alone cannot tell a bone from its mirror twin or from the structures around it).
     const glm::dvec3 pivot = defaultPivot(*scene.objects[*object].model);
-    std::vector<glm::dvec3> sources, directions;
-    for (const CameraFind& c : out.cameras) {
-        if (c.check.verdict == AnswerVerdict::Lost) continue;
-        const glm::dvec3 source = scene.cameras.at(c.camera).source;
-        const glm::dvec3 centre = c.result.registration.objects[0].answer.worldFromObject.applyToPoint(pivot);
-        sources.push_back(source);
-        directions.push_back(glm::normalize(centre - source));
-    }
-    if (sources.size() >= 2) {
-        const glm::dvec3 centre = nearestToRays(sources, directions);
-        double miss = 0.0;
-        for (std::size_t k = 0; k < sources.size(); ++k) miss = std::max(miss, distanceToRay(centre, sources[k], directions[k]));
-        out.rayMissMm = miss;
-        out.pose.translation = centre - out.pose.rotation * pivot;
-    }
+    struct Answer {
+        RigidTransform pose;
+        double similarity;
+    };
+    const auto answersOf = [&](const CameraFind& c) {
+        std::vector<Answer> list{{c.result.registration.objects[0].answer.worldFromObject, similarityOf(c)}};
+        for (const FoundCandidate& f : c.result.found[0]->candidates) list.push_back({f.worldFromObject, f.similarity});
+        return list;
+    };
+    double bestScore = -INFINITY;
+    for (std::size_t a = 0; a < out.cameras.size(); ++a)
+        for (std::size_t b = a + 1; b < out.cameras.size(); ++b)
+            for (const Answer& x : answersOf(out.cameras[a]))
+                for (const Answer& y : answersOf(out.cameras[b])) {
+                    const glm::dmat3 d = x.pose.rotation * glm::transpose(y.pose.rotation);
+                    const double angle =
+                        std::acos(std::clamp((d[0][0] + d[1][1] + d[2][2] - 1.0) / 2.0, -1.0, 1.0)) * 180.0 / M_PI;
+                    if (angle > kCamerasAgreeDeg) continue;
+                    const std::vector<glm::dvec3> sources{scene.cameras.at(out.cameras[a].camera).source,
+                                                          scene.cameras.at(out.cameras[b].camera).source};
+                    const std::vector<glm::dvec3> directions{glm::normalize(x.pose.applyToPoint(pivot) - sources[0]),
+                                                             glm::normalize(y.pose.applyToPoint(pivot) - sources[1])};
+                    const glm::dvec3 centre = nearestToRays(sources, directions);
+                    const double miss = std::max(distanceToRay(centre, sources[0], directions[0]),
+                                                 distanceToRay(centre, sources[1], directions[1]));
+                    if (miss > kCamerasAgreeMm || x.similarity + y.similarity <= bestScore) continue;
+                    bestScore = x.similarity + y.similarity;
+                    out.pose.rotation = (x.similarity >= y.similarity ? x : y).pose.rotation;
+                    out.pose.translation = centre - out.pose.rotation * pivot;
+                    out.rayMissMm = miss;
+                    out.camerasAgreeDeg = angle;
+                }
+    out.verdict = out.rayMissMm ? AnswerVerdict::Ok : AnswerVerdict::Lost;
     return out;
 }
 

@@ -1,10 +1,13 @@
 #pragma once
 // A bone with no keyframe (issue 29): its pose in one frame found with no start, so that tracking
 // starts there as from a keyframe. In each camera with an image of the frame the bone is found
-// alone (find/FoundRegistration: found, confirmed, judged, in that camera's frame); one view fixes
-// depth weakly, so with two or more cameras whose answers are not lost the bone's centre is where
-// their rays through the found centres pass closest (least squares), the orientation the
-// best-scoring camera's. The tracker then registers the frame in every camera from that pose.
+// alone (find/FoundRegistration: found, confirmed, judged, in that camera's frame), its depth
+// searched where the other cameras' views cross this one's (find/SharedView.h) unless the search
+// space gives a band in mm. With two or more cameras the answers found independently must agree
+// in 3D (orientation within kCamerasAgreeDeg, centres on rays passing within kCamerasAgreeMm of
+// one point: what confirms a find where no outline ratio can); the bone's centre is then where
+// the rays meet, its orientation the better answer's. The tracker then registers the frame in
+// every camera from that pose.
 #include <optional>
 #include <string>
 #include <vector>
@@ -16,8 +19,14 @@
 
 namespace fm {
 
+// Two cameras' independent answers agree (the centre depth one view fixes weakly is what the
+// other camera sees best, so a few mm of ray miss is expected).
+inline constexpr double kCamerasAgreeDeg = 10.0;
+inline constexpr double kCamerasAgreeMm = 10.0;
+
 struct CameraFind {
     std::size_t camera = 0;
+    FindSpace space;           // searched (with other cameras: the depths their views share)
     FoundRegistration result;  // of one object, the bone (index 0)
     AnswerCheck check;
 };
@@ -27,9 +36,12 @@ struct FoundKeyframe {
     RigidTransform pose;             // the bone's worldFromObject
     std::vector<CameraFind> cameras;  // per camera that had an image
     std::size_t best = 0;            // index into cameras of the one whose orientation is used
-    // With several cameras: the largest distance (mm) from the chosen centre to a camera's ray.
+    // With several cameras: the agreeing pair's largest distance (mm) from the centre to its rays,
+    // and the angle between their orientations; unset when no pair agrees.
     std::optional<double> rayMissMm;
-    AnswerVerdict verdict = AnswerVerdict::Lost;  // the best camera's
+    double camerasAgreeDeg = 0.0;
+    // One camera: its verdict. Several: ok when two cameras' answers agree, else lost.
+    AnswerVerdict verdict = AnswerVerdict::Lost;
 };
 
 // `scene`: the bone alone (sceneOfBoneAlone). Throws fm::Error when the frame has no image or
