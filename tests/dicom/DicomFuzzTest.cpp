@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include "common/SanitizerBuild.h"
 #include "common/TestData.h"
 #include "core/Error.h"
 #include "dicom/SyntheticDicom.h"
@@ -99,15 +100,10 @@ FuzzCounts fuzzFile(const std::filesystem::path& folder, const std::filesystem::
 
 // Sanitizer builds run ~10x slower: a quarter of the cases keeps the suite's time budget.
 // FM_DICOM_FUZZ_SCALE=<n> multiplies the case counts for a deeper run by hand.
-#if defined(__SANITIZE_ADDRESS__)
-constexpr bool kSanitizerBuild = true;
-#else
-constexpr bool kSanitizerBuild = false;
-#endif
 int scaledCases(int cases) {
     if (const char* scale = std::getenv("FM_DICOM_FUZZ_SCALE"); scale && std::atoi(scale) > 0)
         return cases * std::atoi(scale);
-    return kSanitizerBuild || std::getenv("FM_SANITIZE_BUILD") ? cases / 4 : cases;
+    return test::kSanitizerBuild || std::getenv("FM_SANITIZE_BUILD") ? cases / 4 : cases;
 }
 
 TEST(DicomFuzz, CorruptedSyntheticSliceLoadsOrThrowsFmError) {

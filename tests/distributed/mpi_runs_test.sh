@@ -13,10 +13,13 @@
 #     jobs) writes byte-identical .tra files and CSVs (without the time column) without mpirun
 #     and on 1, 2 and 3 ranks; a bone whose .tra cannot be written fails its jobs alone.
 # Usage: mpi_runs_test.sh MPI_FOUND MPIEXEC TEST_BINARY FLUOROMATCH LSAN_SUPPRESSIONS
+# FM_MPI_RANKS: the rank counts (default "1 2 3"; the sanitizer build runs "1 3":
+# tests/distributed/extra.cmake); the job runner's tests run on those above 1.
 # Skips (77) only when the build has no MPI, and never under CI=true (CI installs MPI).
 set -uo pipefail
 MPI_FOUND=$1 MPIEXEC=$2 TESTS=$3 FM=$4 SUPP=$5
 fail() { echo "FAIL: $*"; exit 1; }
+RANKS=${FM_MPI_RANKS:-1 2 3}
 if [ "$MPI_FOUND" != "ON" ]; then
     [ "${CI:-}" = "true" ] && fail "built without MPI under CI=true (scripts/setup installs libopenmpi-dev)"
     echo "SKIP: fluoromatch was built without MPI (install libopenmpi-dev and re-run cmake)"
@@ -36,11 +39,14 @@ if "$MPIEXEC" --version 2>&1 | grep -q "Open MPI\|OpenRTE"; then
 fi
 # Under AddressSanitizer: Open MPI's own allocations at exit are not ours (suppressions scoped to
 # its libraries; the full unwinder is needed to see through its plugins). See docs/distributed.md.
-export LSAN_OPTIONS="${LSAN_OPTIONS:+$LSAN_OPTIONS:}suppressions=$SUPP:fast_unwind_on_malloc=0"
-run() { local n=$1; shift; "$MPIEXEC" -n "$n" "${FLAGS[@]}" "$@"; }
+# Only for runs under mpirun: a run without it never starts MPI, and the full unwinder on every
+# allocation is most of the leak check's cost.
+MPI_LSAN="${LSAN_OPTIONS:+$LSAN_OPTIONS:}suppressions=$SUPP:fast_unwind_on_malloc=0"
+run() { local n=$1; shift; LSAN_OPTIONS=$MPI_LSAN "$MPIEXEC" -n "$n" "${FLAGS[@]}" "$@"; }
 
-# 1. The runner's tests on 2 and 3 ranks (each rank runs the whole suite; all must pass).
-for n in 2 3; do
+# 1. The runner's tests on the rank counts above 1 (each rank runs the whole suite; all must pass).
+for n in $RANKS; do
+    [ "$n" -gt 1 ] || continue
     run "$n" "$TESTS" --gtest_brief=1 >"$OUT/gtest$n.log" 2>&1 || {
         cat "$OUT/gtest$n.log"; fail "the job runner's tests failed on $n ranks"; }
     passed=$(grep -c "PASSED" "$OUT/gtest$n.log")
@@ -59,7 +65,7 @@ dropped=$(head -1 "$OUT/plain.csv" | tr ',' '\n' | grep -E 'second|time|_ms$' | 
 [ -n "$dropped" ] || fail "no time column found to drop: the header changed?"
 [ "$(wc -l <"$OUT/plain.csv")" -eq 9 ] || fail "expected 8 rows and a header in the CSV"
 cut -d, -f"$keep" "$OUT/plain.csv" >"$OUT/plain.cut"
-for n in 1 2 3; do
+for n in $RANKS; do
     run "$n" "$FM" "${EVAL[@]}" --csv "$OUT/np$n.csv" >"$OUT/np$n.txt" 2>&1 || {
         cat "$OUT/np$n.txt"; fail "evaluate on $n ranks exited $?"; }
     grep -q "processes  $n (MPI)" "$OUT/np$n.txt" || { cat "$OUT/np$n.txt"; fail "evaluate did not run on $n MPI ranks"; }
@@ -79,7 +85,7 @@ mkdir -p "$OUT/drr-plain"
 "$FM" "${DRR[@]}" --out "$OUT/drr-plain/v.png" --raw "$OUT/drr-plain/v.mha" >"$OUT/drr-plain.txt" 2>&1 || {
     cat "$OUT/drr-plain.txt"; fail "drr --poses without mpirun exited $?"; }
 [ "$(ls "$OUT/drr-plain" | wc -l)" -eq 10 ] || { ls "$OUT/drr-plain"; fail "expected 5 PNGs and 5 .mha files"; }
-for n in 1 2 3; do
+for n in $RANKS; do
     mkdir -p "$OUT/drr-np$n"
     run "$n" "$FM" "${DRR[@]}" --out "$OUT/drr-np$n/v.png" --raw "$OUT/drr-np$n/v.mha" >"$OUT/drr-np$n.txt" 2>&1 || {
         cat "$OUT/drr-np$n.txt"; fail "drr --poses on $n ranks exited $?"; }
@@ -122,7 +128,7 @@ grep -q "jobs      4 (bone x keyframe segment) on 1 process" "$OUT/track-plain.t
 [ "$(wc -l <"$OUT/track-plain/t.csv")" -eq 7 ] || fail "expected 6 frame rows and a header in track's CSV"
 tkeep=$(head -1 "$OUT/track-plain/t.csv" | tr ',' '\n' | grep -n -v -E 'second|time|_ms$' | cut -d: -f1 | paste -sd,)
 head -1 "$OUT/track-plain/t.csv" | tr ',' '\n' | grep -q -x time_ms || fail "track's CSV has no time_ms column to drop"
-for n in 1 2 3; do
+for n in $RANKS; do
     d=$OUT/track-np$n; mkdir -p "$d"
     run "$n" "$FM" "${TRACK[@]}" --out "$d/t.tra" --csv "$d/t.csv" >"$d.txt" 2>&1 || {
         cat "$d.txt"; fail "track on $n ranks exited $?"; }

@@ -5,12 +5,14 @@
 //    (source -> the bone's centre); the two rays come from independent registrations and must
 //    meet where the biplane registration put the bone. The radius only: in camera 1's lateral
 //    view the ulna lies over the radius, and its camera-1 answer is 1.3 mm off (docs/tracking.md);
-//  * restarts 2 mm / 2 deg around the biplane answer bring the bone's centre back to it (the
-//    rotation about a bone's long axis is weakly fixed, 0.5-6 deg apart: reported, not asserted).
+//  * restarts 2 mm / 2 deg around the biplane answer (two; one under the sanitizers) bring the
+//    bone's centre back to it (the rotation about a bone's long axis is weakly fixed, 0.5-6 deg
+//    apart: reported, not asserted).
 // The start is the trial's keyframe at frame 0 (data/trials/wrist.json, how it was found is in
 // docs/tracking.md); the answers are computed here, none is written in this file.
 #include <gtest/gtest.h>
 
+#include "common/SanitizerBuild.h"
 #include "common/TestData.h"
 #include "core/Random.h"
 #include "scene/ObjectPoseParameterization.h"
@@ -101,9 +103,10 @@ TEST_F(RealWrist, BiplaneAnswerIsWhereBothSingleViewAnswersPointAndRestartsRetur
                 << "the single-view rays meet away from the biplane answer";
         }
 
-        // Two restarts 2 mm / 2 deg away in random directions (fixed seed) come back.
+        // Two restarts 2 mm / 2 deg away in random directions (fixed seed) come back; one
+        // under the sanitizers (the same first start).
         fm::Rng rng(7);
-        for (int k = 0; k < 2; ++k) {
+        for (int k = 0; k < (fm::test::kSanitizerBuild ? 1 : 2); ++k) {
             const glm::dvec3 shift =
                 glm::normalize(glm::dvec3(rng.normal(), rng.normal(), rng.normal()));
             const glm::dvec3 axis =

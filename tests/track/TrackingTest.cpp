@@ -10,6 +10,7 @@
 
 #include "camera/CameraFile.h"
 #include "camera/PinholeCamera.h"
+#include "common/SanitizerBuild.h"
 #include "common/TestData.h"
 #include "core/Random.h"
 #include "drr/Drr.h"
@@ -29,7 +30,9 @@ constexpr double kMaxCentreErrorMm = 0.25;
 constexpr double kMaxAngleErrorDeg = 0.25;
 // Noise added to the rendered frames, as a fraction of the brightest pixel.
 constexpr double kNoiseFraction = 0.02;
-constexpr int kFrames = 20;
+// Frames of the biplane sequence: 20, or 7 under the sanitizers (every frame tracked from the
+// previous as in the 20, each still within the bounds; only fewer of them).
+constexpr int kFrames = fm::test::kSanitizerBuild ? 7 : 20;
 // The wrist images (1760 pixels square) at the shipped trial's RenderResolution, as tracking
 // renders them (trialRenderSize).
 constexpr int kRenderSize = 512;
@@ -279,11 +282,19 @@ TEST(Tracking, AResumedRunGivesTheSamePoses) {
     const fm::Tracker tracker(w.scene, "radius", w.frames(truth), s);
     const std::map<int, RigidTransform> keys{{0, truth(0)}};
     std::map<int, RigidTransform> whole, resumed;
-    tracker.run({1, 2, 3, 4}, keys, whole, {});
-    tracker.run({1, 2}, keys, resumed, {});
-    tracker.run({3, 4}, keys, resumed, {});
-    ASSERT_EQ(whole.size(), 4u);
-    ASSERT_EQ(resumed.size(), 4u);
+    // Frames 1-4 resumed after frame 2; under the sanitizers 1-3 resumed after frame 2 (the
+    // resumed part still extrapolates from the two tracked frames before it).
+    if (fm::test::kSanitizerBuild) {
+        tracker.run({1, 2, 3}, keys, whole, {});
+        tracker.run({1, 2}, keys, resumed, {});
+        tracker.run({3}, keys, resumed, {});
+    } else {
+        tracker.run({1, 2, 3, 4}, keys, whole, {});
+        tracker.run({1, 2}, keys, resumed, {});
+        tracker.run({3, 4}, keys, resumed, {});
+    }
+    ASSERT_EQ(whole.size(), fm::test::kSanitizerBuild ? 3u : 4u);
+    ASSERT_EQ(resumed.size(), whole.size());
     for (const auto& [frame, pose] : whole)
         EXPECT_EQ(pose.toRowMajor4x4(), resumed.at(frame).toRowMajor4x4()) << "frame " << frame;
 }

@@ -17,6 +17,7 @@
 #include <gtest/gtest.h>
 
 #include "camera/CameraFile.h"
+#include "common/SanitizerBuild.h"
 #include "common/TestData.h"
 #include "core/Random.h"
 #include "meshdrr/MeshDrr.h"
@@ -103,11 +104,7 @@ RigidTransform perturbed(const ObjectPoseParameterization& p, Rng& rng) {
 
 int startsPerCase() {
     const char* env = std::getenv("FM_REAL_XRAY_STARTS");
-#ifdef __SANITIZE_ADDRESS__
-    const int fallback = 2;
-#else
-    const int fallback = 10;
-#endif
+    const int fallback = test::kSanitizerBuild ? 2 : 10;
     const int n = env ? std::atoi(env) : fallback;
     return std::clamp(n, 1, 100);
 }
