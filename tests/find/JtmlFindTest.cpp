@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "camera/CameraFile.h"
+#include "common/SanitizerBuild.h"
 #include "common/TestData.h"
 #include "find/FoundRegistration.h"
 #include "find/SeenPose.h"
@@ -41,11 +42,7 @@ std::filesystem::path dataDir() { return test::sharedDataDir() / "jtml-kneel-tka
 // Under the sanitizers (~5x slower) one frame; FM_FIND_FRAMES=N overrides.
 int frameCount() {
     if (const char* env = std::getenv("FM_FIND_FRAMES")) return std::clamp(std::atoi(env), 1, 3);
-#ifdef __SANITIZE_ADDRESS__
-    return 1;
-#else
-    return 3;
-#endif
+    return test::kSanitizerBuild ? 1 : 3;
 }
 
 TEST(JtmlFind, BothImplantsFoundInOneRunWithNoStart) {
