@@ -48,8 +48,11 @@ FoundRegistration registerObjectsFinding(const Scene& scene, const std::vector<b
             const double radiusDeg = std::max({settings.searchRadius[3], settings.searchRadius[4], settings.searchRadius[5]});
             if (d.inPlaneMm <= std::max(settings.searchRadius[0], settings.searchRadius[1]) && d.rotationDeg <= radiusDeg)
                 continue;
-            if (c.answer.similarity > 0.0)
-                c.evidence.rival = AnswerEvidence::Rival{candidate.similarity / c.answer.similarity, d.inPlaneMm, d.rotationDeg};
+            // Edge distance has a ceiling (a perfect outline match's 1) to measure shortfalls from.
+            if (settings.similarity == SimilarityMeasure::EdgeDistance)
+                c.evidence.rival = AnswerEvidence::Rival{std::max(1.0 - candidate.similarity, kShortfallFloor) /
+                                                             std::max(1.0 - c.answer.similarity, kShortfallFloor),
+                                                         d.inPlaneMm, d.rotationDeg};
             break;
         }
     }

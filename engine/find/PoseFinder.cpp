@@ -48,21 +48,31 @@ std::vector<double> scaleGrid(const FindSpace& space, double templateDepth, doub
     return scales;
 }
 
-// The pose whose outline one view can barely tell from `pose`'s: the object mirrored through the
-// plane across the view at its pivot, and back through its own plane most across the view (so
-// the result is a rotation). For a planar object seen under parallel projection the two outlines
-// are the same; for a near-symmetric one (a femoral component's condyles seen from the side) nearly.
-RigidTransform mirrorPose(const RigidTransform& pose, const glm::dvec3& pivotInObject, const glm::dvec3& view) {
-    int across = 0;
-    for (int k = 1; k < 3; ++k)
-        if (std::abs(glm::dot(pose.rotation[k], view)) > std::abs(glm::dot(pose.rotation[across], view))) across = k;
-    const glm::dmat3 inWorld = glm::dmat3(1.0) - 2.0 * glm::outerProduct(view, view);
-    glm::dmat3 inObject(1.0);
-    inObject[across][across] = -1.0;
-    RigidTransform mirrored;
-    mirrored.rotation = inWorld * pose.rotation * inObject;
-    mirrored.translation = pose.applyToPoint(pivotInObject) - mirrored.rotation * pivotInObject;
-    return mirrored;
+// The poses whose outlines one view can barely tell from `pose`'s (parallel projection drops the
+// depth): the object mirrored through the plane across the view at its pivot and back through
+// each of its own axes' planes (a rotation again; for an object symmetric about that plane, or
+// flat across it, the same outline), and its tilts reversed as the camera sees them (a plate seen
+// nearly edge-on, tilted +a or -a).
+std::vector<RigidTransform> lookalikePoses(const RigidTransform& pose, const glm::dvec3& pivotInObject,
+                                           const CameraAxes& axes) {
+    std::vector<RigidTransform> out;
+    const glm::dvec3 centre = pose.applyToPoint(pivotInObject);
+    const glm::dmat3 inWorld = glm::dmat3(1.0) - 2.0 * glm::outerProduct(axes.view, axes.view);
+    for (int k = 0; k < 3; ++k) {
+        glm::dmat3 inObject(1.0);
+        inObject[k][k] = -1.0;
+        RigidTransform mirrored;
+        mirrored.rotation = inWorld * pose.rotation * inObject;
+        mirrored.translation = centre - mirrored.rotation * pivotInObject;
+        out.push_back(mirrored);
+    }
+    const SeenPose seen = seenFrom(axes, pose, pivotInObject);
+    for (int flip = 0; flip < 2; ++flip) {
+        SeenPose reversed = seen;
+        (flip == 0 ? reversed.tiltUDeg : reversed.tiltVDeg) *= -1.0;
+        out.push_back(worldFromSeen(axes, reversed, pivotInObject));
+    }
+    return out;
 }
 
 // The coarsest power of two up to maxScanFactor at which the model, seen along the optical axis at
@@ -213,28 +223,38 @@ FoundPose findObjectPose(const Scene& scene, std::size_t object, const Registrat
         return found;
     }
 
-    // 4. Finish: the best refined hypotheses registered fully, side by side, and the mirror image
-    //    of the best (one view cannot tell a near-planar or near-symmetric outline from it).
+    // 4. Finish: the best refined hypotheses registered fully, side by side; then the best
+    //    answer's look-alikes (mirror images, reversed tilts: one view barely tells them apart),
+    //    so that whichever of them the image prefers wins, and the other is seen as a rival.
     t0 = Clock::now();
-    std::vector<Refined> starts(refined.begin(), refined.begin() + static_cast<std::ptrdiff_t>(finalists));
-    starts.push_back({mirrorPose(refined.front().pose, pivot, axes.view), 0.0, 0, refined.front().hypothesis});
     RegistrationSettings full = finish;
-    full.threads = starts.size() >= static_cast<std::size_t>(threads) ? 1 : threads;
-    std::vector<FoundCandidate> answers(starts.size());
-    parallelFor(static_cast<int>(starts.size()), full.threads == 1 ? threads : 1, [&](int begin, int end) {
-        for (int k = begin; k < end; ++k) {
-            const Refined& from = starts[static_cast<std::size_t>(k)];
-            const ObjectRegistrationResult r = registerObject(scene, object, view, from.pose, full, {}, stop);
-            answers[static_cast<std::size_t>(k)] = {r.worldFromObject, r.similarity, from.hypothesis, r.evaluations};
-        }
-    }, 4);
     int finishEvaluations = 0;
-    for (const FoundCandidate& a : answers) finishEvaluations += a.evaluations;
-    std::stable_sort(answers.begin(), answers.end(),
-                     [](const FoundCandidate& a, const FoundCandidate& b) { return a.similarity > b.similarity; });
+    std::vector<FoundCandidate> answers;
+    const auto registerAll = [&](const std::vector<Refined>& starts) {
+        full.threads = starts.size() >= static_cast<std::size_t>(threads) ? 1 : threads;
+        std::vector<FoundCandidate> batch(starts.size());
+        parallelFor(static_cast<int>(starts.size()), full.threads == 1 ? threads : 1, [&](int begin, int end) {
+            for (int k = begin; k < end; ++k) {
+                const Refined& from = starts[static_cast<std::size_t>(k)];
+                const ObjectRegistrationResult r = registerObject(scene, object, view, from.pose, full, {}, stop);
+                batch[static_cast<std::size_t>(k)] = {r.worldFromObject, r.similarity, from.hypothesis, r.evaluations};
+            }
+        }, 4);
+        for (const FoundCandidate& c : batch) finishEvaluations += c.evaluations;
+        answers.insert(answers.end(), batch.begin(), batch.end());
+        std::stable_sort(answers.begin(), answers.end(),
+                         [](const FoundCandidate& x, const FoundCandidate& y) { return x.similarity > y.similarity; });
+    };
+    registerAll(std::vector<Refined>(refined.begin(), refined.begin() + static_cast<std::ptrdiff_t>(finalists)));
+    if (!stopped()) {
+        std::vector<Refined> lookalikes;
+        for (const RigidTransform& pose : lookalikePoses(answers.front().worldFromObject, pivot, axes))
+            lookalikes.push_back({pose, 0.0, 0, answers.front().hypothesis});
+        registerAll(lookalikes);
+    }
     for (const FoundCandidate& a : answers) {
-        const bool same = std::any_of(found.candidates.begin(), found.candidates.end(), [&](const FoundCandidate& b) {
-            const CameraPoseDifference d = cameraPoseDifference(camera, b.worldFromObject, a.worldFromObject, pivot);
+        const bool same = std::any_of(found.candidates.begin(), found.candidates.end(), [&](const FoundCandidate& c) {
+            const CameraPoseDifference d = cameraPoseDifference(camera, c.worldFromObject, a.worldFromObject, pivot);
             return d.inPlaneMm <= 1.0 && d.rotationDeg <= 2.0;
         });
         if (!same) found.candidates.push_back(a);

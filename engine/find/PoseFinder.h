@@ -7,8 +7,9 @@
 //   3. refine: each hypothesis, as a pose, polished by the registration's own search at a
 //      coarse level (exact renders, edge distance), side by side one per core;
 //   4. finish: the best `finalists` registered fully (xray/ObjectRegistration, the search
-//      `register --start` runs), and the mirror image of the best (the pose one view can barely
-//      tell from it: a near-planar or near-symmetric outline), answers that agree merged, best first.
+//      `register --start` runs), and the best one's look-alikes (its mirror images through the
+//      film plane, one per model axis, and its tilts reversed: poses one view can barely tell from
+//      it), answers that agree merged, best first.
 // The answer is then confirmed like any other (xray/ConfirmedRegistration: more searches from
 // independent starts around it); a different pose that scores nearly as well is a rival
 // (the mirror-image silhouette of a symmetric implant): the verdict says so (search/AnswerVerdict).

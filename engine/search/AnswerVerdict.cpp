@@ -78,11 +78,12 @@ AnswerCheck judgeEvidence(const AnswerEvidence& evidence) {
         j.add(V::Doubtful, "the cost does not rise along " + (unfixed.empty() ? std::string("some direction") : unfixed));
     }
     // 6. A pose found with no start: a different pose that scores nearly as well.
-    if (evidence.rival && evidence.rival->similarityRatio >= kRivalSimilarityRatio)
-        j.add(V::Doubtful, format("a different pose %.1f mm / %.1f deg away scores %.2f of the answer's similarity "
-                                  "(at least %.2f): the image cannot tell them apart (a near-symmetric outline?)",
+    if (evidence.rival && evidence.rival->shortfallRatio <= kRivalShortfallRatio)
+        j.add(V::Doubtful, format("a different pose %.1f mm / %.1f deg away fits nearly as well (its shortfall from "
+                                  "a perfect match %.2fx the answer's, at most %.2fx): the image cannot tell them "
+                                  "apart (a near-symmetric outline?)",
                                   evidence.rival->inPlaneMm, evidence.rival->rotationDeg,
-                                  evidence.rival->similarityRatio, kRivalSimilarityRatio));
+                                  evidence.rival->shortfallRatio, kRivalShortfallRatio));
     if (evidence.stopped) j.add(V::Doubtful, "stopped before the search ended");
     if (!j.confirmed && j.verdict == V::Ok)
         j.add(V::Doubtful, "nothing confirms it (no second search, mask or earlier frame): check the outline");

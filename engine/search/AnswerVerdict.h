@@ -33,12 +33,16 @@ inline constexpr double kConfirmedPerfectMatchRatio = 0.96;
 // "Verdicts").
 inline constexpr double kConfirmedOutlineRatio = 0.92;
 
-// A pose found with no start (find/PoseFinder): a different answer of the search (not within the
-// agreement bounds) that scores at least this share of the answer's similarity is a rival the image
-// cannot rule out - a near-symmetric silhouette's mirror pose. On the JTML frames the runner-up
-// answers (the mirror images of the femoral component and the tray) scored 0.80-0.92 of the right
-// pose's; a box's half turn scores 1 (docs/find.md).
-inline constexpr double kRivalSimilarityRatio = 0.95;
+// A pose found with no start (find/PoseFinder): a different answer of the search (beyond the
+// registration's start radius) whose shortfall from a perfect match (1 - similarity for edge
+// distance) is at most this many times the answer's is a rival the image cannot rule out - a
+// near-symmetric outline's mirror pose. A box's half turn: 1.0; the JTML tray's mirror tilt 1.5
+// (its outline 50 % further from the image's edges), the femoral component's mirror 4-5
+// (docs/find.md).
+inline constexpr double kRivalShortfallRatio = 1.25;
+// Shortfalls below this count as this (a mean outline distance of 0.16 px at the 8 px cap):
+// differences among near-perfect fits are rounding, not evidence.
+inline constexpr double kShortfallFloor = 0.02;
 
 enum class AnswerVerdict { Ok, Doubtful, Lost };
 const char* toString(AnswerVerdict verdict);  // "ok", "doubtful", "lost"
@@ -60,10 +64,10 @@ struct AnswerEvidence {
     std::string similarityReference = "the last good frames'";
     double confirmedRatio = kConfirmedSimilarityRatio;  // ok from this ratio on
     bool stopped = false;                   // the search was stopped before it ended
-    // The best different answer of a search with no start: its similarity over the answer's, and
-    // how far it is (as the camera sees it).
+    // The best different answer of a search with no start: its shortfall from a perfect match over
+    // the answer's, and how far it is (as the camera sees it).
     struct Rival {
-        double similarityRatio = 0.0;
+        double shortfallRatio = 0.0;
         double inPlaneMm = 0.0;
         double rotationDeg = 0.0;
     };

@@ -279,7 +279,7 @@ void bindRegister(pb::module_& m) {
                     found["stages"] = stages;
                     found["scan_factor"] = f->scanFactor;
                     found["seconds"] = f->seconds();
-                    found["rival"] = c.evidence.rival ? pb::cast(c.evidence.rival->similarityRatio) : pb::object(pb::none());
+                    found["rival_shortfall"] = c.evidence.rival ? pb::cast(c.evidence.rival->shortfallRatio) : pb::object(pb::none());
                     a["found"] = found;
                 }
                 if (!outs.empty() && check.verdict != AnswerVerdict::Lost && !r.stopped) {
@@ -322,8 +322,8 @@ reasons), runs and agreeing (searches from independent starts: `runs=` at first,
 `max_runs=` while no two agree; the answer is the best), uncertainty (per camera-frame
 coordinate u, v, depth mm and about u, v, view deg: the spread the image allows, "weak": the
 weakly fixed ones), iou, start_iou, moved, written, found (for a model found with no start:
-stages [{name, seconds, evaluations, kept}], scan_factor, seconds, rival: the best different
-answer's similarity over the answer's; else None).)doc");
+stages [{name, seconds, evaluations, kept}], scan_factor, seconds, rival_shortfall: the best
+different answer's shortfall from a perfect outline over the answer's; else None).)doc");
 }
 
 }  // namespace fm::py

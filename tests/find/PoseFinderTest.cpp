@@ -114,7 +114,7 @@ TEST(PoseFinder, SaysWhenAHalfTurnCastsTheSameOutline) {
     EXPECT_GT(c.answer.similarity, kConfirmedOutlineRatio);
     // ... and a pose half a turn away scores as well: doubtful, and it says why.
     ASSERT_TRUE(c.evidence.rival.has_value());
-    EXPECT_GT(c.evidence.rival->similarityRatio, kRivalSimilarityRatio);
+    EXPECT_LE(c.evidence.rival->shortfallRatio, kRivalShortfallRatio);
     EXPECT_GT(c.evidence.rival->rotationDeg, 5.0);  // beyond the registration's start radius
     const AnswerCheck check = checkAnswer(scene.objects[0], c.answer.worldFromObject, {view}, scene.cameras, c.evidence, 0);
     EXPECT_EQ(check.verdict, AnswerVerdict::Doubtful) << check.text;
