@@ -116,18 +116,19 @@ def test_the_gil_is_released_while_the_engine_works():
 
 def test_a_model_with_no_start_is_found_as_the_cli_finds_it(jtml, cli, tmp_path):
     """start=None finds the pose (docs/find.md): the same .jts bytes as `register` with no --start."""
-    ref, cal, tib = jtml / "AT_K1_V1_0160.tif", jtml / "calibration.txt", jtml / "KR_right_6_tib.stl"
-    cli("register", "--reference", ref, "--camera", cal, "--model", tib, "--invert", "--runs", "1",
+    # The femoral component: its scan runs at 1/16 (the tray's at 1/8 costs 4x; the CLI test has it).
+    ref, cal, fem = jtml / "AT_K1_V1_0160.tif", jtml / "calibration.txt", jtml / "KR_right_7_fem.stl"
+    cli("register", "--reference", ref, "--camera", cal, "--model", fem, "--invert", "--runs", "1",
         "--out", tmp_path / "cli.jts", "--threads", "2")
-    [answer] = fm.register(str(ref), str(cal), str(tib), invert=True, runs=1, out=str(tmp_path / "py.jts"), threads=2)
+    [answer] = fm.register(str(ref), str(cal), str(fem), invert=True, runs=1, out=str(tmp_path / "py.jts"), threads=2)
     assert (tmp_path / "py.jts").read_bytes() == (tmp_path / "cli.jts").read_bytes()
-    truth = fm.read_jts(jtml / "tib.jts")[0]
+    truth = fm.read_jts(jtml / "fem.jts")[0]
     assert np.linalg.norm(answer["pose"][:2, 3] - truth[:2, 3]) < 1.0
     found = answer["found"]
     assert [s["name"] for s in found["stages"]] == ["templates", "scan", "refine", "finish"]
-    assert found["scan_factor"] == 8 and found["seconds"] > 0 and found["rival_shortfall"] > 1.25
+    assert found["scan_factor"] == 16 and found["seconds"] > 0 and found["rival_shortfall"] > 1.25
     np.testing.assert_allclose(answer["start"][:3, :3] @ answer["pose"][:3, :3].T, np.eye(3), atol=0.1)
     with pytest.raises(fm.Error, match="find_space applies to models with no start"):
-        fm.register(str(ref), str(cal), str(tib), str(jtml / "tib.jts"), invert=True, find_space="tilt=20")
+        fm.register(str(ref), str(cal), str(fem), str(jtml / "fem.jts"), invert=True, find_space="tilt=20")
     with pytest.raises(fm.Error, match='unknown "spin"'):
-        fm.register(str(ref), str(cal), str(tib), invert=True, find_space="spin=2")
+        fm.register(str(ref), str(cal), str(fem), invert=True, find_space="spin=2")
