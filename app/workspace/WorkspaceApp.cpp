@@ -148,11 +148,14 @@ void WorkspaceApp::processRequests() {
     if (r.frame) goToFrame(*r.frame);
     if (r.resetView) state_.view = defaultRigView();
     if (r.stopSolve) solver_.stop();
-    if (r.solve) {
+    if (r.solve || r.find) {
+        // Find needs no pose: "moved" is then measured from the one shown, if any.
         const auto start = pose(state_.selected);
-        if (start) solver_.start(model_, state_.selected, state_.frame, *start);
+        if (start || r.find)
+            solver_.start(model_, state_.selected, state_.frame, start.value_or(RigidTransform{}), r.find);
         solveVersion_ = 0;
     }
+    if (r.candidate) showCandidate(*r.candidate);
     if (r.save) save();
     if (r.undo) undo();
     if (r.preparation) {
@@ -175,6 +178,16 @@ void WorkspaceApp::processRequests() {
     }
 }
 
+void WorkspaceApp::showCandidate(int k) {
+    WorkspaceSolve& w = state_.solve;
+    if (w.running || k < 0 || k >= static_cast<int>(w.candidates.size()) || k == w.candidate) return;
+    state_.undo.record("candidate " + std::to_string(k + 1) + " of Find", snapshot());
+    state_.poses.at(static_cast<std::size_t>(w.frame)).at(static_cast<std::size_t>(w.object)) =
+        w.candidates[static_cast<std::size_t>(k)];
+    state_.controls.object = -1;  // rebased on it
+    w.candidate = k;
+}
+
 void WorkspaceApp::pollSolver() {
     const WorkspaceSolveSnapshot s = solver_.snapshot();
     if (s.version == 0) return;
@@ -195,12 +208,17 @@ void WorkspaceApp::pollSolver() {
     w.result = s.result;
     w.similarity = s.similarity;
     w.viewCosts = s.viewCosts;
+    w.find = s.find;
+    w.candidates = s.candidates;
+    w.candidateSimilarity = s.candidateSimilarity;
+    w.candidate = 0;
     w.iou.reset();
     w.startIou.reset();
     if (!s.result) return;
     // The answer goes onto the sliders: it is the object's pose in that frame now (Undo returns
     // to the pose before).
-    state_.undo.record("Solve of " + model_->objectName(s.object) + " in frame " + std::to_string(s.frame),
+    state_.undo.record(std::string(s.find ? "Find" : "Solve") + " of " + model_->objectName(s.object) + " in frame " +
+                           std::to_string(s.frame),
                        snapshot());
     state_.poses.at(static_cast<std::size_t>(s.frame)).at(static_cast<std::size_t>(s.object)) = *s.result;
     state_.controls.object = -1;  // rebased on it
@@ -225,7 +243,8 @@ void WorkspaceApp::pollSolver() {
     w.checkText = check.text;
     w.uncertaintyText = evidence.uncertainty ? describeUncertainty(*evidence.uncertainty) : std::string();
     char line[256];
-    std::snprintf(line, sizeof line, "%s %s in frame %d: similarity %.5f (%s)", s.stopped ? "Stopped:" : "Solved:",
+    std::snprintf(line, sizeof line, "%s %s in frame %d: similarity %.5f (%s)",
+                  s.stopped ? "Stopped:" : s.find ? "Found:" : "Solved:",
                   o.name.c_str(), s.frame, s.similarity, s.note.c_str());
     w.summary = line;
     std::printf("solve       %s\n", line);

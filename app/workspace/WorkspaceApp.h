@@ -69,6 +69,8 @@ class WorkspaceApp : public ScriptableApp {
     PoseSnapshot snapshot() const { return {state_.poses, state_.track.keyframes}; }
     void syncControls();
     void processRequests();
+    // Find's candidate k onto the object's pose in the Find's frame (an Undo step).
+    void showCandidate(int k);
     void pollSolver();
     void save();
     void syncCameraValues();  // the toggles from the model's preparations

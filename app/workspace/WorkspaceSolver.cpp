@@ -4,9 +4,13 @@
 #include <cmath>
 
 #include "core/Error.h"
+#include "find/FoundRegistration.h"
 #include "track/ConfirmedFrame.h"
+#include "track/FoundKeyframe.h"
+#include "xray/CameraPoseDifference.h"
 #include "track/Tracker.h"
 #include "xray/ConfirmedRegistration.h"
+#include "scene/ObjectPoseParameterization.h"
 #include "xray/ObjectRegistration.h"
 
 namespace fm::app {
@@ -34,7 +38,7 @@ WorkspaceSolveSnapshot WorkspaceSolver::snapshot() const {
 }
 
 void WorkspaceSolver::start(std::shared_ptr<const WorkspaceModel> model, int object, int frame,
-                            const RigidTransform& start) {
+                            const RigidTransform& start, bool find) {
     stop();
     {
         std::lock_guard<std::mutex> lock(mutex_);
@@ -45,9 +49,10 @@ void WorkspaceSolver::start(std::shared_ptr<const WorkspaceModel> model, int obj
         snapshot_.frame = frame;
         snapshot_.start = start;
         snapshot_.stage = "starting";
+        snapshot_.find = find;
         snapshot_.version = version;
     }
-    worker_ = std::thread([this, model, object, frame, start] {
+    worker_ = std::thread([this, model, object, frame, start, find] {
         const auto begin = std::chrono::steady_clock::now();
         auto publish = [&](auto&& edit) {
             std::lock_guard<std::mutex> lock(mutex_);
@@ -61,13 +66,16 @@ void WorkspaceSolver::start(std::shared_ptr<const WorkspaceModel> model, int obj
             scene.cameras = model->scene().cameras;
             scene.objects.push_back(model->scene().objects.at(static_cast<std::size_t>(object)));
             scene.objects[0].worldFromObject = start;
+            FindSettings findSettings;
+            findSettings.threads = model->threads();
+            if (find) publish([&](WorkspaceSolveSnapshot& s) { s.stage = "finding: templates, scan, refine, finish"; });
             if (model->cameraCount() == 1) {
                 RegistrationSettings settings =
                     realXraySettings(defaultSimilarityFor(*scene.objects[0].model));
                 settings.threads = model->threads();
                 const RegistrationView view = model->prepared(frame).at(0);
-                const ObjectsRegistration all = registerObjects(
-                    scene, view, settings, ConfirmationSettings{},
+                const FoundRegistration result = registerObjectsFinding(
+                    scene, {find}, view, settings, findSettings, ConfirmationSettings{},
                     [&](std::size_t) -> RegistrationCallback {
                         return [&](const RegistrationProgress& p) {
                             publish([&](WorkspaceSolveSnapshot& s) {
@@ -79,15 +87,30 @@ void WorkspaceSolver::start(std::shared_ptr<const WorkspaceModel> model, int obj
                         };
                     },
                     &stop_);
-                const ConfirmedObject& c = all.objects.at(0);
+                const ConfirmedObject& c = result.registration.objects.at(0);
+                if (find && (!result.found[0] || result.found[0]->candidates.empty()))
+                    throw Error("Find was stopped before a pose was found");
                 publish([&](WorkspaceSolveSnapshot& s) {
+                    if (find) {
+                        s.candidates = {c.answer.worldFromObject};
+                        s.candidateSimilarity = {c.answer.similarity};
+                        const glm::dvec3 pivot = defaultPivot(*scene.objects[0].model);
+                        for (const FoundCandidate& f : result.found[0]->candidates) {
+                            const CameraPoseDifference d =
+                                cameraPoseDifference(scene.cameras[0], c.answer.worldFromObject, f.worldFromObject, pivot);
+                            if (d.inPlaneMm <= 1.0 && d.rotationDeg <= 2.0) continue;  // the answer itself
+                            s.candidates.push_back(f.worldFromObject);
+                            s.candidateSimilarity.push_back(f.similarity);
+                        }
+                    }
                     s.result = c.answer.worldFromObject;
                     s.similarity = c.answer.similarity;
                     s.evaluations = c.answer.evaluations;
                     s.stopped = c.answer.stopped;
                     s.evidence = c.evidence;
-                    s.note = std::string("single view, ") + toString(settings.similarity) + ", " +
-                             std::to_string(c.evidence.runs) + " searches from independent starts";
+                    s.note = std::string(find ? "found with no start, " : "") + "single view, " +
+                             toString(settings.similarity) + ", " + std::to_string(c.evidence.runs) +
+                             " searches from independent starts";
                 });
             } else {
                 publish([&](WorkspaceSolveSnapshot& s) { s.stage = "biplane registration (register --trial)"; });
@@ -95,10 +118,24 @@ void WorkspaceSolver::start(std::shared_ptr<const WorkspaceModel> model, int obj
                 settings.registration.seed = 1;
                 settings.registration.threads = model->threads();
                 const std::string name = scene.objects[0].name;
+                RigidTransform from = start;
+                if (find) {
+                    // As track with no keyframe: found in each camera, the cameras must agree.
+                    RegistrationSettings finish = realXraySettings(defaultSimilarityFor(*scene.objects[0].model));
+                    finish.threads = model->threads();
+                    const FoundKeyframe k = findKeyframe(scene, name, [model](int f) { return model->prepared(f); }, frame,
+                                                         finish, findSettings, ConfirmationSettings{}, &stop_);
+                    if (k.verdict == AnswerVerdict::Lost)
+                        throw Error("Find: " + name + "'s answers in the cameras disagree (no two within " +
+                                    std::to_string(static_cast<int>(kCamerasAgreeDeg)) + " deg and " +
+                                    std::to_string(static_cast<int>(kCamerasAgreeMm)) + " mm): set a pose and Solve");
+                    from = k.pose;
+                    publish([&](WorkspaceSolveSnapshot& s) { s.stage = "found; biplane registration (register --trial)"; });
+                }
                 // As register --trial: searches from independent starts confirm the answer (the
                 // keyframe's own similarity is no reference here: the start is whatever the user set).
                 const ConfirmedFrame confirmed = registerFrameConfirmed(
-                    scene, name, [model](int f) { return model->prepared(f); }, settings, frame, start,
+                    scene, name, [model](int f) { return model->prepared(f); }, settings, frame, from,
                     FrameContext{}, ConfirmationSettings{}, &stop_, [&](const RegistrationProgress& p) {
                         publish([&](WorkspaceSolveSnapshot& s) {
                             s.stage = "biplane, " + std::string(p.stage) + ", level " +
@@ -115,7 +152,12 @@ void WorkspaceSolver::start(std::shared_ptr<const WorkspaceModel> model, int obj
                     s.similarity = r.similarity();
                     s.evaluations = r.evaluations;
                     s.evidence = confirmed.evidence;
-                    s.note = r.note + ", " + std::to_string(confirmed.runs.size()) + " searches from independent starts";
+                    s.note = std::string(find ? "found with no start in each camera, " : "") + r.note + ", " +
+                             std::to_string(confirmed.runs.size()) + " searches from independent starts";
+                    if (find && r.worldFromBone) {
+                        s.candidates = {*r.worldFromBone};
+                        s.candidateSimilarity = {r.similarity()};
+                    }
                 });
             }
         } catch (const std::exception& e) {

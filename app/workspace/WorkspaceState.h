@@ -78,11 +78,18 @@ struct WorkspaceSolve {
     Check check = Check::Doubtful;
     std::string checkText;  // "ok: 2 of 2 searches from different starts end here", "doubtful: ..."
     std::string uncertaintyText;  // per coordinate, camera 1's frame; "" when not measured
+    // Find (no start): the answer and the finder's other answers, best first; the one shown.
+    bool find = false;
+    std::vector<RigidTransform> candidates;
+    std::vector<double> candidateSimilarity;
+    int candidate = 0;
 };
 
 
 struct WorkspaceRequests {
     bool solve = false, stopSolve = false;
+    bool find = false;                // Find: the selected object's pose with no start
+    std::optional<int> candidate;     // show Find's candidate k
     bool undo = false;
     bool save = false;
     std::optional<int> frame;  // go to this frame

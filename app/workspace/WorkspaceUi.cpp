@@ -386,6 +386,18 @@ void WorkspaceUi::solvePane(WorkspaceState& state, const Pane& pane) {
                     : "Register the selected object in this frame from your pose (register --reference: "
                       "edge distance for meshes, gradient NCC for volumes)");
     ImGui::SameLine();
+    // Find: the pose with no start (docs/find.md); Stop (the button above) ends it.
+    ImGui::BeginDisabled(s.running || state.track.run.running);
+    if (ImGui::Button("Find")) state.requests.find = true;
+    ImGui::EndDisabled();
+    record("button:find");
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+        tooltip(state.cameraNames.size() > 1
+                    ? "Find the selected object in this frame with no start: in each camera, the cameras must "
+                      "agree, then registered in all of them (track with no keyframe). Undo rejects it"
+                    : "Find the selected object in this frame with no start (register with no --start): the "
+                      "answer is shown; Next candidate steps through the others, Undo rejects it");
+    ImGui::SameLine();
     // Undo: the poses before the last Solve, Track run, keyframe or pose edit (Ctrl+Z).
     const bool canUndo = !state.undo.steps.empty() && !s.running && !state.track.run.running;
     ImGui::BeginDisabled(!canUndo);
@@ -427,11 +439,27 @@ void WorkspaceUi::solvePane(WorkspaceState& state, const Pane& pane) {
     if (s.finished && s.result) {
         // Words and colour from the verdict: green only for an ok answer.
         using Check = WorkspaceSolve::Check;
-        const ImVec4 colour = s.check == Check::Ok && !s.stopped ? kGood : s.check == Check::Lost ? kBad : kWarn;
+        // A Find candidate other than the answer is shown unjudged: never in the answer's green.
+        const ImVec4 colour = s.check == Check::Ok && !s.stopped && s.candidate == 0 ? kGood
+                              : s.check == Check::Lost                                ? kBad
+                                                                                      : kWarn;
         coloredWrapped(colour, s.summary);
         record("text:solve-summary");
         coloredWrapped(colour, s.checkText);
         record("text:solve-check");
+        if (s.find && s.candidates.size() > 1) {
+            // The finder's other answers, shown one at a time on the object (each an Undo step):
+            // before the answer's details, which may run past the pane's foot.
+            const int n = static_cast<int>(s.candidates.size());
+            ImGui::BeginDisabled(s.running);
+            if (ImGui::Button("Next candidate")) state.requests.candidate = (s.candidate + 1) % n;
+            ImGui::EndDisabled();
+            record("button:next-candidate");
+            ImGui::SameLine();
+            dimWrapped("candidate %d of %d, similarity %.4f%s", s.candidate + 1, n,
+                       s.candidateSimilarity.at(static_cast<std::size_t>(s.candidate)),
+                       s.candidate == 0 ? " (the answer, judged above)" : " (not judged: Solve it to judge it)");
+        }
         bulletWrapped("moved in-plane %.2f mm, depth %.2f mm, rotation %.2f deg", s.inPlaneMm, s.depthMm, s.rotationDeg);
         if (s.iou) bulletWrapped("IoU %.4f against the mask (start %.4f)", *s.iou, s.startIou.value_or(0.0));
         if (!s.uncertaintyText.empty()) bulletWrapped("uncertainty %s", s.uncertaintyText.c_str());

@@ -1,7 +1,8 @@
 // The real X-ray workspace driven through its UI (headless OSMesa, scripted mouse and keys):
 // the JTML trial opens with the implants at their .jts poses, the frame slider moves to the next
 // frame's keyframes, a pose slider moves the implant along the film by what it says, the arrow
-// keys nudge, Solve registers from the pose shown and Save writes what the .tra reader reads back.
+// keys nudge, Solve registers from the pose shown and Save writes what the .tra reader reads back,
+// Find finds an implant with no start.
 #include <gtest/gtest.h>
 
 #include <imgui.h>
@@ -16,6 +17,7 @@
 #include "ui/UiScript.h"
 #include "workspace/WorkspaceApp.h"
 #include "workspace/WorkspaceTestData.h"
+#include "xray/CameraPoseDifference.h"
 #include "xray/ObjectRegistration.h"
 #include "xray/PoseSpec.h"
 
@@ -139,6 +141,44 @@ TEST_F(WorkspaceUi, SolveRegistersFromThePoseShownAndSaveWritesTheTra) {
     script->idle(1);
     EXPECT_EQ(app->pose(0)->translation, start.translation) << app->state().undoMessage;
     EXPECT_EQ(app->pose(0)->rotation, start.rotation);
+}
+
+// Find (issue 29): the femoral component moved far off (40 mm along the film, 30 mm deep, 25 deg
+// about the view) is found with no start, within 1 mm in-plane and 2 deg of the .jts pose, and
+// shown as good only because the outline confirms it; Next candidate shows the finder's next
+// answer (an Undo step), Undo twice returns to the pose before Find.
+TEST_F(WorkspaceUi, FindPutsAnImplantBackWithNoStartAndStepsThroughItsCandidates) {
+    app->state().controls.values[0] += 40.0;
+    app->state().controls.values[2] += 30.0;
+    app->state().controls.values[5] += 25.0;
+    script->idle(1);
+    const RigidTransform before = *app->pose(0);
+    ASSERT_LT(*app->state().iou, 0.5);
+    script->clickWidget("button:find");
+    app->waitForSolve();
+    const app::WorkspaceSolve& s = app->state().solve;
+    ASSERT_TRUE(s.finished) << s.error;
+    ASSERT_TRUE(s.error.empty()) << s.error;
+    ASSERT_TRUE(s.result.has_value());
+    EXPECT_TRUE(s.find);
+    EXPECT_EQ(s.summary.rfind("Found: ", 0), 0u) << s.summary;
+    const CameraPoseDifference d = cameraPoseDifference(model->scene().cameras[0], jts(0, 0), *app->pose(0),
+                                                        defaultPivot(*model->scene().objects[0].model));
+    EXPECT_LT(d.inPlaneMm, 1.0);
+    EXPECT_LT(d.rotationDeg, 2.0);
+    EXPECT_EQ(s.check, app::WorkspaceSolve::Check::Ok) << s.checkText;
+    ASSERT_GE(s.candidates.size(), 2u);
+    EXPECT_EQ(app->pose(0)->translation, s.candidates[0].translation);
+    script->clickWidget("button:next-candidate");
+    script->idle(1);
+    EXPECT_EQ(app->state().solve.candidate, 1);
+    EXPECT_EQ(app->pose(0)->translation, app->state().solve.candidates[1].translation);
+    script->clickWidget("button:undo");
+    script->idle(1);
+    EXPECT_EQ(app->pose(0)->translation, app->state().solve.candidates[0].translation);
+    script->clickWidget("button:undo");
+    script->idle(1);
+    EXPECT_EQ(app->pose(0)->translation, before.translation) << app->state().undoMessage;
 }
 
 // Enlarge shows a camera's pane over the whole window (a 1024^2 frame drawn ~335 px in the
