@@ -12,20 +12,8 @@
 # FM_FIND_TEST_QUICK=1 (the sanitizer build, ~5x slower): 1 with the tray alone, 2 left out, 4 on
 # frame 0 alone.
 set -uo pipefail
-FM=$1
-DATA=${FM_DATA_DIR:-$(dirname "$0")/../../../shared/data}
-D="$DATA/jtml-kneel-tka-fluoro"
-if [ ! -f "$D/fem.jts" ]; then
-    [ "${CI:-}" = "true" ] && { echo "FAIL: shared data missing under CI"; exit 1; }
-    echo "shared data not found: skipped"; exit 77
-fi
-OUT=$(mktemp -d)
-trap 'rm -rf "$OUT"' EXIT
-fail() { echo "FAIL: $*"; exit 1; }
+source "$(dirname "$0")/jtml_test_prelude.sh" "$1"
 IMG="$D/AT_K1_V1_0180.tif"
-CAL="$D/calibration.txt"
-FEM="$D/KR_right_7_fem.stl"
-TIB="$D/KR_right_6_tib.stl"
 
 QUICK=${FM_FIND_TEST_QUICK:-0}
 if [ "$QUICK" = 1 ]; then models=(--model "$TIB" --out "$OUT/tib.jts"); implants=(tib); else

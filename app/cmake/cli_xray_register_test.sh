@@ -9,20 +9,8 @@
 #     with five numbers, a singular calibration, a mask of another size, an open mesh, an
 #     --out that is neither .jts nor .tra, a --frame the file does not have.
 set -uo pipefail
-FM=$1
-DATA=${FM_DATA_DIR:-$(dirname "$0")/../../../shared/data}
-D="$DATA/jtml-kneel-tka-fluoro"
-if [ ! -f "$D/fem.jts" ]; then
-    [ "${CI:-}" = "true" ] && { echo "FAIL: shared data missing under CI"; exit 1; }
-    echo "shared data not found: skipped"; exit 77
-fi
-OUT=$(mktemp -d)
-trap 'rm -rf "$OUT"' EXIT
-fail() { echo "FAIL: $*"; exit 1; }
+source "$(dirname "$0")/jtml_test_prelude.sh" "$1"
 IMG="$D/AT_K1_V1_0160.tif"
-CAL="$D/calibration.txt"
-FEM="$D/KR_right_7_fem.stl"
-TIB="$D/KR_right_6_tib.stl"
 MASK="$D/Labels/fem/AT_K1_V1_0160_label_fem.tif"
 
 out=$("$FM" register --reference "$IMG" --camera "$CAL" --model "$FEM" --invert \
