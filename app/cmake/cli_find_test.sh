@@ -5,7 +5,8 @@
 #     verdicts ok, the written .jts rows within 1 mm (x, y) and 2 deg of fem.jts / tib.jts;
 #  2. `--start find` for one model and a .jts for the other: only that one is found;
 #  3. refused before any search, naming the option and the key: --find-space when every model has a
-#     start, an unknown key, a depth band out of range, a tilt above 90;
+#     start, an unknown key, a depth band out of range (fractions or beyond the film in mm), a tilt
+#     above 90;
 #  4. `track` on the JTML trial with its keyframes removed: the tibia is found in frame 0 and
 #     tracked through frames 0-1, every frame ok and within 1 mm in-plane and 2 deg of tib.jts
 #     (`compare`'s camera axes); --find-space is refused for a bone that has a keyframe.
@@ -60,6 +61,8 @@ refuse "--find-space with every start given" "applies to models with no start" "
 refuse "an unknown key" 'unknown "spin"' "${base[@]}" --find-space spin=3
 refuse "a depth band beyond the film" "0 < NEAR < FAR < 1" "${base[@]}" --find-space depth=0.5:1.2
 refuse "a depth band without a colon" "NEAR:FAR" "${base[@]}" --find-space depth=0.5
+refuse "a depth band in mm beyond the film" "beyond camera 1's film (1198 mm)" "${base[@]}" --find-space depth=600mm:2000mm
+refuse "a depth band of a fraction and mm" "must both be fractions or both in mm" "${base[@]}" --find-space depth=600mm:0.9
 refuse "a tilt of 100 deg" "tilt must be 0 to 90" "${base[@]}" --find-space tilt=100
 refuse "a tilt that is not a number" "tilt" "${base[@]}" --find-space tilt=abc
 # 4. Tracking with no keyframe: the trial's JSON without "keyframes", its paths made absolute.

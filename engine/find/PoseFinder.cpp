@@ -118,10 +118,13 @@ FoundPose findObjectPose(const Scene& scene, std::size_t object, const Registrat
     if (view.reference.width != camera.detector.size.x || view.reference.height != camera.detector.size.y)
         throw Error("find: the radiograph's size differs from camera " + std::to_string(view.camera + 1) + "'s");
     const CameraAxes axes = cameraAxes(camera);
-    if (settings.space.farDepth(axes.distance) >= axes.distance)
-        throw Error("find: the depth band reaches " + std::to_string(settings.space.farDepth(axes.distance)) +
-                    " mm from the source, beyond camera " + std::to_string(view.camera + 1) + "'s film (" +
-                    std::to_string(axes.distance) + " mm)");
+    if (settings.space.farDepth(axes.distance) >= axes.distance) {
+        char text[200];
+        std::snprintf(text, sizeof text, "find: the depth band reaches %.0f mm from the source, beyond camera %zu's film "
+                      "(%.0f mm): give depth=NEARmm:FARmm within it", settings.space.farDepth(axes.distance),
+                      view.camera + 1, axes.distance);
+        throw Error(text);
+    }
     const glm::dvec3 pivot = defaultPivot(*target.model);
     const int threads = settings.threads > 0 ? settings.threads : defaultThreadCount();
     const auto stopped = [&] { return stop && stop->load(); };
