@@ -98,7 +98,8 @@ void WorkspaceSolver::start(std::shared_ptr<const WorkspaceModel> model, int obj
                         for (const FoundCandidate& f : result.found[0]->candidates) {
                             const CameraPoseDifference d =
                                 cameraPoseDifference(scene.cameras[0], c.answer.worldFromObject, f.worldFromObject, pivot);
-                            if (d.inPlaneMm <= 1.0 && d.rotationDeg <= 2.0) continue;  // the answer itself
+                            const ConfirmationSettings same;  // within its agreement bounds: the answer itself
+                            if (d.inPlaneMm <= same.agreeInPlaneMm && d.rotationDeg <= same.agreeRotationDeg) continue;
                             s.candidates.push_back(f.worldFromObject);
                             s.candidateSimilarity.push_back(f.similarity);
                         }

@@ -13,6 +13,7 @@
 #include "find/SeenPose.h"
 #include "find/TemplateScan.h"
 #include "scene/ObjectPoseParameterization.h"
+#include "search/ConfirmedSearch.h"
 #include "similarity/EdgeDistance.h"
 #include "similarity/ImagePyramid.h"
 #include "xray/CameraPoseDifference.h"
@@ -90,13 +91,6 @@ int scanFactorFor(const SceneObject& target, const CameraAxes& axes, const FindS
 }
 
 }  // namespace
-
-int FoundPose::evaluations() const {
-    int n = 0;
-    for (const FindStage& s : stages)
-        if (s.name != "templates" && s.name != "scan") n += static_cast<int>(s.evaluations);
-    return n;
-}
 
 double FoundPose::seconds() const {
     double t = 0.0;
@@ -255,10 +249,11 @@ FoundPose findObjectPose(const Scene& scene, std::size_t object, const Registrat
             lookalikes.push_back({pose, 0.0, 0, answers.front().hypothesis});
         registerAll(lookalikes);
     }
+    const ConfirmationSettings kSame;  // answers within its agreement bounds are one answer
     for (const FoundCandidate& a : answers) {
         const bool same = std::any_of(found.candidates.begin(), found.candidates.end(), [&](const FoundCandidate& c) {
             const CameraPoseDifference d = cameraPoseDifference(camera, c.worldFromObject, a.worldFromObject, pivot);
-            return d.inPlaneMm <= 1.0 && d.rotationDeg <= 2.0;
+            return d.inPlaneMm <= kSame.agreeInPlaneMm && d.rotationDeg <= kSame.agreeRotationDeg;
         });
         if (!same) found.candidates.push_back(a);
     }

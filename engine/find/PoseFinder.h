@@ -63,7 +63,6 @@ struct FoundPose {
     std::vector<FindStage> stages;
     int scanFactor = 0;  // the scan's detector downsampling
     bool stopped = false;
-    int evaluations() const;
     double seconds() const;
 };
 

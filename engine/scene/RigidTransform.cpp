@@ -1,5 +1,6 @@
 #include "scene/RigidTransform.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -59,6 +60,11 @@ void RigidTransform::validate(const std::string& what) const {
     if (std::abs(glm::determinant(rotation) - 1.0) > kRotationTolerance)
         throw Error(what + ": the rotation has determinant " +
                     std::to_string(glm::determinant(rotation)) + " (a reflection is not a pose)");
+}
+
+double rotationBetweenDeg(const glm::dmat3& a, const glm::dmat3& b) {
+    const glm::dmat3 q = b * glm::transpose(a);
+    return glm::degrees(std::acos(std::clamp((q[0][0] + q[1][1] + q[2][2] - 1.0) * 0.5, -1.0, 1.0)));
 }
 
 RigidTransform rotationAbout(const glm::dvec3& axis, double angleDeg, const glm::dvec3& pivot) {

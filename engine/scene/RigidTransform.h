@@ -45,6 +45,9 @@ struct RigidTransform {
 // element. 1e-6 accepts matrices written with 7 significant digits by other tools.
 inline constexpr double kRotationTolerance = 1e-6;
 
+// The angle (deg, 0-180) of the rotation taking orientation `a` to `b`.
+double rotationBetweenDeg(const glm::dmat3& a, const glm::dmat3& b);
+
 // The rotation by `angleDeg` (right hand) about the unit `axis` through `pivot`.
 RigidTransform rotationAbout(const glm::dvec3& axis, double angleDeg, const glm::dvec3& pivot);
 

@@ -97,9 +97,7 @@ FoundKeyframe findKeyframe(const Scene& scene, const std::string& bone, const Fr
         for (std::size_t b = a + 1; b < out.cameras.size(); ++b)
             for (const Answer& x : answersOf(out.cameras[a]))
                 for (const Answer& y : answersOf(out.cameras[b])) {
-                    const glm::dmat3 d = x.pose.rotation * glm::transpose(y.pose.rotation);
-                    const double angle =
-                        std::acos(std::clamp((d[0][0] + d[1][1] + d[2][2] - 1.0) / 2.0, -1.0, 1.0)) * 180.0 / M_PI;
+                    const double angle = rotationBetweenDeg(y.pose.rotation, x.pose.rotation);
                     if (angle > kCamerasAgreeDeg) continue;
                     const std::vector<glm::dvec3> sources{scene.cameras.at(out.cameras[a].camera).source,
                                                           scene.cameras.at(out.cameras[b].camera).source};

@@ -50,10 +50,8 @@ RigidTransform confirmationStart(const ProjectionGeometry& camera, const RigidTr
 
 bool posesAgree(const RigidTransform& a, const RigidTransform& b, const glm::dvec3& pivot,
                 const ConfirmationSettings& bounds) {
-    const glm::dmat3 relative = glm::transpose(a.rotation) * b.rotation;
-    const double c = std::clamp((relative[0][0] + relative[1][1] + relative[2][2] - 1.0) / 2.0, -1.0, 1.0);
     return glm::length(a.applyToPoint(pivot) - b.applyToPoint(pivot)) <= bounds.agreeInPlaneMm &&
-           std::acos(c) * 180.0 / M_PI <= bounds.agreeRotationDeg;
+           rotationBetweenDeg(a.rotation, b.rotation) <= bounds.agreeRotationDeg;
 }
 
 bool registersSideBySide(std::size_t searches, const RegistrationSettings& settings) {

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "common/ErrorText.h"
+#include "FindTestScenes.h"
 #include "common/TestMeshes.h"
 #include "find/FoundRegistration.h"
 #include "find/SeenPose.h"
@@ -33,33 +34,16 @@ ProjectionGeometry film() {
     return g;
 }
 
-// Cobalt-chromium: a few millimetres stop the beam, so the outline is a sharp step as in a real
-// radiograph of an implant.
-XrayModelPtr meshModel(const Mesh& mesh, const std::string& name) {
-    return std::make_shared<MeshXrayModel>(prepareMeshDrr(mesh, true), kMuCobaltChromePerMm, name);
-}
+using test::metalCorner;
+using test::metalModel;
 
-// A corner of three bars of different lengths (60, 40 and 30 mm along x, y and z): no rotation
-// but the identity maps its outline onto itself, and it is far from planar (a planar outline's
-// mirror tilt casts the same one; a small tilt of a face-on plate barely changes its outline).
-XrayModelPtr asymmetric() {
-    Mesh m = test::mergeMeshes(test::boxMesh({0, 0, 0}, {60, 8, 8}), test::boxMesh({0, 8, 0}, {8, 40, 8}));
-    m = test::mergeMeshes(m, test::boxMesh({0, 0, 8}, {8, 8, 30}));
-    return meshModel(m, "corner");
-}
-
-// The radiograph as prepared (inverted: dense bright): 1 - exp(-line integral).
-RegistrationView viewOf(const Scene& truth) {
-    XrayRenderSettings s;
-    Image image = renderView(truth, truth.cameras[0], s, XrayImageOutput::Intensity);
-    for (float& p : image.pixels) p = 1.0f - p;
-    return {0, image, std::nullopt};
-}
+// The radiograph of camera 1.
+RegistrationView viewOf(const Scene& truth) { return test::preparedView(truth, 0); }
 
 TEST(PoseFinder, FindsAnAsymmetricObjectAnywhereInTheImage) {
     Scene truth;
     truth.cameras = {film()};
-    const XrayModelPtr ell = asymmetric();
+    const XrayModelPtr ell = metalCorner();
     const CameraAxes axes = cameraAxes(truth.cameras[0]);
     const glm::dvec3 pivot = defaultPivot(*ell);
     SeenPose seen;  // off the optical axis, between the depth, roll and tilt steps of the grids
@@ -70,7 +54,7 @@ TEST(PoseFinder, FindsAnAsymmetricObjectAnywhereInTheImage) {
     seen.tiltVDeg = -11.0;
     truth.objects.push_back({"corner", ell, worldFromSeen(axes, seen, pivot), true});
     // A distracting box elsewhere in the image.
-    truth.objects.push_back({"box", meshModel(test::boxMesh({-15, -15, -15}, {15, 15, 15}), "box"),
+    truth.objects.push_back({"box", metalModel(test::boxMesh({-15, -15, -15}, {15, 15, 15}), "box"),
                              RigidTransform::translate({-60.0, -50.0, -600.0}), true});
     const RegistrationView view = viewOf(truth);
     Scene scene = truth;
@@ -97,7 +81,7 @@ TEST(PoseFinder, FindsAnAsymmetricObjectAnywhereInTheImage) {
 TEST(PoseFinder, SaysWhenAHalfTurnCastsTheSameOutline) {
     Scene truth;
     truth.cameras = {film()};
-    const XrayModelPtr box = meshModel(test::boxMesh({-25, -10, -6}, {25, 10, 6}), "bar");
+    const XrayModelPtr box = metalModel(test::boxMesh({-25, -10, -6}, {25, 10, 6}), "bar");
     const CameraAxes axes = cameraAxes(truth.cameras[0]);
     SeenPose seen;
     seen.pixel = {200.0, 290.0};
@@ -124,7 +108,7 @@ TEST(PoseFinder, SaysWhenAHalfTurnCastsTheSameOutline) {
 TEST(PoseFinder, RefusesWhatItCannotSearch) {
     Scene scene;
     scene.cameras = {film()};
-    scene.objects.push_back({"bar", meshModel(test::boxMesh({-5, -5, -5}, {5, 5, 5}), "bar"), RigidTransform{}, true});
+    scene.objects.push_back({"bar", metalModel(test::boxMesh({-5, -5, -5}, {5, 5, 5}), "bar"), RigidTransform{}, true});
     const RegistrationView view{0, Image(512, 512, 0.0f), std::nullopt};
     FindSettings bad;
     bad.finalists = 30;
