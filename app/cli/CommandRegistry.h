@@ -31,4 +31,4 @@ struct CommandRegistration {
 #define FM_CLI_CONCAT2(a, b) a##b
 #define FM_CLI_CONCAT(a, b) FM_CLI_CONCAT2(a, b)
 #define FM_REGISTER_COMMAND(name, order, install) \
-    static ::fm::cli::CommandRegistration FM_CLI_CONCAT(fmCommand_, __LINE__)(name, order, install)
+    static ::fm::cli::CommandRegistration FM_CLI_CONCAT(fmCommand_, __COUNTER__)(name, order, install)

@@ -34,16 +34,6 @@ struct ScreenshotArgs {
     bool sideBySide = false, drr = false;
 };
 
-glm::ivec2 parseSize(const std::string& text) {
-    int w = 0, h = 0;
-    char x = 0, extra = 0;
-    std::istringstream in(text);
-    if (!(in >> w >> x >> h) || (x != 'x' && x != 'X') || (in >> extra) || w < 16 || h < 16 ||
-        w > 8192 || h > 8192)
-        throw fm::Error("--size \"" + text + "\": expected WIDTHxHEIGHT, each 16..8192");
-    return {w, h};
-}
-
 fm::app::View3d parseView(const std::string& text) {
     fm::app::View3d view;
     double az = 0, el = 0, zoom = 1;
@@ -71,7 +61,7 @@ fm::app::CompareMode parseCompare(const std::string& text) {
 void runWorkspaceScreenshot(const ScreenshotArgs& args) {
     fm::app::WorkspaceHeadlessOptions options;
     options.source = fm::cli::workspaceSource(args.workspace);
-    options.size = parseSize(args.size);
+    options.size = fm::cli::parseImageSize(args.size, 8192);
     options.threads = args.threads;
     options.frame = options.source.trial.empty() ? 0 : args.workspace.frame;
     options.sideBySide = args.sideBySide;
@@ -83,7 +73,7 @@ void runWorkspaceScreenshot(const ScreenshotArgs& args) {
 void runScreenshot(const ScreenshotArgs& args) {
     if (fm::cli::wantsWorkspace(args.workspace)) return runWorkspaceScreenshot(args);
     fm::app::HeadlessOptions options;
-    options.size = parseSize(args.size);
+    options.size = fm::cli::parseImageSize(args.size, 8192);
     options.app.volumeSpec = args.volume;
     options.app.labelsSpec = args.labels;
     options.app.labelTable = args.labelTable;

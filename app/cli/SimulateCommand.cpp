@@ -40,23 +40,13 @@ struct SimulateArgs {
     std::string out;
 };
 
-glm::ivec2 parseSize(const std::string& text) {
-    std::string spaced = text;
-    for (char& c : spaced)
-        if (c == 'x' || c == 'X') c = ' ';
-    const auto v = fm::io::parseNumbers(spaced, 2, "--size (WIDTHxHEIGHT pixels)");
-    if (v[0] != std::floor(v[0]) || v[1] != std::floor(v[1]) || v[0] < 16 || v[1] < 16 || v[0] > 4096 || v[1] > 4096)
-        throw fm::Error("--size: whole numbers of pixels 16..4096, got \"" + text + "\"");
-    return {static_cast<int>(v[0]), static_cast<int>(v[1])};
-}
-
 void runSimulate(const SimulateArgs& a, const CLI::App& cmd) {
     if (!a.cameras.empty())
         for (const char* o : {"--camera-count", "--separation", "--distance"})
             if (cmd.count(o) > 0)
                 throw CLI::ValidationError(std::string(o) + " places cameras around the bone; --cameras gives them");
     fm::TrialSimulationSpec s;
-    s.imageSize = parseSize(a.size);
+    s.imageSize = fm::cli::parseImageSize(a.size, 4096);
     s.ct = fm::loadVolume(a.volume);
     const fm::UnitGuess hu = fm::guessHounsfield(s.ct);
     if (!hu.hounsfield)

@@ -1,6 +1,7 @@
 #include "cli/ValueChecks.h"
 
 #include <algorithm>
+#include <sstream>
 
 #include "core/Error.h"
 #include "core/Suggest.h"
@@ -46,6 +47,17 @@ std::vector<std::string> polishMethodNames() { return {"nm", "cmaes"}; }
 std::vector<std::string> similarityNames() {
     return {"ncc", "gncc", "gd", "mi", "edge", "gradient-ncc", "gradient-difference",
             "mutual-information", "edge-distance"};
+}
+
+glm::ivec2 parseImageSize(const std::string& text, int maxPixels) {
+    int w = 0, h = 0;
+    char x = 0, extra = 0;
+    std::istringstream in(text);
+    if (!(in >> w >> x >> h) || (x != 'x' && x != 'X') || (in >> extra) || w < 16 || h < 16 ||
+        w > maxPixels || h > maxPixels)
+        throw Error("--size \"" + text + "\": expected WIDTHxHEIGHT, whole numbers of pixels 16.." +
+                    std::to_string(maxPixels));
+    return {w, h};
 }
 
 }  // namespace fm::cli

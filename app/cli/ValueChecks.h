@@ -7,6 +7,7 @@
 #include <vector>
 
 #include <CLI/CLI.hpp>
+#include <glm/glm.hpp>
 
 namespace fm::cli {
 
@@ -18,6 +19,9 @@ CLI::Validator oneOf(std::vector<std::string> names, const std::string& what,
 
 // The 2011 pose x,y,z,az,el,rot: six finite comma-separated numbers.
 extern const CLI::Validator kPoseText;
+
+// --size WIDTHxHEIGHT: two whole numbers of pixels, each 16..maxPixels; fm::Error otherwise.
+glm::ivec2 parseImageSize(const std::string& text, int maxPixels);
 
 // The global search methods --method takes, and the local ones --polish takes.
 std::vector<std::string> globalMethodNames();

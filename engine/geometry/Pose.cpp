@@ -9,6 +9,7 @@
 
 #include "core/Error.h"
 #include "core/WorldLimits.h"
+#include "geometry/StrictJson.h"
 
 namespace fm {
 
@@ -20,12 +21,7 @@ constexpr int kMaxFilmPixels = 16384;
 constexpr const char* kPoseNames[6] = {"x offset", "y offset",  "z offset",
                                        "azimuth",  "elevation", "rotation"};
 
-std::string formatNumber(double value) {
-    if (value == 0.0) value = 0.0;  // "-0" only confuses readers; it reads back equal anyway
-    char buffer[64];
-    const auto result = std::to_chars(buffer, buffer + sizeof(buffer), value);
-    return std::string(buffer, result.ptr);
-}
+using json_detail::formatNumber;
 
 std::string_view trim(std::string_view s) {
     while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);

@@ -19,13 +19,13 @@ bool gdcmSeesAVr(const char vr[2]) {
     return isKnownVr(vr) || (vr[0] == '?' && vr[1] == '?');
 }
 
+}  // namespace
+
 std::string tagText(std::uint16_t group, std::uint16_t element) {
     char text[16];
     std::snprintf(text, sizeof text, "(%04X,%04X)", group, element);
     return text;
 }
-
-}  // namespace
 
 bool isKnownVr(const char vr[2]) {
     static const char* const kAll[] = {"AE", "AS", "AT", "CS", "DA", "DS", "DT", "FL", "FD",

@@ -7,6 +7,7 @@
 // meta group, guessed big endian from that tag, read a length of 909 MB out of a UID's text and
 // allocated it.)
 #include <cstddef>
+#include <cstdint>
 #include <string>
 
 namespace fm {
@@ -15,6 +16,9 @@ struct DicomEncoding {
     bool explicitVr = true;
     bool bigEndian = false;
 };
+
+// "(0028,0010)": how a tag is named in every message.
+std::string tagText(std::uint16_t group, std::uint16_t element);
 
 // "explicit VR little endian", ...
 std::string describe(DicomEncoding encoding);

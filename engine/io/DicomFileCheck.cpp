@@ -34,12 +34,6 @@ bool isVr(const char vr[2], const char* name) {
     return vr[0] == name[0] && vr[1] == name[1];
 }
 
-std::string tagText(std::uint16_t group, std::uint16_t element) {
-    char tag[16];
-    std::snprintf(tag, sizeof tag, "(%04X,%04X)", group, element);
-    return tag;
-}
-
 bool dictionarySaysSequence(std::uint16_t group, std::uint16_t element) {
     return gdcm::Global::GetInstance().GetDicts().GetDictEntry(gdcm::Tag(group, element)).GetVR() ==
            gdcm::VR::SQ;

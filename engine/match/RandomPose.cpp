@@ -10,11 +10,9 @@
 
 namespace fm {
 
-namespace {
 double roundToTenth(double v) {
     return std::round(v * 10.0) / 10.0;
 }
-}  // namespace
 
 void validateRandomPoseOptions(const RandomPoseOptions& o) {
     auto check = [](double v, double hi, const char* name) {

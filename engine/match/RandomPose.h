@@ -25,6 +25,9 @@ struct RandomPoseOptions {
 // ranges, fractions outside 0..1 or maxTries < 1.
 void validateRandomPoseOptions(const RandomPoseOptions& options);
 
+// v rounded to the nearest 0.1 (mm or deg): drawn poses read well.
+double roundToTenth(double v);
+
 // The first acceptable candidate drawn from Rng(seed) (SplitMix64); every value rounded to 0.1 (mm or
 // deg) so that it reads well. Deterministic for a given seed and inputs. Throws fm::Error if
 // `bonePoints` is empty or no candidate in maxTries is acceptable.

@@ -6,6 +6,7 @@
 #include "core/Error.h"
 #include "core/Random.h"
 #include "match/FilmCoverage.h"
+#include "match/RandomPose.h"
 
 namespace fm {
 
@@ -13,10 +14,6 @@ namespace {
 constexpr int kMaxTries = 2000;
 constexpr double kMinBoxCoverage = 0.10;   // as RandomPoseOptions
 constexpr double kMinPointsOnFilm = 0.95;
-
-double roundToTenth(double v) {
-    return std::round(v * 10.0) / 10.0;
-}
 }  // namespace
 
 const std::vector<ClinicalView>& clinicalViews() {

@@ -10,6 +10,7 @@
 //   poses    4x4 float64 [R t; 0 0 0 1], named aFromB like the engine (scene/RigidTransform.h)
 #include <array>
 #include <initializer_list>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -28,6 +29,9 @@
 namespace fm::py {
 
 namespace pb = pybind11;
+
+// What an unknown number (a pose not tracked, a cost not measured) is in the arrays we return.
+inline constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // `value` as a C-ordered array of T (converted if it must be); fm::Error "<what>: expected
 // <expected>" when numpy cannot make one of it.

@@ -18,7 +18,6 @@ namespace fm::py {
 namespace {
 
 using Doubles = pb::array_t<double, pb::array::c_style | pb::array::forcecast>;
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 std::array<double, 6> sixNumbers(const pb::handle& value, const std::string& what) {
     const std::vector<double> v = numbersOf(value, what, {6}, "6 numbers");

@@ -23,7 +23,6 @@ namespace fm::py {
 
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 pb::dict recordDict(const FrameRecord& r, const TrialScene& scene, const std::string& bone) {
     pb::dict d;

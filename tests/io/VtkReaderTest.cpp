@@ -17,7 +17,7 @@ using fm::test::expectValues;
 using fm::test::expectVec;
 using fm::test::ScalarType;
 
-constexpr double kTextGeometryTol = 1e-12;  // decimal text parsed to double
+constexpr double kVtkTextGeometryTol = 1e-12;  // decimal text parsed to double
 
 const char* vtkType(ScalarType t) {
     switch (t) {
@@ -96,8 +96,8 @@ TEST(VtkReader, GeometryKeywordsAndOptionalParts) {
     s.lookupTable = false;  // some writers omit it; data follows SCALARS directly
     fm::test::writeFile(dir / "g.vtk", s.bytes());
     fm::Volume v = fm::readVolume(dir / "g.vtk");
-    expectVec(v.spacing, {0.5, 0.75, 2}, kTextGeometryTol);
-    expectVec(v.origin, {-1, 2.5, 100}, kTextGeometryTol);
+    expectVec(v.spacing, {0.5, 0.75, 2}, kVtkTextGeometryTol);
+    expectVec(v.origin, {-1, 2.5, 100}, kVtkTextGeometryTol);
     EXPECT_EQ(fm::orientationCode(v.direction), "LPS");
     expectValues(v, s.values);
 
@@ -105,9 +105,9 @@ TEST(VtkReader, GeometryKeywordsAndOptionalParts) {
     s.geometry = "ASPECT_RATIO 1 2 3\nDIRECTION 0 -1 0 1 0 0 0 0 1\n";
     fm::test::writeFile(dir / "d.vtk", s.bytes());
     v = fm::readVolume(dir / "d.vtk");
-    expectVec(v.spacing, {1, 2, 3}, kTextGeometryTol);
-    expectVec(v.direction[0], {0, 1, 0}, kTextGeometryTol);
-    expectVec(v.direction[1], {-1, 0, 0}, kTextGeometryTol);
+    expectVec(v.spacing, {1, 2, 3}, kVtkTextGeometryTol);
+    expectVec(v.direction[0], {0, 1, 0}, kVtkTextGeometryTol);
+    expectVec(v.direction[1], {-1, 0, 0}, kVtkTextGeometryTol);
 }
 
 TEST(VtkReader, RejectsBadFiles) {

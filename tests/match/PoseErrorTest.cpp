@@ -16,7 +16,7 @@ constexpr double kDeg = std::numbers::pi / 180.0;
 // Scene distances of ~500 mm and rotations in double precision: far below a micrometre.
 constexpr double kMm = 1e-9;
 
-fm::Pose pose(double x, double y, double z, double az, double el, double rot) {
+fm::Pose poseOf(double x, double y, double z, double az, double el, double rot) {
     return fm::Pose::fromArray({x, y, z, az, el, rot});
 }
 
@@ -34,7 +34,7 @@ TEST(PoseError, WrapDegrees) {
 
 TEST(PoseError, DifferenceWrapsAnglesButNotOffsets) {
     const auto d =
-        fm::poseDifference(pose(1, 2, 3, 179, 10, -80), pose(-199, 2.5, 3, -179, 20, 85));
+        fm::poseDifference(poseOf(1, 2, 3, 179, 10, -80), poseOf(-199, 2.5, 3, -179, 20, 85));
     constexpr double kTol = 1e-12;
     EXPECT_NEAR(d[0], -200.0, kTol);  // offsets are plain differences
     EXPECT_NEAR(d[1], 0.5, kTol);
@@ -42,7 +42,7 @@ TEST(PoseError, DifferenceWrapsAnglesButNotOffsets) {
     EXPECT_NEAR(d[3], 2.0, kTol);  // -179 is 2 deg past 179, not 358 deg before it
     EXPECT_NEAR(d[4], 10.0, kTol);
     EXPECT_NEAR(d[5], 165.0, kTol);
-    EXPECT_NEAR(fm::poseDifference(pose(0, 0, 0, -179, 0, 0), pose(0, 0, 0, 179, 0, 0))[3], -2.0,
+    EXPECT_NEAR(fm::poseDifference(poseOf(0, 0, 0, -179, 0, 0), poseOf(0, 0, 0, 179, 0, 0))[3], -2.0,
                 kTol);
     EXPECT_STREQ(fm::poseParameterName(0), "x offset");
     EXPECT_STREQ(fm::poseParameterName(3), "azimuth");
@@ -70,7 +70,7 @@ class PoseErrorScene : public ::testing::Test {
 
 TEST_F(PoseErrorScene, IdenticalPosesHaveNoError) {
     const std::vector<glm::dvec3> points{{0, 0, 0}, {50, -30, 80}, {-40, 20, -100}};
-    const fm::Pose p = pose(3, -4, 5, 123, -33, 17);
+    const fm::Pose p = poseOf(3, -4, 5, 123, -33, 17);
     const auto e = fm::targetRegistrationError(p, p, setup, volumeCenter, points);
     EXPECT_EQ(e.meanMm, 0.0);
     EXPECT_EQ(e.maxMm, 0.0);
@@ -80,8 +80,8 @@ TEST_F(PoseErrorScene, PureOffsetGivesTheOffsetLength) {
     const std::vector<glm::dvec3> points{{0, 0, 0}, {50, -30, 80}, {-40, 20, -100}, {7, 7, 7}};
     for (const auto& angles :
          {glm::dvec3(0, 0, 0), glm::dvec3(37, -20, 15), glm::dvec3(-170, 80, -60)}) {
-        const fm::Pose a = pose(1, 2, 3, angles.x, angles.y, angles.z);
-        const fm::Pose b = pose(1 + 3, 2 + 4, 3 + 12, angles.x, angles.y, angles.z);
+        const fm::Pose a = poseOf(1, 2, 3, angles.x, angles.y, angles.z);
+        const fm::Pose b = poseOf(1 + 3, 2 + 4, 3 + 12, angles.x, angles.y, angles.z);
         const auto e = fm::targetRegistrationError(a, b, setup, volumeCenter, points);
         EXPECT_NEAR(e.meanMm, 13.0, kMm);
         EXPECT_NEAR(e.maxMm, 13.0, kMm);
@@ -92,12 +92,12 @@ TEST_F(PoseErrorScene, OffsetSplitsIntoInPlaneAndDepth) {
     const std::vector<glm::dvec3> points{{0, 0, 0}, {30, 40, -50}};
     // AP view (az 0, el 0): the beam runs anterior -> posterior, along +y. A y offset is pure
     // depth, x and z are in the film plane.
-    auto e = fm::targetRegistrationError(pose(0, 0, 0, 0, 0, 0), pose(3, 4, 12, 0, 0, 0), setup,
+    auto e = fm::targetRegistrationError(poseOf(0, 0, 0, 0, 0, 0), poseOf(3, 4, 12, 0, 0, 0), setup,
                                          volumeCenter, points);
     EXPECT_NEAR(e.meanDepthMm, 4.0, kMm);
     EXPECT_NEAR(e.meanInPlaneMm, std::hypot(3.0, 12.0), kMm);
     // Lateral view from the patient's left (az 90): the beam runs along -x: x is depth.
-    e = fm::targetRegistrationError(pose(0, 0, 0, 90, 0, 0), pose(3, 4, 12, 90, 0, 0), setup,
+    e = fm::targetRegistrationError(poseOf(0, 0, 0, 90, 0, 0), poseOf(3, 4, 12, 90, 0, 0), setup,
                                     volumeCenter, points);
     EXPECT_NEAR(e.meanDepthMm, 3.0, kMm);
     EXPECT_NEAR(e.meanInPlaneMm, std::hypot(4.0, 12.0), kMm);
@@ -107,8 +107,8 @@ TEST_F(PoseErrorScene, AzimuthTurnsAboutTheSuperiorAxisThroughTheIsocenter) {
     const glm::dvec3 offset{1, 2, 3};
     const glm::dvec3 isocenter = volumeCenter - offset;
     const double delta = 10.0, r = 40.0;
-    const fm::Pose a = pose(offset.x, offset.y, offset.z, 20, 0, 0);
-    const fm::Pose b = pose(offset.x, offset.y, offset.z, 20 + delta, 0, 0);
+    const fm::Pose a = poseOf(offset.x, offset.y, offset.z, 20, 0, 0);
+    const fm::Pose b = poseOf(offset.x, offset.y, offset.z, 20 + delta, 0, 0);
     auto single = [&](const glm::dvec3& p, const fm::Pose& pa, const fm::Pose& pb) {
         return fm::targetRegistrationError(pa, pb, setup, volumeCenter, {p}).meanMm;
     };
@@ -120,15 +120,15 @@ TEST_F(PoseErrorScene, AzimuthTurnsAboutTheSuperiorAxisThroughTheIsocenter) {
     EXPECT_NEAR(single(isocenter + glm::dvec3(0, r, 70), a, b), 2 * r * std::sin(delta / 2 * kDeg),
                 kMm);
     // Across +-180: 179 -> -179 is a 2 degree turn.
-    const fm::Pose c = pose(offset.x, offset.y, offset.z, 179, 0, 0);
-    const fm::Pose d = pose(offset.x, offset.y, offset.z, -179, 0, 0);
+    const fm::Pose c = poseOf(offset.x, offset.y, offset.z, 179, 0, 0);
+    const fm::Pose d = poseOf(offset.x, offset.y, offset.z, -179, 0, 0);
     EXPECT_NEAR(single(isocenter + glm::dvec3(r, 0, 0), c, d), 2 * r * std::sin(1.0 * kDeg), kMm);
 }
 
 TEST_F(PoseErrorScene, ElevationTurnsAboutTheLeftRightAxisInAnApView) {
     const glm::dvec3 isocenter = volumeCenter;  // offset 0
     const double delta = 6.0, r = 40.0;
-    const fm::Pose a = pose(0, 0, 0, 0, -3, 0), b = pose(0, 0, 0, 0, 3, 0);
+    const fm::Pose a = poseOf(0, 0, 0, 0, -3, 0), b = poseOf(0, 0, 0, 0, 3, 0);
     auto single = [&](const glm::dvec3& p) {
         return fm::targetRegistrationError(a, b, setup, volumeCenter, {p}).meanMm;
     };
@@ -138,7 +138,7 @@ TEST_F(PoseErrorScene, ElevationTurnsAboutTheLeftRightAxisInAnApView) {
 
 TEST_F(PoseErrorScene, FilmRotationTurnsAboutTheCentralRayInPlane) {
     const double delta = 20.0, rho = 30.0;
-    const fm::Pose a = pose(0, 0, 0, 0, 0, -5), b = pose(0, 0, 0, 0, 0, 15);
+    const fm::Pose a = poseOf(0, 0, 0, 0, 0, -5), b = poseOf(0, 0, 0, 0, 0, 15);
     // AP view: the central ray runs along y through the isocenter (= volumeCenter here).
     const auto onRay = fm::targetRegistrationError(a, b, setup, volumeCenter,
                                                    {volumeCenter + glm::dvec3(0, 77, 0)});

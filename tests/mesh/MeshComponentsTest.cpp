@@ -26,7 +26,7 @@ namespace {
 using fm::Mesh;
 using fm::Volume;
 
-constexpr double kPi = std::numbers::pi;
+constexpr double kPiRad = std::numbers::pi;
 
 // Reference: triangles sharing a vertex are neighbours; a breadth-first search from each
 // unvisited triangle, in triangle order, finds the components in order of their first
@@ -328,10 +328,10 @@ TEST(MeshComponents, KnownShapesGiveTheirComponentsEulerCharacteristicsAndVolume
         double volume;
         double radius;  // smallest curvature radius: the volume's tolerance 3 (h / radius)^2
     };
-    const double ballVolume = 4.0 / 3.0 * kPi;
+    const double ballVolume = 4.0 / 3.0 * kPiRad;
     const std::vector<Expected> expected = {
         {ball, 2, ballVolume * 216, 6},
-        {torus, 0, 2.0 * kPi * kPi * 7.0 * 2.5 * 2.5, 2.5},
+        {torus, 0, 2.0 * kPiRad * kPiRad * 7.0 * 2.5 * 2.5, 2.5},
         {hollow, 2, ballVolume * 343, 7},  // outer shell
         {hollow, 2, -ballVolume * 64, 4},  // inner shell
         {small, 2, ballVolume * 27, 3},

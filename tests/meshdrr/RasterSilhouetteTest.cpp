@@ -20,7 +20,7 @@ namespace {
 
 using glm::dvec3;
 
-fm::ProjectionGeometry tiltedCamera() {
+fm::ProjectionGeometry tiltedRasterCamera() {
     fm::ProjectionGeometry g;
     g.source = dvec3(120, -80, 580);
     const dvec3 view = glm::normalize(-g.source);
@@ -57,7 +57,7 @@ TEST(RasterSilhouette, SamePixelsAsTheRayTracedSilhouette) {
                 fm::RigidTransform::translate({rng.uniform(-10, 10), rng.uniform(-10, 10), rng.uniform(-30, 30)}) *
                 fm::rotationAbout(glm::normalize(dvec3(rng.uniform(-1, 1), rng.uniform(-1, 1), 1.0)),
                                   rng.uniform(-180, 180), {0, 0, 0});
-            const fm::ProjectionGeometry g = fm::transformGeometry(pose.inverse(), tiltedCamera());
+            const fm::ProjectionGeometry g = fm::transformGeometry(pose.inverse(), tiltedRasterCamera());
             const auto raster = fm::rasterMeshSilhouette(*model, g);
             ASSERT_TRUE(raster);
             const fm::Mask traced = fm::renderMeshSilhouette(*model, g);
@@ -68,10 +68,10 @@ TEST(RasterSilhouette, SamePixelsAsTheRayTracedSilhouette) {
     }
     // And it can fail: the silhouette half a pixel off is different.
     const auto model = fm::prepareMeshDrr(meshes[0], true);
-    fm::ProjectionGeometry moved = tiltedCamera();
+    fm::ProjectionGeometry moved = tiltedRasterCamera();
     moved.detector.origin += 0.35 * moved.detector.u;
     EXPECT_GT(differing(*fm::rasterMeshSilhouette(*model, moved),
-                        fm::renderMeshSilhouette(*model, tiltedCamera())),
+                        fm::renderMeshSilhouette(*model, tiltedRasterCamera())),
               20u);
 }
 
@@ -79,12 +79,12 @@ TEST(RasterSilhouette, SamePixelsAsTheRayTracedSilhouette) {
 // a mirrored detector (u reversed) keeps the other half, with the same pixels; an open surface
 // (silhouette-only) is filled whole.
 TEST(RasterSilhouette, OneWindingCoversAClosedSurfaceAndAnOpenOneIsFilledWhole) {
-    fm::ProjectionGeometry mirrored = tiltedCamera();
+    fm::ProjectionGeometry mirrored = tiltedRasterCamera();
     mirrored.detector.origin += double(mirrored.detector.size.x - 1) * mirrored.detector.spacing.x *
                                 mirrored.detector.u;
     mirrored.detector.u = -mirrored.detector.u;
     const auto sphere = fm::prepareMeshDrr(fm::test::uvSphereMesh({-5, 3, 2}, 14.f, 16, 32), true);
-    for (const fm::ProjectionGeometry& g : {tiltedCamera(), mirrored}) {
+    for (const fm::ProjectionGeometry& g : {tiltedRasterCamera(), mirrored}) {
         const fm::Mask traced = fm::renderMeshSilhouette(*sphere, g);
         ASSERT_GT(traced.count(), 300u);
         EXPECT_EQ(differing(*fm::rasterMeshSilhouette(*sphere, g), traced), 0u);
@@ -93,7 +93,7 @@ TEST(RasterSilhouette, OneWindingCoversAClosedSurfaceAndAnOpenOneIsFilledWhole) 
     fm::Mesh open = fm::test::boxMesh({-12, -7, -9}, {10, 15, 6});
     open.triangles.resize(open.triangles.size() - 2);
     const auto model = fm::prepareMeshDrr(open, false);
-    for (const fm::ProjectionGeometry& g : {tiltedCamera(), mirrored}) {
+    for (const fm::ProjectionGeometry& g : {tiltedRasterCamera(), mirrored}) {
         const fm::Mask traced = fm::renderMeshSilhouette(*model, g);
         ASSERT_GT(traced.count(), 300u);
         EXPECT_EQ(differing(*fm::rasterMeshSilhouette(*model, g), traced), 0u);
@@ -102,7 +102,7 @@ TEST(RasterSilhouette, OneWindingCoversAClosedSurfaceAndAnOpenOneIsFilledWhole) 
 
 TEST(RasterSilhouette, NoAnswerWhenTheModelReachesBehindTheSource) {
     const auto model = fm::prepareMeshDrr(fm::test::boxMesh({-10, -10, -10}, {10, 10, 10}), true);
-    fm::ProjectionGeometry g = tiltedCamera();
+    fm::ProjectionGeometry g = tiltedRasterCamera();
     g.source = {0, 0, 0};  // inside the box
     EXPECT_FALSE(fm::rasterMeshSilhouette(*model, g));
     // A scene falls back to tracing: the footprint is still there.
@@ -120,12 +120,12 @@ TEST(RasterSilhouette, NoAnswerWhenTheModelReachesBehindTheSource) {
 TEST(RasterSilhouette, FootprintOnlySceneIsMuOnTheSilhouette) {
     const auto model = fm::prepareMeshDrr(fm::test::uvSphereMesh({0, 0, 0}, 12.f, 16, 32), true);
     fm::Scene scene;
-    scene.cameras.push_back(tiltedCamera());
+    scene.cameras.push_back(tiltedRasterCamera());
     scene.objects.push_back({"sphere", std::make_shared<fm::MeshXrayModel>(model, 0.25), {}, true});
     fm::XrayRenderSettings settings;
     settings.footprintOnly = true;
     const fm::Image image = fm::renderView(scene, 0, settings);
-    const fm::Mask traced = fm::renderMeshSilhouette(*model, tiltedCamera());
+    const fm::Mask traced = fm::renderMeshSilhouette(*model, tiltedRasterCamera());
     for (std::size_t i = 0; i < image.pixels.size(); ++i)
         ASSERT_EQ(image.pixels[i], traced.inside[i] ? 0.25f : 0.0f) << i;
 }

@@ -24,7 +24,7 @@ fm::Mesh tetrahedron() {
     return m;
 }
 
-std::string readAll(const std::filesystem::path& p) {
+std::string readText(const std::filesystem::path& p) {
     std::ifstream in(p, std::ios::binary);
     return std::string(std::istreambuf_iterator<char>(in), {});
 }
@@ -40,7 +40,7 @@ TEST(MeshWriter, BinaryPlyHoldsPositionsNormalsAndFaces) {
     const auto dir = fm::test::scratchDir("mesh_writer_ply");
     const fm::Mesh m = tetrahedron();
     fm::writeMesh(m, dir / "t.ply");
-    const std::string bytes = readAll(dir / "t.ply");
+    const std::string bytes = readText(dir / "t.ply");
     const std::string endHeader = "end_header\n";
     const std::size_t body = bytes.find(endHeader);
     ASSERT_NE(body, std::string::npos);
@@ -69,7 +69,7 @@ TEST(MeshWriter, BinaryStlHasOutwardFacetNormals) {
     const auto dir = fm::test::scratchDir("mesh_writer_stl");
     const fm::Mesh m = tetrahedron();
     fm::writeMesh(m, dir / "t.STL");  // extension case does not matter
-    const std::string bytes = readAll(dir / "t.STL");
+    const std::string bytes = readText(dir / "t.STL");
     ASSERT_EQ(bytes.size(), 84u + 4u * 50u);
     EXPECT_EQ(at<std::uint32_t>(bytes, 80), 4u);
     // Facet 3 is the slanted face x + y + z = 1: unit normal (1,1,1)/sqrt(3), outward.
@@ -86,7 +86,7 @@ TEST(MeshWriter, BinaryStlHasOutwardFacetNormals) {
 TEST(MeshWriter, ObjListsVerticesNormalsAndOneBasedFaces) {
     const auto dir = fm::test::scratchDir("mesh_writer_obj");
     fm::writeMesh(tetrahedron(), dir / "t.obj");
-    std::istringstream in(readAll(dir / "t.obj"));
+    std::istringstream in(readText(dir / "t.obj"));
     int v = 0, vn = 0, f = 0;
     std::string line, lastFace;
     while (std::getline(in, line)) {
@@ -114,7 +114,7 @@ TEST(MeshWriter, RefusesUnknownExtensionsAndBadIndicesWithoutTouchingTheTarget) 
         keep << "previous";
     }
     EXPECT_THROW(fm::writeMesh(bad, dir / "keep.ply"), fm::Error);
-    EXPECT_EQ(readAll(dir / "keep.ply"), "previous");
+    EXPECT_EQ(readText(dir / "keep.ply"), "previous");
     EXPECT_THROW(fm::writeMesh(tetrahedron(), dir / "no-such-folder" / "t.ply"), fm::Error);
 }
 

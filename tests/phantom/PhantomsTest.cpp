@@ -12,10 +12,10 @@
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+constexpr double kPiRad = std::numbers::pi;
 constexpr double kMm = 1e-9;  // spacing/extent arithmetic in double precision
 
-double totalMass(const fm::Volume& v) {
+double phantomMass(const fm::Volume& v) {
     double sum = 0.0;
     for (float x : v.values) sum += x;
     return sum * v.spacing.x * v.spacing.y * v.spacing.z;
@@ -68,26 +68,26 @@ TEST(Phantoms, SphereDefaultsAndOptions) {
     EXPECT_EQ(v.dims, glm::ivec3(64));
     EXPECT_EQ(v.meta.units, fm::ValueUnit::Unknown);
     EXPECT_EQ(v.meta.source, "phantom:sphere");
-    EXPECT_NEAR(totalMass(v) / (4.0 / 3.0 * kPi * 8000.0), 1.0, kMassRel);  // radius 20
+    EXPECT_NEAR(phantomMass(v) / (4.0 / 3.0 * kPiRad * 8000.0), 1.0, kMassRel);  // radius 20
     // Centred in the grid (symmetric sampling: the centre of mass is the grid centre).
     EXPECT_NEAR(glm::length(centreOfMass(v) - v.center()), 0.0, 1e-6);
 
     const fm::Volume s = fm::makePhantom("sphere,radius=10,size=48,spacing=0.5");
     EXPECT_EQ(s.dims, glm::ivec3(48));
     EXPECT_NEAR(s.spacing.x, 0.5, kMm);
-    EXPECT_NEAR(totalMass(s) / (4.0 / 3.0 * kPi * 1000.0), 1.0, kMassRel);
+    EXPECT_NEAR(phantomMass(s) / (4.0 / 3.0 * kPiRad * 1000.0), 1.0, kMassRel);
 }
 
 TEST(Phantoms, OtherShapesHaveTheirExactVolumes) {
     // The box is voxelized by exact overlap: its mass is exact up to float storage.
-    EXPECT_NEAR(totalMass(fm::makePhantom("box,extent=10x20x30")) / 6000.0, 1.0, 1e-6);
+    EXPECT_NEAR(phantomMass(fm::makePhantom("box,extent=10x20x30")) / 6000.0, 1.0, 1e-6);
     EXPECT_NEAR(
-        totalMass(fm::makePhantom("box,extent=9.3x17.1x25.5,spacing=1.3")) / (9.3 * 17.1 * 25.5),
+        phantomMass(fm::makePhantom("box,extent=9.3x17.1x25.5,spacing=1.3")) / (9.3 * 17.1 * 25.5),
         1.0, 1e-6);
-    EXPECT_NEAR(totalMass(fm::makePhantom("cylinder,radius=8,height=20")) / (kPi * 64.0 * 20.0),
+    EXPECT_NEAR(phantomMass(fm::makePhantom("cylinder,radius=8,height=20")) / (kPiRad * 64.0 * 20.0),
                 1.0, kMassRel);
     EXPECT_NEAR(
-        totalMass(fm::makePhantom("ellipsoid,axes=20x15x10")) / (4.0 / 3.0 * kPi * 20 * 15 * 10),
+        phantomMass(fm::makePhantom("ellipsoid,axes=20x15x10")) / (4.0 / 3.0 * kPiRad * 20 * 15 * 10),
         1.0, kMassRel);
 }
 

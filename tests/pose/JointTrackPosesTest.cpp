@@ -18,7 +18,7 @@ Mat rx(double d) { return fm::test::rot(0, d); }
 Mat ry(double d) { return fm::test::rot(1, d); }
 Mat rz(double d) { return fm::test::rot(2, d); }
 
-std::string errorOf(const std::string& text) {
+std::string jtsErrorOf(const std::string& text) {
     try {
         fm::parseJointTrackPoses(text, "fem.jts");
     } catch (const fm::Error& e) {
@@ -109,19 +109,19 @@ TEST(JointTrackPoses, WriteThenReadGivesTheSamePoses) {
 }
 
 TEST(JointTrackPoses, BrokenRowsAreRefusedWithFileLineAndField) {
-    EXPECT_EQ(errorOf(kHeader + "1,2,3,4,5,6\n"), "");
-    const std::string count = errorOf(kHeader + "1,2,3,4,5,6\n1,2,3,4,5\n");
+    EXPECT_EQ(jtsErrorOf(kHeader + "1,2,3,4,5,6\n"), "");
+    const std::string count = jtsErrorOf(kHeader + "1,2,3,4,5,6\n1,2,3,4,5\n");
     EXPECT_NE(count.find("fem.jts: line 4"), std::string::npos) << count;
     EXPECT_NE(count.find("expected 6 numbers"), std::string::npos) << count;
-    const std::string word = errorOf(kHeader + "1,2,3,abc,5,6\n");
+    const std::string word = jtsErrorOf(kHeader + "1,2,3,abc,5,6\n");
     EXPECT_NE(word.find("line 3, field 4 (z_rot)"), std::string::npos) << word;
-    const std::string nan = errorOf(kHeader + "1,2,nan,4,5,6\n");
+    const std::string nan = jtsErrorOf(kHeader + "1,2,nan,4,5,6\n");
     EXPECT_NE(nan.find("field 3 (z_tran)"), std::string::npos) << nan;
-    EXPECT_NE(errorOf(kHeader + "1,2,3,4,5,6,7\n").find("got 7"), std::string::npos);
-    EXPECT_NE(errorOf("JT_EULER_123\nx\n").find("JT_EULER_312"), std::string::npos);
-    EXPECT_NE(errorOf("JT_EULER_312\n").find("header"), std::string::npos);
-    EXPECT_NE(errorOf("JT_EULER_312\n1,2,3,4,5,6\n").find("column header"), std::string::npos);
-    EXPECT_NE(errorOf("").find("empty"), std::string::npos);
+    EXPECT_NE(jtsErrorOf(kHeader + "1,2,3,4,5,6,7\n").find("got 7"), std::string::npos);
+    EXPECT_NE(jtsErrorOf("JT_EULER_123\nx\n").find("JT_EULER_312"), std::string::npos);
+    EXPECT_NE(jtsErrorOf("JT_EULER_312\n").find("header"), std::string::npos);
+    EXPECT_NE(jtsErrorOf("JT_EULER_312\n1,2,3,4,5,6\n").find("column header"), std::string::npos);
+    EXPECT_NE(jtsErrorOf("").find("empty"), std::string::npos);
     // NOT_OPTIMIZED rows in either form are frames without a pose.
     const auto p = fm::parseJointTrackPoses(kHeader + "NOT_OPTIMIZED\n 1,2,3,4,5,6,\n", "x");
     ASSERT_EQ(p.frames.size(), 2u);

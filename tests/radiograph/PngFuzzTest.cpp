@@ -19,17 +19,17 @@ namespace {
 
 namespace fs = std::filesystem;
 using fm::test::Bytes;
-constexpr int kCases = 250;  // x 4 files: 1000 cases, well under a second
-constexpr unsigned kSeed = 20261207u;
+constexpr int kPngCases = 250;  // x 4 files: 1000 cases, well under a second
+constexpr unsigned kPngSeed = 20261207u;
 
-enum Kind { Flip, Bytes_, Cut, Length, CompressedData, HeaderSize, kKinds };
-const char* const kKindNames[kKinds] = {
+enum PngKind { PngFlip, PngBytes, PngCut, PngLength, PngCompressedData, PngHeaderSize, kPngKinds };
+const char* const kPngKindNames[kPngKinds] = {
     "bit flips",    "byte changes",          "truncation",
     "chunk length", "IDAT data (CRC fixed)", "IHDR size (CRC fixed)"};
 
 TEST(PngFuzz, DamagedFilesAreRefusedOrIdentical) {
     const fs::path dir = fm::test::scratchDir("png_fuzz");
-    std::mt19937 rng(kSeed);
+    std::mt19937 rng(kPngSeed);
     auto pick = [&](std::size_t n) {
         return std::uniform_int_distribution<std::size_t>(0, n - 1)(rng);
     };
@@ -38,7 +38,7 @@ TEST(PngFuzz, DamagedFilesAreRefusedOrIdentical) {
     specs[1].width = 30, specs[1].height = 20, specs[1].bitDepth = 16, specs[1].interlaced = true;
     specs[2].width = 25, specs[2].height = 17, specs[2].palette = true;
     specs[3].width = 20, specs[3].height = 16, specs[3].channels = 4, specs[3].text = true;
-    int refused[kKinds] = {}, identical[kKinds] = {}, resized = 0;
+    int refused[kPngKinds] = {}, identical[kPngKinds] = {}, resized = 0;
     testing::internal::CaptureStderr();
     for (int s = 0; s < 4; ++s) {
         const fm::test::PngSpec& spec = specs[s];
@@ -52,23 +52,23 @@ TEST(PngFuzz, DamagedFilesAreRefusedOrIdentical) {
         const fm::io::GreyImage reference = fm::io::readPng(original);
         const Bytes bytes = fm::test::readBytes(original);
         const auto chunks = fm::test::pngChunks(bytes);
-        for (int c = 0; c < kCases; ++c) {
+        for (int c = 0; c < kPngCases; ++c) {
             Bytes b = bytes;
-            const Kind kind = static_cast<Kind>(c % kKinds);
+            const PngKind kind = static_cast<PngKind>(c % kPngKinds);
             const fm::test::PngChunk& chunk = chunks[pick(chunks.size())];
             switch (kind) {
-                case Flip:
+                case PngFlip:
                     for (std::size_t f = 0, n = 1 + pick(3); f < n; ++f)
                         b[pick(b.size())] ^= static_cast<std::uint8_t>(1u << pick(8));
                     break;
-                case Bytes_:
+                case PngBytes:
                     for (std::size_t f = 0, n = 1 + pick(6); f < n; ++f)
                         b[8 + pick(b.size() - 8)] = static_cast<std::uint8_t>(pick(256));
                     break;
-                case Cut:
+                case PngCut:
                     b.resize(pick(b.size()));
                     break;
-                case Length: {
+                case PngLength: {
                     const std::uint32_t length =
                         chunk.length +
                         static_cast<std::uint32_t>(
@@ -79,7 +79,7 @@ TEST(PngFuzz, DamagedFilesAreRefusedOrIdentical) {
                         b[chunk.at + i] = static_cast<std::uint8_t>(length >> (24 - 8 * i));
                     break;
                 }
-                case CompressedData: {
+                case PngCompressedData: {
                     const fm::test::PngChunk* idat = nullptr;
                     for (const auto& k : chunks)
                         if (k.type == "IDAT") idat = &k;
@@ -99,17 +99,17 @@ TEST(PngFuzz, DamagedFilesAreRefusedOrIdentical) {
             fm::test::writeBytes(p, b);
             try {
                 const fm::io::GreyImage g = fm::io::readPng(p);
-                if (kind == HeaderSize && (g.image.width != reference.image.width ||
+                if (kind == PngHeaderSize && (g.image.width != reference.image.width ||
                                            g.image.height != reference.image.height)) {
                     ASSERT_EQ(g.image.pixels.size(), std::size_t(g.image.width) * g.image.height);
                     ++resized;
                     continue;
                 }
                 ASSERT_EQ(g.image.width, reference.image.width)
-                    << kKindNames[kind] << ", file " << s << ", case " << c;
+                    << kPngKindNames[kind] << ", file " << s << ", case " << c;
                 ASSERT_EQ(g.image.height, reference.image.height);
                 ASSERT_TRUE(g.image.pixels == reference.image.pixels)
-                    << "garbage accepted: " << kKindNames[kind] << ", file " << s << ", case " << c;
+                    << "garbage accepted: " << kPngKindNames[kind] << ", file " << s << ", case " << c;
                 ++identical[kind];
             } catch (const fm::Error& e) {
                 ASSERT_NE(std::string(e.what()).find("m.png'"), std::string::npos) << e.what();
@@ -120,15 +120,15 @@ TEST(PngFuzz, DamagedFilesAreRefusedOrIdentical) {
         }
     }
     EXPECT_EQ(testing::internal::GetCapturedStderr(), "");
-    for (int k = 0; k < kKinds; ++k) {
-        std::cout << "[ fuzz     ] png " << kKindNames[k] << ": " << refused[k] << " refused, "
+    for (int k = 0; k < kPngKinds; ++k) {
+        std::cout << "[ fuzz     ] png " << kPngKindNames[k] << ": " << refused[k] << " refused, "
                   << identical[k] << " identical"
-                  << (k == HeaderSize ? ", " + std::to_string(resized) + " read at their new size"
+                  << (k == PngHeaderSize ? ", " + std::to_string(resized) + " read at their new size"
                                       : "")
                   << "\n";
-        EXPECT_GT(refused[k], 0) << kKindNames[k];
+        EXPECT_GT(refused[k], 0) << kPngKindNames[k];
     }
-    EXPECT_EQ(identical[Cut], 0);
+    EXPECT_EQ(identical[PngCut], 0);
 }
 
 }  // namespace

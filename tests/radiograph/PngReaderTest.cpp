@@ -16,7 +16,7 @@ namespace {
 namespace fs = std::filesystem;
 using fm::test::Bytes;
 
-std::string errorOf(const fs::path& p) {
+std::string pngErrorOf(const fs::path& p) {
     try {
         fm::io::readPng(p);
     } catch (const fm::Error& e) {
@@ -105,22 +105,22 @@ TEST(PngReader, HeaderPromisingTooMuchIsRefusedBeforeDecoding) {
     const fs::path dir = fm::test::scratchDir("png_bombs");
     const Bytes someRows = fm::test::zlibCompress(Bytes(16385 * 64, 0));
     fm::test::writeBytes(dir / "huge.png", fm::test::handMadePng(32768, 32768, someRows));
-    const std::string huge = errorOf(dir / "huge.png");
+    const std::string huge = pngErrorOf(dir / "huge.png");
     EXPECT_NE(huge.find("'" + (dir / "huge.png").string() + "'"), std::string::npos) << huge;
     EXPECT_NE(huge.find("more than 268435456 pixels"), std::string::npos) << huge;
     fm::test::writeBytes(dir / "side.png", fm::test::handMadePng(40000, 2, someRows));
-    EXPECT_NE(errorOf(dir / "side.png").find("outside 1..32768"), std::string::npos)
-        << errorOf(dir / "side.png");
+    EXPECT_NE(pngErrorOf(dir / "side.png").find("outside 1..32768"), std::string::npos)
+        << pngErrorOf(dir / "side.png");
     fm::test::writeBytes(dir / "bomb.png", fm::test::handMadePng(16384, 16384, someRows));
-    const std::string bomb = errorOf(dir / "bomb.png");
+    const std::string bomb = pngErrorOf(dir / "bomb.png");
     EXPECT_NE(bomb.find("cannot come from"), std::string::npos) << bomb;
     EXPECT_NE(bomb.find("1032:1"), std::string::npos) << bomb;
     // 16 bits per sample count double.
     fm::test::writeBytes(
         dir / "bomb16.png",
         fm::test::handMadePng(4096, 4096, fm::test::zlibCompress(Bytes(40000, 0)), 16));
-    EXPECT_NE(errorOf(dir / "bomb16.png").find("cannot come from"), std::string::npos)
-        << errorOf(dir / "bomb16.png");
+    EXPECT_NE(pngErrorOf(dir / "bomb16.png").find("cannot come from"), std::string::npos)
+        << pngErrorOf(dir / "bomb16.png");
 }
 
 // The deflate bound is not too tight: an all-zero image, deflate's best case, is read.
@@ -161,14 +161,14 @@ Original writeOriginal(const std::string& name) {
 
 std::string errorOfBytes(const Original& o, const Bytes& b, const std::string& name) {
     fm::test::writeBytes(o.dir / name, b);
-    return errorOf(o.dir / name);
+    return pngErrorOf(o.dir / name);
 }
 
 // One flipped bit anywhere in a chunk is refused: stb ignored every CRC and the Adler-32 and
 // returned changed pixels.
 TEST(PngReader, FlippedBitsAreRefused) {
     const Original o = writeOriginal("png_flips");
-    ASSERT_EQ(errorOf(o.dir / "o.png"), "");
+    ASSERT_EQ(pngErrorOf(o.dir / "o.png"), "");
     const fm::test::PngChunk& idat = o.find("IDAT");
     const fm::test::PngChunk& text = o.find("tEXt");
     // A payload byte of the image data: its chunk's CRC.
@@ -243,7 +243,7 @@ TEST(PngReader, TruncatedMissingAndExtraDataAreRefused) {
     // Not a PNG at all, missing, empty.
     EXPECT_NE(errorOfBytes(o, {'h', 'e', 'l', 'l', 'o'}, "text.png").find("not a PNG file"),
               std::string::npos);
-    EXPECT_NE(errorOf(o.dir / "none.png").find("none.png"), std::string::npos);
+    EXPECT_NE(pngErrorOf(o.dir / "none.png").find("none.png"), std::string::npos);
     EXPECT_NE(errorOfBytes(o, {}, "empty.png"), "");
 }
 

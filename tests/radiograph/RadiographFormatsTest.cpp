@@ -14,7 +14,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string errorOf(const fs::path& p) {
+std::string formatErrorOf(const fs::path& p) {
     try {
         fm::readRadiograph(p);
     } catch (const fm::Error& e) {
@@ -44,17 +44,17 @@ TEST(RadiographFormats, BmpIsReadAsGreyAndRefusedWhenShort) {
     fm::test::Bytes b = fm::test::readBytes(dir / "c.bmp");
     b.resize(b.size() - 40);
     fm::test::writeBytes(dir / "short.bmp", b);
-    const std::string e = errorOf(dir / "short.bmp");
+    const std::string e = formatErrorOf(dir / "short.bmp");
     EXPECT_NE(e.find("'" + (dir / "short.bmp").string() + "': truncated BMP"), std::string::npos)
         << e;
     // A header claiming 40000 columns.
     b = fm::test::readBytes(dir / "c.bmp");
     b[18] = 0x40, b[19] = 0x9C;
     fm::test::writeBytes(dir / "wide.bmp", b);
-    EXPECT_NE(errorOf(dir / "wide.bmp").find("outside 1..32768"), std::string::npos)
-        << errorOf(dir / "wide.bmp");
+    EXPECT_NE(formatErrorOf(dir / "wide.bmp").find("outside 1..32768"), std::string::npos)
+        << formatErrorOf(dir / "wide.bmp");
     fm::test::writeBytes(dir / "text.bmp", {'h', 'i'});
-    EXPECT_NE(errorOf(dir / "text.bmp").find("not a BMP file"), std::string::npos);
+    EXPECT_NE(formatErrorOf(dir / "text.bmp").find("not a BMP file"), std::string::npos);
 }
 
 TEST(RadiographFormats, ExtensionsChooseTheReader) {
@@ -70,12 +70,12 @@ TEST(RadiographFormats, ExtensionsChooseTheReader) {
     EXPECT_NEAR(fm::readRadiograph(dir / "f.jpeg").image.at(5, 5), 200.0f, 1.0f);
     // A PNG's bytes under a JPEG's name: the JPEG reader says it is not one.
     fs::copy_file(dir / "upper.PNG", dir / "png.jpg");
-    EXPECT_NE(errorOf(dir / "png.jpg").find("png.jpg'"), std::string::npos)
-        << errorOf(dir / "png.jpg");
+    EXPECT_NE(formatErrorOf(dir / "png.jpg").find("png.jpg'"), std::string::npos)
+        << formatErrorOf(dir / "png.jpg");
     // stb read anything it could sniff; now other formats are refused by name.
     fs::copy_file(dir / "upper.PNG", dir / "x.gif");
-    EXPECT_NE(errorOf(dir / "x.gif").find("unknown radiograph format '.gif'"), std::string::npos)
-        << errorOf(dir / "x.gif");
+    EXPECT_NE(formatErrorOf(dir / "x.gif").find("unknown radiograph format '.gif'"), std::string::npos)
+        << formatErrorOf(dir / "x.gif");
 }
 
 
@@ -86,16 +86,16 @@ TEST(RadiographFormats, AFolderOrADeviceIsNamedAsSuch) {
     for (const char* extension : {".tif", ".png", ".jpg", ".bmp"}) {
         const fs::path folder = dir / (std::string("folder") + extension);
         fs::create_directories(folder);
-        std::string e = errorOf(folder);
+        std::string e = formatErrorOf(folder);
         EXPECT_NE(e.find("is a folder, not a file"), std::string::npos) << extension << ": " << e;
         EXPECT_NE(e.find(folder.filename().string()), std::string::npos) << e;
         const fs::path device = dir / (std::string("device") + extension);
         fs::remove(device);
         fs::create_symlink("/dev/zero", device);
-        e = errorOf(device);
+        e = formatErrorOf(device);
         EXPECT_NE(e.find("not a regular file"), std::string::npos) << extension << ": " << e;
         EXPECT_EQ(e.find("no such file"), std::string::npos) << e;
-        e = errorOf(dir / (std::string("missing") + extension));
+        e = formatErrorOf(dir / (std::string("missing") + extension));
         EXPECT_NE(e.find("not found"), std::string::npos) << extension << ": " << e;
     }
 }

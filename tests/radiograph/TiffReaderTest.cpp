@@ -27,7 +27,7 @@ void writeBytes(const fs::path& p, const std::vector<std::uint8_t>& b) {
     std::ofstream(p, std::ios::binary).write(reinterpret_cast<const char*>(b.data()), static_cast<std::streamsize>(b.size()));
 }
 
-std::string errorOf(const fs::path& p) {
+std::string tiffErrorOf(const fs::path& p) {
     try {
         fm::io::readTiff(p);
     } catch (const fm::Error& e) {
@@ -99,13 +99,13 @@ TEST(TiffReader, BrokenFilesAreRefusedNamingTheFile) {
     mixed.pages = 2;
     mixed.pageWidths = {7, 9};
     fm::test::writeTestTiff(dir / "mixed.tif", mixed);
-    EXPECT_NE(errorOf(dir / "mixed.tif").find("page 2 is 9 x 5"), std::string::npos) << errorOf(dir / "mixed.tif");
+    EXPECT_NE(tiffErrorOf(dir / "mixed.tif").find("page 2 is 9 x 5"), std::string::npos) << tiffErrorOf(dir / "mixed.tif");
     // Sizes beyond the limit are refused from the header, before any allocation.
     writeBytes(dir / "huge.tif", fm::test::handMadeTiff(100000, 100000, 16));
-    EXPECT_NE(errorOf(dir / "huge.tif").find("outside 1..32768"), std::string::npos) << errorOf(dir / "huge.tif");
+    EXPECT_NE(tiffErrorOf(dir / "huge.tif").find("outside 1..32768"), std::string::npos) << tiffErrorOf(dir / "huge.tif");
     // Truncated pixel data, uncompressed and LZW.
     writeBytes(dir / "short.tif", fm::test::handMadeTiff(64, 64, 100));
-    EXPECT_NE(errorOf(dir / "short.tif").find("short.tif"), std::string::npos);
+    EXPECT_NE(tiffErrorOf(dir / "short.tif").find("short.tif"), std::string::npos);
     TiffSpec lzw;
     lzw.width = 200, lzw.height = 100, lzw.compression = 5, lzw.rowsPerStrip = 100;
     fm::test::writeTestTiff(dir / "lzw.tif", lzw);
@@ -115,13 +115,13 @@ TEST(TiffReader, BrokenFilesAreRefusedNamingTheFile) {
         b.resize(b.size() / 2);
         writeBytes(dir / "lzw_cut.tif", b);
     }
-    EXPECT_NE(errorOf(dir / "lzw_cut.tif").find("lzw_cut.tif"), std::string::npos);
+    EXPECT_NE(tiffErrorOf(dir / "lzw_cut.tif").find("lzw_cut.tif"), std::string::npos);
     // Not a TIFF, missing, empty.
     writeBytes(dir / "text.tif", {'h', 'e', 'l', 'l', 'o'});
-    EXPECT_NE(errorOf(dir / "text.tif").find("text.tif"), std::string::npos);
-    EXPECT_NE(errorOf(dir / "none.tif").find("none.tif"), std::string::npos);
+    EXPECT_NE(tiffErrorOf(dir / "text.tif").find("text.tif"), std::string::npos);
+    EXPECT_NE(tiffErrorOf(dir / "none.tif").find("none.tif"), std::string::npos);
     writeBytes(dir / "empty.tif", {});
-    EXPECT_NE(errorOf(dir / "empty.tif"), "");
+    EXPECT_NE(tiffErrorOf(dir / "empty.tif"), "");
 }
 
 TEST(TiffReader, ColourIsRefused) {
@@ -136,7 +136,7 @@ TEST(TiffReader, ColourIsRefused) {
     std::vector<std::uint8_t> row(12, 9);
     for (int y = 0; y < 2; ++y) TIFFWriteScanline(t, row.data(), y, 0);
     TIFFClose(t);
-    EXPECT_NE(errorOf(p).find("greyscale"), std::string::npos) << errorOf(p);
+    EXPECT_NE(tiffErrorOf(p).find("greyscale"), std::string::npos) << tiffErrorOf(p);
 }
 
 TEST(Radiograph, TiffPagesAndPngAreImagesOfStoredValues) {
@@ -211,7 +211,7 @@ TEST(TiffReader, WarningsAboutPixelDataAreErrors) {
     auto b = bytesOf(dir / "packbits.tif");
     b[firstStrip(dir / "packbits.tif")] = 0x7F;  // a literal run of 128 bytes in a 7-byte row
     writeBytes(dir / "run.tif", b);
-    std::string e = errorOf(dir / "run.tif");
+    std::string e = tiffErrorOf(dir / "run.tif");
     EXPECT_NE(e.find("run.tif"), std::string::npos) << e;
     EXPECT_NE(e.find("corrupt image data"), std::string::npos) << e;
     EXPECT_NE(e.find("PackBitsDecode"), std::string::npos) << e;
@@ -251,7 +251,7 @@ TEST(TiffReader, WarningsAboutPixelDataAreErrors) {
     b = bytesOf(dir / "predictor.tif");
     b[ifdEntry(b, 317) + 4] = 2;  // count 2
     writeBytes(dir / "predictor_count.tif", b);
-    e = errorOf(dir / "predictor_count.tif");
+    e = tiffErrorOf(dir / "predictor_count.tif");
     EXPECT_NE(e.find("corrupt directory"), std::string::npos) << e;
     EXPECT_NE(e.find("Predictor"), std::string::npos) << e;
 }

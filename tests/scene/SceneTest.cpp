@@ -19,7 +19,7 @@ namespace {
 using fm::RigidTransform;
 
 // Rotations built from a few sines and cosines: products stay within a few ulps of exact.
-constexpr double kExactTol = 1e-12;
+constexpr double kSceneExactTol = 1e-12;
 // Line integrals traced in two frames differ only by rounding of the ray set-up (double) and the
 // float image: relative 1e-5 of the largest value is far below one voxel's contribution.
 constexpr double kFrameChangeRelTol = 1e-5;
@@ -29,7 +29,7 @@ RigidTransform someTransform() {
            RigidTransform::translate({5.0, -7.0, 11.0});
 }
 
-void expectNear(const glm::dvec3& a, const glm::dvec3& b, double tol) {
+void expectNearPoint(const glm::dvec3& a, const glm::dvec3& b, double tol) {
     EXPECT_NEAR(a.x, b.x, tol);
     EXPECT_NEAR(a.y, b.y, tol);
     EXPECT_NEAR(a.z, b.z, tol);
@@ -38,9 +38,9 @@ void expectNear(const glm::dvec3& a, const glm::dvec3& b, double tol) {
 TEST(RigidTransform, RotationAboutAxisThroughPivot) {
     // 90 deg about +z through (1, 0, 0): (2, 0, 0) -> (1, 1, 0), the pivot stays.
     const RigidTransform r = fm::rotationAbout({0.0, 0.0, 2.0}, 90.0, {1.0, 0.0, 0.0});
-    expectNear(r.applyToPoint({2.0, 0.0, 0.0}), {1.0, 1.0, 0.0}, kExactTol);
-    expectNear(r.applyToPoint({1.0, 0.0, 0.0}), {1.0, 0.0, 0.0}, kExactTol);
-    expectNear(r.applyToVector({0.0, 1.0, 0.0}), {-1.0, 0.0, 0.0}, kExactTol);
+    expectNearPoint(r.applyToPoint({2.0, 0.0, 0.0}), {1.0, 1.0, 0.0}, kSceneExactTol);
+    expectNearPoint(r.applyToPoint({1.0, 0.0, 0.0}), {1.0, 0.0, 0.0}, kSceneExactTol);
+    expectNearPoint(r.applyToVector({0.0, 1.0, 0.0}), {-1.0, 0.0, 0.0}, kSceneExactTol);
     EXPECT_NO_THROW(r.validate("r"));
 }
 
@@ -49,12 +49,12 @@ TEST(RigidTransform, InverseAndCompositionFollowTheFrameNames) {
     const RigidTransform bFromC = fm::rotationAbout({0.0, 1.0, 0.0}, -63.0, {0.0, 0.0, 9.0});
     const RigidTransform aFromC = aFromB * bFromC;
     const glm::dvec3 pC{3.0, -2.0, 8.0};
-    expectNear(aFromC.applyToPoint(pC), aFromB.applyToPoint(bFromC.applyToPoint(pC)), kExactTol);
-    expectNear(aFromB.inverse().applyToPoint(aFromB.applyToPoint(pC)), pC, kExactTol);
+    expectNearPoint(aFromC.applyToPoint(pC), aFromB.applyToPoint(bFromC.applyToPoint(pC)), kSceneExactTol);
+    expectNearPoint(aFromB.inverse().applyToPoint(aFromB.applyToPoint(pC)), pC, kSceneExactTol);
     const RigidTransform id = aFromC.inverse() * aFromC;
     for (int c = 0; c < 3; ++c)
-        for (int r = 0; r < 3; ++r) EXPECT_NEAR(id.rotation[c][r], c == r ? 1.0 : 0.0, kExactTol);
-    expectNear(id.translation, glm::dvec3(0.0), kExactTol);
+        for (int r = 0; r < 3; ++r) EXPECT_NEAR(id.rotation[c][r], c == r ? 1.0 : 0.0, kSceneExactTol);
+    expectNearPoint(id.translation, glm::dvec3(0.0), kSceneExactTol);
 }
 
 TEST(RigidTransform, RowMajorMatrixRoundTripAndLayout) {
@@ -234,10 +234,10 @@ TEST(Pose2011Parameterization, SearchPointsMoveAsRegistrationDoes) {
     const fm::SceneParams p = param.fromSearchPoint(start.toArray(), point);
     const fm::Pose expected =
         fm::poseFromSearchPoint(start, fm::sceneGeometry(start, setup, center), point);
-    for (int i = 0; i < 6; ++i) EXPECT_NEAR(p[i], expected.toArray()[i], kExactTol);
-    EXPECT_NEAR(p[3], -175.0, kExactTol);  // azimuth wraps
+    for (int i = 0; i < 6; ++i) EXPECT_NEAR(p[i], expected.toArray()[i], kSceneExactTol);
+    EXPECT_NEAR(p[3], -175.0, kSceneExactTol);  // azimuth wraps
     const fm::SceneParams zero = param.fromSearchPoint(start.toArray(), {});
-    for (int i = 0; i < 6; ++i) EXPECT_NEAR(zero[i], start.toArray()[i], kExactTol);
+    for (int i = 0; i < 6; ++i) EXPECT_NEAR(zero[i], start.toArray()[i], kSceneExactTol);
     EXPECT_STREQ(param.describe()[3].name, "azimuth");
 }
 

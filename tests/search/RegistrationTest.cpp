@@ -47,7 +47,7 @@ Image render(const ProjectionGeometry& g, int threads = 0) {
     return renderDrr(*knee().prepared, g, o);
 }
 
-void expectNear(const glm::dvec3& a, const glm::dvec3& b, double tol) {
+void expectNearPoint(const glm::dvec3& a, const glm::dvec3& b, double tol) {
     EXPECT_NEAR(a.x, b.x, tol);
     EXPECT_NEAR(a.y, b.y, tol);
     EXPECT_NEAR(a.z, b.z, tol);
@@ -79,10 +79,10 @@ TEST(FixedCamera2011Parameterization, ZeroPoseIsTheGivenGeometryAndMovesLikeTheS
     const FixedCamera2011Parameterization fixed(scene.geometry(Pose{}), setup, center);
     for (const Pose& p : {Pose{}, parsePose("3,-2,5,20,-10,7"), parsePose("-8,1,0,-95,45,-30")}) {
         const ProjectionGeometry a = scene.geometry(p), b = fixed.geometry(p);
-        expectNear(a.source, b.source, kGeometryToleranceMm);
-        expectNear(a.detector.origin, b.detector.origin, kGeometryToleranceMm);
-        expectNear(a.detector.u, b.detector.u, kGeometryToleranceMm);
-        expectNear(a.detector.v, b.detector.v, kGeometryToleranceMm);
+        expectNearPoint(a.source, b.source, kGeometryToleranceMm);
+        expectNearPoint(a.detector.origin, b.detector.origin, kGeometryToleranceMm);
+        expectNearPoint(a.detector.u, b.detector.u, kGeometryToleranceMm);
+        expectNearPoint(a.detector.v, b.detector.v, kGeometryToleranceMm);
     }
 }
 

@@ -42,7 +42,7 @@ struct KneeScene {
     }
 };
 
-const KneeScene& knee() {
+const KneeScene& kneeScene() {
     static const KneeScene k;
     return k;
 }
@@ -63,7 +63,7 @@ SceneParams offset(const SceneParams& p, const SceneParams& d) {
 }
 
 TEST(SceneRegistration, CostOfTwoViewsIsTheSumOfTheirCosts) {
-    const KneeScene& k = knee();
+    const KneeScene& k = kneeScene();
     const RegistrationSettings s = quickSettings();
     const Registration both(k.scene, k.parameterization, k.views({0, 1}), s);
     const Registration first(k.scene, k.parameterization, k.views({0}), s);
@@ -77,7 +77,7 @@ TEST(SceneRegistration, CostOfTwoViewsIsTheSumOfTheirCosts) {
 }
 
 TEST(SceneRegistration, ValidPixelMasksLimitWhatIsCompared) {
-    const KneeScene& k = knee();
+    const KneeScene& k = kneeScene();
     const RegistrationSettings s = quickSettings();
     std::vector<RegistrationView> views = k.views({0});
     const Registration plain(k.scene, k.parameterization, views, s);
@@ -105,7 +105,7 @@ TEST(SceneRegistration, ValidPixelMasksLimitWhatIsCompared) {
 }
 
 TEST(SceneRegistration, RecoversAnObjectPoseFromOneAndFromTwoViews) {
-    const KneeScene& k = knee();
+    const KneeScene& k = kneeScene();
     const SceneParams start = offset(k.truth, {3, -2.5, 6, 3, -2, 2.5});
     const auto* p = static_cast<const ObjectPoseParameterization*>(k.parameterization.get());
     const auto targets = boneTargetPoints(k.volume, 300.0, 300);

@@ -14,7 +14,7 @@ using fm::test::analyticVolume;
 
 namespace {
 
-SliceSetup setup(int w, int h, double su, double sv, double t = 0.0) {
+SliceSetup samplerSetup(int w, int h, double su, double sv, double t = 0.0) {
     SliceSetup s;
     s.pixels = {w, h};
     s.spacingMm = {su, sv};
@@ -42,7 +42,7 @@ TEST(SliceSampler, TrilinearReproducesALinearFunctionToRounding) {
     auto volume = analyticVolume({20, 24, 18}, {1.5, 1.2, 2.0}, {-10, 5, 3}, obliqueDirection(), f);
     const auto prepared = prepareSliceVolume(volume, false);
     // A small slice around the centre at an oblique pose: inside the voxel-centre hull.
-    const SliceGeometry g = sliceGeometry({{1, -2, 1.5}, 37, 21, 13}, setup(21, 17, 0.6, 0.7),
+    const SliceGeometry g = sliceGeometry({{1, -2, 1.5}, 37, 21, 13}, samplerSetup(21, 17, 0.6, 0.7),
                                           volume->center());
     const SampledSlice s = sampleSlice(*prepared, g, SliceInterpolation::Trilinear);
     ASSERT_EQ(s.dataPixels(), 21u * 17u);
@@ -56,7 +56,7 @@ TEST(SliceSampler, APlaneThroughVoxelCentresReproducesTheVoxels) {
     auto volume = randomVolume(dims, 3);
     const auto prepared = prepareSliceVolume(volume, true);
     // Zero pose: coronal plane through the centre voxel row j = 5; u = +i, v = -k.
-    const SliceGeometry g = sliceGeometry(Pose{}, setup(15, 17, 1, 1), volume->center());
+    const SliceGeometry g = sliceGeometry(Pose{}, samplerSetup(15, 17, 1, 1), volume->center());
     for (SliceInterpolation interp : {SliceInterpolation::Trilinear, SliceInterpolation::CubicBSpline}) {
         const SampledSlice s = sampleSlice(*prepared, g, interp);
         EXPECT_EQ(s.dataPixels(), std::size_t(dims.x * dims.z));
@@ -76,7 +76,7 @@ TEST(SliceSampler, APlaneThroughVoxelCentresReproducesTheVoxels) {
 TEST(SliceSampler, SeenFromBehindTheSliceIsMirrored) {
     auto volume = randomVolume({12, 10, 14}, 5);
     const auto prepared = prepareSliceVolume(volume, true);
-    const SliceSetup st = setup(19, 23, 0.8, 0.9);
+    const SliceSetup st = samplerSetup(19, 23, 0.8, 0.9);
     const Pose a{{0.5, -0.3, 0.7}, 0, 12, 0};
     Pose b = a;
     b.azimuthDeg = 180;
@@ -104,7 +104,7 @@ TEST(SliceSampler, APlaneOnAFaceSamplesTheFaceAndOneBeyondItNothing) {
     // Coronal plane on the front face j = -0.5 (the box edge, half a voxel before row 0).
     Pose face;
     face.offset.y = volume->center().y - (volume->origin.y - 0.5);
-    const SliceGeometry g = sliceGeometry(face, setup(9, 11, 1, 1), volume->center());
+    const SliceGeometry g = sliceGeometry(face, samplerSetup(9, 11, 1, 1), volume->center());
     const SampledSlice s = sampleSlice(*prepared, g, SliceInterpolation::Trilinear);
     EXPECT_EQ(s.dataPixels(), std::size_t(dims.x * dims.z));
     for (int r = 0; r < 11; ++r)
@@ -118,7 +118,7 @@ TEST(SliceSampler, APlaneOnAFaceSamplesTheFaceAndOneBeyondItNothing) {
     Pose beyond = face;
     beyond.offset.y += 1e-6;
     const SampledSlice none =
-        sampleSlice(*prepared, sliceGeometry(beyond, setup(9, 11, 1, 1), volume->center()),
+        sampleSlice(*prepared, sliceGeometry(beyond, samplerSetup(9, 11, 1, 1), volume->center()),
                     SliceInterpolation::Trilinear);
     EXPECT_TRUE(none.empty());
 }
@@ -133,7 +133,7 @@ TEST(SliceSampler, APlaneGrazingAnEdgeSamplesOnlyThatEdge) {
     Pose p;
     p.azimuthDeg = -45;
     p.offset = volume->center() - edge;
-    const SliceGeometry g = sliceGeometry(p, setup(7, 12, 1, 1), volume->center());
+    const SliceGeometry g = sliceGeometry(p, samplerSetup(7, 12, 1, 1), volume->center());
     const SampledSlice s = sampleSlice(*prepared, g, SliceInterpolation::Trilinear);
     // Column 3 lies on the edge; rows 2..9 fall within z = -0.5 .. 7.5 (8 voxels).
     EXPECT_EQ(s.dataPixels(), 8u);
@@ -150,7 +150,7 @@ TEST(SliceSampler, APlaneGrazingAnEdgeSamplesOnlyThatEdge) {
 TEST(SliceSampler, APlaneMissingTheVolumeIsFullyMaskedNotNan) {
     auto volume = randomVolume({8, 8, 8}, 13);
     const auto prepared = prepareSliceVolume(volume, true);
-    const SliceGeometry g = sliceGeometry({{0, 500, 0}, 10, 20, 30}, setup(32, 32, 1, 1, 3.0),
+    const SliceGeometry g = sliceGeometry({{0, 500, 0}, 10, 20, 30}, samplerSetup(32, 32, 1, 1, 3.0),
                                           volume->center());
     for (SliceInterpolation interp : {SliceInterpolation::Trilinear, SliceInterpolation::CubicBSpline}) {
         const SampledSlice s = sampleSlice(*prepared, g, interp);
@@ -168,7 +168,7 @@ TEST(SliceSampler, ThicknessAveragesABoxProfileAcrossThePlane) {
                                      return std::abs(p.y - 10.0) <= 2.0 ? 100.0 : 0.0;
                                  });
     const auto prepared = prepareSliceVolume(volume, false);
-    const SliceGeometry thin = sliceGeometry(Pose{}, setup(4, 4, 1, 1, 0.0), volume->center());
+    const SliceGeometry thin = sliceGeometry(Pose{}, samplerSetup(4, 4, 1, 1, 0.0), volume->center());
     SliceGeometry thick = thin;
     thick.thicknessMm = 10.0;
     const SampledSlice a = sampleSlice(*prepared, thin, SliceInterpolation::Trilinear);
@@ -207,7 +207,7 @@ TEST(SliceSampler, ColumnRunsAreExactlyTheColumnsInsideTheBox) {
 TEST(SliceSampler, CubicNeedsPreparedCoefficients) {
     auto volume = randomVolume({4, 4, 4}, 1);
     const auto prepared = prepareSliceVolume(volume, false);
-    const SliceGeometry g = sliceGeometry(Pose{}, setup(4, 4, 1, 1), volume->center());
+    const SliceGeometry g = sliceGeometry(Pose{}, samplerSetup(4, 4, 1, 1), volume->center());
     EXPECT_THROW(sampleSlice(*prepared, g, SliceInterpolation::CubicBSpline), Error);
     EXPECT_THROW(parseSliceInterpolation("quintic"), Error);
     EXPECT_EQ(parseSliceInterpolation("linear"), SliceInterpolation::Trilinear);
