@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Parameters that used to be taken silently are refused, naming the option and the limit:
 # --budget 0, --polish-budget -1, --seed -1 (would wrap), --start / --pose / --distance / --film
-# 1e308, --component-near nan, --mode approx (removed), a geometry JSON with a
+# 1e308, --component-near nan, --mode approx (removed), --size out of range, a geometry JSON with a
 # duplicate key or a source at 1e308. No output file is written for any of them.
 set -uo pipefail
 FM=$1
@@ -28,6 +28,10 @@ refused "source-to-isocenter distance must be positive and at most" "$FM" drr --
 refused "film width must be positive and at most" "$FM" drr --film 1e308x1e308 --out "$OUT/d.png"
 refused "--mode approx was removed" "$FM" drr --mode approx --out "$OUT/d.png"
 refused "--voxels: int8 not in {auto,float}" "$FM" drr --voxels int8 --out "$OUT/d.png"
+# One --size parser (cli/ValueChecks.h) with each command's limit.
+refused '--size "10x10": expected WIDTHxHEIGHT, whole numbers of pixels 16..8192' "$FM" screenshot --size 10x10 --out "$OUT/s.png"
+refused '--size "5000x64": expected WIDTHxHEIGHT, whole numbers of pixels 16..4096' "$FM" simulate --volume phantom:knee --labels phantom:knee --bone femur --motion rotate:axis=x,angle=0:5 --size 5000x64 --out "$OUT/sim"
+refused '--size "64x64x2"' "$FM" screenshot --size 64x64x2 --out "$OUT/s.png"
 # The box phantom holds whole numbers: stored as int16 by default, as float with --voxels float;
 # in raw values both stores give the same bytes, in either walk.
 for walk in dense bricks; do

@@ -13,7 +13,7 @@
 #     jobs) writes byte-identical .tra files and CSVs (without the time column) without mpirun
 #     and on 1, 2 and 3 ranks; a bone whose .tra cannot be written fails its jobs alone.
 # Usage: mpi_runs_test.sh MPI_FOUND MPIEXEC TEST_BINARY FLUOROMATCH LSAN_SUPPRESSIONS
-# FM_MPI_RANKS: the rank counts (default "1 2 3"; the sanitizer build runs "1 3":
+# FM_MPI_RANKS: the rank counts (default "1 2 3"; the sanitizer build runs "3":
 # tests/distributed/extra.cmake); the job runner's tests run on those above 1.
 # Skips (77) only when the build has no MPI, and never under CI=true (CI installs MPI).
 set -uo pipefail
