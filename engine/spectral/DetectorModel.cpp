@@ -24,6 +24,31 @@ void validateDetectorSettings(const DetectorSettings& s) {
         throw Error("electronic noise is in counts: give the photons per pixel too");
 }
 
+namespace {
+
+// One row of the separable blur: out[i] = sum_k kernel[k] * in[clamp(i + k - radius)], the taps
+// added in the same order everywhere; the clamp is needed only within radius of either end (the
+// interior, most of a row, reads straight through).
+void blurRow(const float* in, float* out, int n, const std::vector<double>& kernel, int radius) {
+    const auto tap = [&](int i) {
+        double v = 0.0;
+        for (int k = -radius; k <= radius; ++k) v += kernel[k + radius] * in[std::clamp(i + k, 0, n - 1)];
+        return static_cast<float>(v);
+    };
+    const int interiorEnd = n - radius;
+    int i = 0;
+    for (; i < std::min(radius, n); ++i) out[i] = tap(i);
+    for (; i < interiorEnd; ++i) {
+        const float* window = in + (i - radius);
+        double v = 0.0;
+        for (int k = 0; k <= 2 * radius; ++k) v += kernel[k] * window[k];
+        out[i] = static_cast<float>(v);
+    }
+    for (; i < n; ++i) out[i] = tap(i);
+}
+
+}  // namespace
+
 Image gaussianBlur(const Image& image, double sigma, int threads) {
     if (sigma <= 0.0) return image;
     const int radius = static_cast<int>(std::ceil(3.0 * sigma));
@@ -32,22 +57,23 @@ Image gaussianBlur(const Image& image, double sigma, int threads) {
     for (int k = -radius; k <= radius; ++k) sum += kernel[k + radius] = std::exp(-0.5 * k * k / (sigma * sigma));
     for (double& k : kernel) k /= sum;
     const int w = image.width, h = image.height;
-    Image across = image, out = image;
+    Image across(w, h), out(w, h);
+    across.spacing = out.spacing = image.spacing;
     parallelFor(h, threads, [&](int begin, int end) {
-        for (int r = begin; r < end; ++r)
-            for (int c = 0; c < w; ++c) {
-                double v = 0.0;
-                for (int k = -radius; k <= radius; ++k) v += kernel[k + radius] * image.at(std::clamp(c + k, 0, w - 1), r);
-                across.at(c, r) = static_cast<float>(v);
-            }
+        for (int r = begin; r < end; ++r) blurRow(&image.pixels[std::size_t(r) * w], &across.at(0, r), w, kernel, radius);
     });
+    // Down the columns a row at a time (the rows it reads clamped once per row, not per pixel).
     parallelFor(h, threads, [&](int begin, int end) {
-        for (int r = begin; r < end; ++r)
+        std::vector<const float*> rows(kernel.size());
+        for (int r = begin; r < end; ++r) {
+            for (int k = -radius; k <= radius; ++k) rows[k + radius] = &across.at(0, std::clamp(r + k, 0, h - 1));
+            float* o = &out.at(0, r);
             for (int c = 0; c < w; ++c) {
                 double v = 0.0;
-                for (int k = -radius; k <= radius; ++k) v += kernel[k + radius] * across.at(c, std::clamp(r + k, 0, h - 1));
-                out.at(c, r) = static_cast<float>(v);
+                for (std::size_t k = 0; k < kernel.size(); ++k) v += kernel[k] * rows[k][c];
+                o[c] = static_cast<float>(v);
             }
+        }
     });
     return out;
 }
@@ -82,24 +108,24 @@ Image detectedImage(const Image& primary, const DetectorSettings& s) {
     }
     // 2. Blur.
     image = gaussianBlur(image, s.blurSigmaPixels, s.threads);
-    // 3. Noise, row by row from per-row streams.
-    if (s.photonsPerPixel > 0.0) {
-        parallelFor(image.height, s.threads, [&](int begin, int end) {
-            for (int r = begin; r < end; ++r) {
+    // 3. Noise, row by row from per-row streams; 4. output, -log of the counts (or of the
+    // intensity) where asked, in the same pass over the row.
+    const double floor = s.photonsPerPixel > 0.0 ? 0.5 / s.photonsPerPixel : 1e-6;
+    parallelFor(image.height, s.threads, [&](int begin, int end) {
+        for (int r = begin; r < end; ++r) {
+            float* row = &image.at(0, r);
+            if (s.photonsPerPixel > 0.0) {
                 Rng rng(s.seed * 0x9E3779B97F4A7C15ull + static_cast<std::uint64_t>(r) + 1);
                 for (int c = 0; c < image.width; ++c) {
-                    double counts = poissonDraw(rng, s.photonsPerPixel * std::max(0.0f, image.at(c, r)));
+                    double counts = poissonDraw(rng, s.photonsPerPixel * std::max(0.0f, row[c]));
                     if (s.electronicNoise > 0.0) counts += s.electronicNoise * rng.normal();
-                    image.at(c, r) = static_cast<float>(counts / s.photonsPerPixel);
+                    row[c] = static_cast<float>(counts / s.photonsPerPixel);
                 }
             }
-        });
-    }
-    // 4. Output.
-    if (s.logOutput) {
-        const double floor = s.photonsPerPixel > 0.0 ? 0.5 / s.photonsPerPixel : 1e-6;
-        for (float& v : image.pixels) v = static_cast<float>(-std::log(std::max(double(v), floor)));
-    }
+            if (s.logOutput)
+                for (int c = 0; c < image.width; ++c) row[c] = static_cast<float>(-std::log(std::max(double(row[c]), floor)));
+        }
+    });
     return image;
 }
 
