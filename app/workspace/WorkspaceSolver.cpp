@@ -98,8 +98,7 @@ void WorkspaceSolver::start(std::shared_ptr<const WorkspaceModel> model, int obj
                         for (const FoundCandidate& f : result.found[0]->candidates) {
                             const CameraPoseDifference d =
                                 cameraPoseDifference(scene.cameras[0], c.answer.worldFromObject, f.worldFromObject, pivot);
-                            const ConfirmationSettings same;  // within its agreement bounds: the answer itself
-                            if (d.inPlaneMm <= same.agreeInPlaneMm && d.rotationDeg <= same.agreeRotationDeg) continue;
+                            if (sameAnswerInView(d)) continue;  // the answer itself
                             s.candidates.push_back(f.worldFromObject);
                             s.candidateSimilarity.push_back(f.similarity);
                         }

@@ -13,10 +13,10 @@
 #include "find/SeenPose.h"
 #include "find/TemplateScan.h"
 #include "scene/ObjectPoseParameterization.h"
-#include "search/ConfirmedSearch.h"
 #include "similarity/EdgeDistance.h"
 #include "similarity/ImagePyramid.h"
 #include "xray/CameraPoseDifference.h"
+#include "xray/ConfirmedRegistration.h"
 #include "xray/ObjectRegistration.h"
 
 namespace fm {
@@ -249,11 +249,10 @@ FoundPose findObjectPose(const Scene& scene, std::size_t object, const Registrat
             lookalikes.push_back({pose, 0.0, 0, answers.front().hypothesis});
         registerAll(lookalikes);
     }
-    const ConfirmationSettings kSame;  // answers within its agreement bounds are one answer
     for (const FoundCandidate& a : answers) {
         const bool same = std::any_of(found.candidates.begin(), found.candidates.end(), [&](const FoundCandidate& c) {
             const CameraPoseDifference d = cameraPoseDifference(camera, c.worldFromObject, a.worldFromObject, pivot);
-            return d.inPlaneMm <= kSame.agreeInPlaneMm && d.rotationDeg <= kSame.agreeRotationDeg;
+            return sameAnswerInView(d);
         });
         if (!same) found.candidates.push_back(a);
     }

@@ -54,6 +54,10 @@ bool posesAgree(const RigidTransform& a, const RigidTransform& b, const glm::dve
            rotationBetweenDeg(a.rotation, b.rotation) <= bounds.agreeRotationDeg;
 }
 
+bool sameAnswerInView(const CameraPoseDifference& d, const ConfirmationSettings& bounds) {
+    return d.inPlaneMm <= bounds.agreeInPlaneMm && d.rotationDeg <= bounds.agreeRotationDeg;
+}
+
 bool registersSideBySide(std::size_t searches, const RegistrationSettings& settings) {
     return searches > 1 && (settings.threads > 0 ? settings.threads : defaultThreadCount()) > 1;
 }
@@ -105,7 +109,7 @@ ObjectsRegistration registerObjects(const Scene& scene, const RegistrationView& 
         for (const ObjectRegistrationResult& r : rk) {
             const CameraPoseDifference d =
                 cameraPoseDifference(camera, rk[static_cast<std::size_t>(b)].worldFromObject, r.worldFromObject, pivot);
-            agreeing[k] += d.inPlaneMm <= confirmation.agreeInPlaneMm && d.rotationDeg <= confirmation.agreeRotationDeg;
+            agreeing[k] += sameAnswerInView(d, confirmation);
         }
     };
     for (std::size_t k = 0; k < n; ++k) judge(k);

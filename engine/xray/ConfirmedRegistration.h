@@ -20,6 +20,7 @@
 
 #include "search/ConfirmedSearch.h"
 #include "xray/AnswerCheck.h"
+#include "xray/CameraPoseDifference.h"
 #include "xray/ObjectRegistration.h"
 
 namespace fm {
@@ -48,6 +49,10 @@ RigidTransform confirmationStart(const ProjectionGeometry& camera, const RigidTr
 // agreeInPlaneMm of each other and the relative rotation within agreeRotationDeg.
 bool posesAgree(const RigidTransform& a, const RigidTransform& b, const glm::dvec3& pivot,
                 const ConfirmationSettings& bounds);
+
+// Whether two answers are one as a camera sees them: the in-plane shift and the rotation of
+// their difference within the agreement bounds (depth, which one view hardly fixes, aside).
+bool sameAnswerInView(const CameraPoseDifference& d, const ConfirmationSettings& bounds = {});
 
 // Whether searches run side by side (several searches and cores) or one after the other.
 bool registersSideBySide(std::size_t searches, const RegistrationSettings& settings);

@@ -23,7 +23,6 @@ namespace fm::py {
 
 namespace {
 
-
 pb::dict recordDict(const FrameRecord& r, const TrialScene& scene, const std::string& bone) {
     pb::dict d;
     d["frame"] = r.frame;
