@@ -261,9 +261,10 @@ void runXrayRegister(const std::string& reference, const XrayRegisterArgs& a,
     }
     for (const std::string& m : doubtful)
         std::fprintf(stderr, "warning: %s: the answer is doubtful (see its verdict line)\n", m.c_str());
-    if (n > 1)
-        std::printf("\ntotal time  %.3f s for %zu models (%s)\n", wallSeconds, n,
-                    sideBySide ? "side by side" : "one after the other");
+    // Each model's time line is its searches' sum; this is the wall time of the whole answer
+    // (searches, re-searches, uncertainty), also for one model whose searches ran side by side.
+    std::printf("\ntotal time  %.3f s for %zu model%s (%s)\n", wallSeconds, n, n == 1 ? "" : "s",
+                sideBySide ? "side by side" : "one after the other");
     if (!lost.empty()) {
         std::string names;
         for (const std::string& m : lost) names += (names.empty() ? "" : ", ") + m;

@@ -7,6 +7,7 @@
 #include "core/Error.h"
 #include "core/Parallel.h"
 #include "meshdrr/MeshRayCast.h"
+#include "meshdrr/RasterSilhouette.h"
 
 namespace fm {
 namespace {
@@ -81,6 +82,7 @@ MeshDrrModelPtr prepareMeshDrr(const Mesh& mesh, bool closed) {
     m->vertices.reserve(mesh.positions.size());
     for (const glm::vec3& p : mesh.positions) m->vertices.emplace_back(p);
     m->triangles.assign(mesh.triangles.begin(), mesh.triangles.end());
+    if (closed) m->edges = pairedEdges(m->triangles);
     m->boundsMin = m->bvh.nodes[0].lo;
     m->boundsMax = m->bvh.nodes[0].hi;
     return m;

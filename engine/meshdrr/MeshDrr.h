@@ -11,6 +11,7 @@
 // bounding box of the model are traced (all pixels when the box reaches behind the source).
 // Rendering is const, thread-safe, parallel over rows and bit-identical for any thread count.
 // See docs/real-xray.md ("Implant and bone models") for the method and measured accuracy.
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -36,6 +37,14 @@ struct MeshDrrModel {
     // silhouette projects each vertex once instead of each triangle's three corners.
     std::vector<glm::dvec3> vertices;
     std::vector<glm::uvec3> triangles;
+    // A closed model's edges, each with the triangle that runs a -> b and the one that runs
+    // b -> a: the rasterised silhouette fills only the outline where the image's winding
+    // changes across an edge (meshdrr/RasterSilhouette.h). Empty for an open model.
+    struct Edge {
+        std::uint32_t a = 0, b = 0;          // vertex indices
+        std::uint32_t forward = 0, back = 0;  // triangles holding a -> b and b -> a
+    };
+    std::vector<Edge> edges;
     glm::dvec3 boundsMin{0.0}, boundsMax{0.0};
 };
 using MeshDrrModelPtr = std::shared_ptr<const MeshDrrModel>;

@@ -51,6 +51,7 @@ TEST(RasterSilhouette, SamePixelsAsTheRayTracedSilhouette) {
     int compared = 0;
     for (const fm::Mesh& mesh : meshes) {
         const auto model = fm::prepareMeshDrr(mesh, true);
+        ASSERT_EQ(model->edges.size(), 3 * mesh.triangles.size() / 2);  // filled from the outline
         for (int k = 0; k < 8; ++k) {
             // A random rotation and shift of the model (the camera moved the other way).
             const fm::RigidTransform pose =
@@ -100,6 +101,36 @@ TEST(RasterSilhouette, OneWindingCoversAClosedSurfaceAndAnOpenOneIsFilledWhole) 
     }
 }
 
+// The outline fill needs every edge paired with a triangle each way (Euler: E = 3F/2 on a
+// closed surface); any other mesh is filled triangle by triangle, which the tests above
+// compare too (the open box).
+TEST(RasterSilhouette, ClosedSurfacesPairEveryEdgeAndOthersPairNone) {
+    const fm::Mesh box = fm::test::boxMesh({-12, -7, -9}, {10, 15, 6});
+    const auto edges = fm::pairedEdges(box.triangles);
+    ASSERT_EQ(edges.size(), 18u);  // 12 triangles
+    for (const auto& e : edges) {
+        const auto runs = [&](std::uint32_t t, std::uint32_t a, std::uint32_t b) {
+            const glm::uvec3& v = box.triangles[t];
+            return (v.x == a && v.y == b) || (v.y == a && v.z == b) || (v.z == a && v.x == b);
+        };
+        EXPECT_TRUE(runs(e.forward, e.a, e.b) && runs(e.back, e.b, e.a));
+    }
+    const fm::Mesh frame = fm::test::squareFrameMesh(6.f, 3.f, 8.f, 12.f);
+    EXPECT_EQ(fm::pairedEdges(frame.triangles).size(), 3 * frame.triangles.size() / 2);
+    EXPECT_EQ(fm::prepareMeshDrr(frame, true)->edges.size(), 3 * frame.triangles.size() / 2);
+    // Open (a face missing), turned inside out in one triangle, an edge of three triangles.
+    fm::Mesh open = box;
+    open.triangles.pop_back();
+    EXPECT_TRUE(fm::pairedEdges(open.triangles).empty());
+    fm::Mesh flipped = box;
+    std::swap(flipped.triangles[0].y, flipped.triangles[0].z);
+    EXPECT_TRUE(fm::pairedEdges(flipped.triangles).empty());
+    fm::Mesh fin = box;
+    fin.triangles.push_back({box.triangles[0].x, box.triangles[0].y, box.triangles[5].z});
+    EXPECT_TRUE(fm::pairedEdges(fin.triangles).empty());
+    EXPECT_TRUE(fm::prepareMeshDrr(open, false)->edges.empty());
+}
+
 TEST(RasterSilhouette, NoAnswerWhenTheModelReachesBehindTheSource) {
     const auto model = fm::prepareMeshDrr(fm::test::boxMesh({-10, -10, -10}, {10, 10, 10}), true);
     fm::ProjectionGeometry g = tiltedRasterCamera();
@@ -142,6 +173,7 @@ TEST(RasterSilhouette, JtmlImplantsAtTheirJtsPoses) {
         for (int f = 0; f < 3; ++f) {
             const fm::ProjectionGeometry g =
                 fm::transformGeometry(poses.frames.at(f).cameraFromModel().inverse(), camera);
+            ASSERT_EQ(model->edges.size(), 3 * model->triangles.size() / 2) << part;  // the outline fill
             const fm::Mask traced = fm::renderMeshSilhouette(*model, g);
             EXPECT_EQ(differing(*fm::rasterMeshSilhouette(*model, g), traced), 0u) << part << " " << f;
         }
