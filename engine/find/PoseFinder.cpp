@@ -224,16 +224,18 @@ FoundPose findObjectPose(const Scene& scene, std::size_t object, const Registrat
     //    answer's look-alikes (mirror images, reversed tilts: one view barely tells them apart),
     //    so that whichever of them the image prefers wins, and the other is seen as a rival.
     t0 = Clock::now();
-    RegistrationSettings full = finish;
+    // The view prepared once for all of them (pyramids, edge maps).
+    const Registration full = prepareObjectRegistration(scene, object, view, finish);
     int finishEvaluations = 0;
     std::vector<FoundCandidate> answers;
     const auto registerAll = [&](const std::vector<Refined>& starts) {
-        full.threads = starts.size() >= static_cast<std::size_t>(threads) ? 1 : threads;
+        const int each = starts.size() >= static_cast<std::size_t>(threads) ? 1 : threads;
         std::vector<FoundCandidate> batch(starts.size());
-        parallelFor(static_cast<int>(starts.size()), full.threads == 1 ? threads : 1, [&](int begin, int end) {
+        parallelFor(static_cast<int>(starts.size()), each == 1 ? threads : 1, [&](int begin, int end) {
             for (int k = begin; k < end; ++k) {
                 const Refined& from = starts[static_cast<std::size_t>(k)];
-                const ObjectRegistrationResult r = registerObject(scene, object, view, from.pose, full, {}, stop);
+                const ObjectRegistrationResult r =
+                    registerObject(full, scene, object, view, from.pose, finish.seed, each, {}, stop);
                 batch[static_cast<std::size_t>(k)] = {r.worldFromObject, r.similarity, from.hypothesis, r.evaluations};
             }
         }, 4);

@@ -129,6 +129,7 @@ Registration::Registration(Scene scene, SceneParameterizationPtr parameterizatio
             }
     }
     const int coarsest = settings_.levelFactors.front();
+    std::vector<View> prepared;
     for (std::size_t v = 0; v < views.size(); ++v) {
         const RegistrationView& in = views[v];
         const std::string name = "registration: view " + std::to_string(v + 1);
@@ -180,15 +181,16 @@ Registration::Registration(Scene scene, SceneParameterizationPtr parameterizatio
                 level.valid = cropMask(downsampleMaskBy(cropMask(*in.valid, usableRect), f), roi);
             view.levels.push_back(std::move(level));
         }
-        views_.push_back(std::move(view));
+        prepared.push_back(std::move(view));
     }
+    views_ = std::make_shared<const std::vector<View>>(std::move(prepared));
     if (!(settings_.coarseVolumeRatio >= 0.0) || !std::isfinite(settings_.coarseVolumeRatio))
         throw Error("registration: the coarse volume ratio must be a number >= 0");
     // Per view, so that a view's cost does not depend on which other views are registered.
     for (std::size_t k = 0; k < settings_.levelFactors.size(); ++k) {
         const bool finest = k + 1 == settings_.levelFactors.size();
         std::vector<Scene> perView;
-        for (const View& view : views_) {
+        for (const View& view : *views_) {
             if (finest || settings_.coarseVolumeRatio == 0.0) {
                 perView.push_back(scene_);
                 continue;
@@ -202,6 +204,18 @@ Registration::Registration(Scene scene, SceneParameterizationPtr parameterizatio
         }
         levelScenes_.push_back(std::move(perView));
     }
+}
+
+Registration::Registration(const Registration& prepared, SceneParameterizationPtr parameterization,
+                           int threads)
+    : scene_(prepared.scene_),
+      levelScenes_(prepared.levelScenes_),
+      parameterization_(std::move(parameterization)),
+      settings_(prepared.settings_),
+      views_(prepared.views_),
+      massCentres_(prepared.massCentres_) {
+    if (!parameterization_) throw Error("registration: no scene parameterization");
+    settings_.threads = threads;
 }
 
 int Registration::finestPolishBudget() const {
@@ -304,20 +318,20 @@ std::vector<double> Registration::viewCosts(const SceneParams& params, int level
     if (level < 0 || level >= levelCount())
         throw Error("registration: level " + std::to_string(level) + " does not exist");
     std::vector<double> costs;
-    for (std::size_t v = 0; v < views_.size(); ++v)
+    for (std::size_t v = 0; v < views_->size(); ++v)
         costs.push_back(viewCost(sceneAt(levelScenes_[level][v], *parameterization_, params),
-                                 views_[v], level, settings_.threads));
+                                 (*views_)[v], level, settings_.threads));
     return costs;
 }
 
 double Registration::levelCost(const SceneParams& params, int level, int threads) const {
-    const int views = static_cast<int>(views_.size());
-    std::vector<double> costs(views_.size(), 0.0);
+    const int views = static_cast<int>(views_->size());
+    std::vector<double> costs(views_->size(), 0.0);
     auto costOf = [&](int v, int renderThreads) {
         auto mark = std::chrono::steady_clock::now();
         const Scene moved = sceneAt(levelScenes_[level][v], *parameterization_, params);
         clock_->setup.fetch_add(nanosecondsSince(mark), std::memory_order_relaxed);
-        costs[static_cast<std::size_t>(v)] = viewCost(moved, views_[v], level, renderThreads);
+        costs[static_cast<std::size_t>(v)] = viewCost(moved, (*views_)[v], level, renderThreads);
     };
     const int cores = threads > 0 ? threads : defaultThreadCount();
     if (views >= cores && cores > 1) {
@@ -338,7 +352,7 @@ double Registration::levelCost(const SceneParams& params, int level, int threads
 
 double Registration::referenceSelfSimilarity() const {
     double total = 0.0;
-    for (const View& view : views_) {
+    for (const View& view : *views_) {
         const ViewLevel& level = view.levels.back();
         total += similarity(settings_.similarity, level.reference, level.reference.image,
                             level.valid ? &*level.valid : nullptr);
@@ -365,7 +379,7 @@ RegistrationResult Registration::run(const SceneParams& start,
     // sideways by sin(10 deg) of the step, and the in-plane match then pins the depth.
     SceneParams anchor = start;
     // Angle changes turn about the mass centre of what moves (PivotedSearch.h), if it is known.
-    const PivotedSearchCoordinates coordinates(scene_, parameterization_, views_.front().camera,
+    const PivotedSearchCoordinates coordinates(scene_, parameterization_, views_->front().camera,
                                                start, massCentres_);
     // Only the refinements turn about it: the global search keeps the parameterization's own
     // coordinates (its radius spans what the start may be off by, about the centre it names).

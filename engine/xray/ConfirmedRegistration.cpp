@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <memory>
+#include <optional>
 
 #include "core/Error.h"
 #include "core/Parallel.h"
@@ -77,15 +78,24 @@ ObjectsRegistration registerObjects(const Scene& scene, const RegistrationView& 
     out.objects.resize(n);
     const auto started = std::chrono::steady_clock::now();
     std::vector<std::vector<ObjectRegistrationResult>> runs(n);
+    // 0. Each object's view prepared once (pyramids, edge maps), side by side: every search of
+    //    the object and its uncertainty share it.
+    std::vector<std::optional<Registration>> prepared(n);
+    parallelFor(
+        static_cast<int>(n), n > 1 ? settings.threads : 1,
+        [&](int begin, int end) {
+            for (int k = begin; k < end; ++k)
+                prepared[static_cast<std::size_t>(k)].emplace(
+                    prepareObjectRegistration(scene, static_cast<std::size_t>(k), view, settings));
+        },
+        1);
     const auto search = [&](const Search& s, const RegistrationSettings& base) {
         const SceneObject& o = scene.objects[s.object];
-        RegistrationSettings one = base;
-        one.seed = base.seed + static_cast<std::uint64_t>(s.run);
         const glm::dvec3 pivot = o.model ? defaultPivot(*o.model) : glm::dvec3(0.0);
         const RigidTransform start = confirmationStart(camera, o.worldFromObject, pivot, base, confirmation, s.run);
         runs[s.object][static_cast<std::size_t>(s.run)] = registerObject(
-            scene, s.object, view, start, one,
-            progressFor && s.run == 0 ? progressFor(s.object) : RegistrationCallback{}, stop);
+            *prepared[s.object], scene, s.object, view, start, base.seed + static_cast<std::uint64_t>(s.run),
+            base.threads, progressFor && s.run == 0 ? progressFor(s.object) : RegistrationCallback{}, stop);
     };
     const auto stopped = [&] { return stop && stop->load(); };
     // 1. The first runs of every object, side by side.
@@ -153,11 +163,10 @@ ObjectsRegistration registerObjects(const Scene& scene, const RegistrationView& 
             static_cast<int>(n), n > 1 ? cores : 1,
             [&](int begin, int end) {
                 for (int i = begin; i < end; ++i) {
-                    ConfirmedObject& c = out.objects[static_cast<std::size_t>(i)];
-                    RegistrationSettings s = settings;
-                    s.threads = cores2;
-                    c.evidence.uncertainty = objectPoseUncertainty(scene, static_cast<std::size_t>(i), view,
-                                                                   c.answer.worldFromObject, s);
+                    const auto k = static_cast<std::size_t>(i);
+                    ConfirmedObject& c = out.objects[k];
+                    c.evidence.uncertainty = objectPoseUncertainty(*prepared[k], scene, k, view,
+                                                                   c.answer.worldFromObject, cores2);
                 }
             },
             static_cast<int>(n));

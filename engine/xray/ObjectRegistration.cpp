@@ -1,6 +1,7 @@
 #include "xray/ObjectRegistration.h"
 
 #include <memory>
+#include <optional>
 
 #include "core/Error.h"
 #include "scene/MeshXrayModel.h"
@@ -78,16 +79,12 @@ ObjectSearch objectSearch(const Scene& scene, std::size_t object, const Registra
 
 }  // namespace
 
-ObjectRegistrationResult registerObject(const Scene& scene, std::size_t object,
-                                        const RegistrationView& view,
-                                        const RigidTransform& start,
-                                        const RegistrationSettings& settings,
-                                        const RegistrationCallback& progress,
-                                        const std::atomic<bool>* stop) {
-    const ObjectSearch s = objectSearch(scene, object, view, start);
-    const Registration registration(s.alone, s.parameterization, {view}, settings);
-    const RegistrationResult r =
-        registration.run(s.parameterization->referenceParams(), progress, stop);
+namespace {
+
+ObjectRegistrationResult runFrom(const Registration& registration, const ObjectSearch& s,
+                                 std::optional<std::uint64_t> seed, const RegistrationCallback& progress,
+                                 const std::atomic<bool>* stop) {
+    const RegistrationResult r = registration.run(s.parameterization->referenceParams(), progress, stop, seed);
     ObjectRegistrationResult out;
     out.worldFromObject = s.parameterization->worldFromObject(r.params);
     out.similarity = r.similarity;
@@ -98,6 +95,18 @@ ObjectRegistrationResult registerObject(const Scene& scene, std::size_t object,
     return out;
 }
 
+}  // namespace
+
+ObjectRegistrationResult registerObject(const Scene& scene, std::size_t object,
+                                        const RegistrationView& view,
+                                        const RigidTransform& start,
+                                        const RegistrationSettings& settings,
+                                        const RegistrationCallback& progress,
+                                        const std::atomic<bool>* stop) {
+    const ObjectSearch s = objectSearch(scene, object, view, start);
+    return runFrom(Registration(s.alone, s.parameterization, {view}, settings), s, std::nullopt, progress, stop);
+}
+
 PoseUncertainty objectPoseUncertainty(const Scene& scene, std::size_t object, const RegistrationView& view,
                                       const RigidTransform& answer, const RegistrationSettings& settings) {
     const ObjectSearch s = objectSearch(scene, object, view, answer);
@@ -105,6 +114,27 @@ PoseUncertainty objectPoseUncertainty(const Scene& scene, std::size_t object, co
     finest.levelFactors = {1};  // only the finest level is evaluated: no pyramid to prepare
     const Registration registration(s.alone, s.parameterization, {view}, finest);
     return poseUncertainty(registration, s.parameterization->referenceParams());
+}
+
+Registration prepareObjectRegistration(const Scene& scene, std::size_t object, const RegistrationView& view,
+                                       const RegistrationSettings& settings) {
+    // The preparation does not depend on the pose: the object's own one anchors it.
+    const ObjectSearch s = objectSearch(scene, object, view, scene.objects.at(object).worldFromObject);
+    return Registration(s.alone, s.parameterization, {view}, settings);
+}
+
+ObjectRegistrationResult registerObject(const Registration& prepared, const Scene& scene, std::size_t object,
+                                        const RegistrationView& view, const RigidTransform& start,
+                                        std::uint64_t seed, int threads, const RegistrationCallback& progress,
+                                        const std::atomic<bool>* stop) {
+    const ObjectSearch s = objectSearch(scene, object, view, start);
+    return runFrom(Registration(prepared, s.parameterization, threads), s, seed, progress, stop);
+}
+
+PoseUncertainty objectPoseUncertainty(const Registration& prepared, const Scene& scene, std::size_t object,
+                                      const RegistrationView& view, const RigidTransform& answer, int threads) {
+    const ObjectSearch s = objectSearch(scene, object, view, answer);
+    return poseUncertainty(Registration(prepared, s.parameterization, threads), s.parameterization->referenceParams());
 }
 
 Mask objectSilhouette(const SceneObject& object, const ProjectionGeometry& camera, int threads) {

@@ -4,6 +4,7 @@
 // searched from a start pose; the other objects are hidden meanwhile (their outlines are not
 // this object's evidence). Several objects, each confirmed by searches from independent starts:
 // xray/ConfirmedRegistration.h.
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -48,6 +49,20 @@ ObjectRegistrationResult registerObject(const Scene& scene, std::size_t object,
 // registerObject has it, at the finest level of `settings`.
 PoseUncertainty objectPoseUncertainty(const Scene& scene, std::size_t object, const RegistrationView& view,
                                       const RigidTransform& answer, const RegistrationSettings& settings);
+
+// The same, several times over one preparation of the view (xray/ConfirmedRegistration.h: the
+// confirmation's searches and the uncertainty at their answer). `prepared` is the object's
+// registration from prepareObjectRegistration; each call searches or measures around its own
+// pose on `threads`, with the results of the functions above.
+Registration prepareObjectRegistration(const Scene& scene, std::size_t object, const RegistrationView& view,
+                                       const RegistrationSettings& settings);
+ObjectRegistrationResult registerObject(const Registration& prepared, const Scene& scene, std::size_t object,
+                                        const RegistrationView& view, const RigidTransform& start,
+                                        std::uint64_t seed, int threads,
+                                        const RegistrationCallback& progress = {},
+                                        const std::atomic<bool>* stop = nullptr);
+PoseUncertainty objectPoseUncertainty(const Registration& prepared, const Scene& scene, std::size_t object,
+                                      const RegistrationView& view, const RigidTransform& answer, int threads);
 
 // The object's silhouette: pixels of `camera` whose ray crosses it (line integral > 0).
 Mask objectSilhouette(const SceneObject& object, const ProjectionGeometry& camera, int threads = 0);

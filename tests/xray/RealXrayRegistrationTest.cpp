@@ -136,6 +136,50 @@ TEST(RealXray, LabelMasksAreTheJtsSilhouettes) {
     }
 }
 
+// A registration prepared once (its pyramids, edges and distance maps) and searched from other
+// starts, and measured at another answer, gives what one constructed for each gives, bit for
+// bit: what registerObjects and the finder rely on to prepare a view once per object. A short
+// budget (every stage still runs), frame 0160, the tray: prepared at the .jts pose, searched
+// from two perturbed starts.
+TEST(RealXray, OnePreparedRegistrationServesEverySearchAndTheUncertainty) {
+    FM_REQUIRE_SHARED_DATA("jtml-kneel-tka-fluoro/tib.jts");
+    RegistrationSettings settings = realXraySettings();
+    settings.globalEvaluations = 60;
+    settings.polishEvaluations = 12;
+    settings.hypothesisEvaluations = 8;
+    settings.depthRounds = 1;
+    settings.threads = 2;
+    const Frame frame = loadFrame(0);
+    const RegistrationView view{0, frame.radiograph.image, frame.radiograph.valid};
+    const auto model = loadImplant(kImplants[1]);
+    const RigidTransform truth = readPoseSpec((dataDir() / "tib.jts").string(), 0);
+    Scene scene;
+    scene.cameras = {frame.camera};
+    scene.objects.push_back({"tib", model, truth, true});
+    const Registration prepared = prepareObjectRegistration(scene, 0, view, settings);
+    const ObjectPoseParameterization atTruth("tib", frame.camera, truth, defaultPivot(*model));
+    Rng rng(77);
+    for (int k = 0; k < 2; ++k) {
+        const RigidTransform start = perturbed(atTruth, rng);
+        RegistrationSettings own = settings;
+        own.seed = 5 + k;
+        own.threads = k + 1;
+        const ObjectRegistrationResult fresh = registerObject(scene, 0, view, start, own);
+        const ObjectRegistrationResult shared = registerObject(prepared, scene, 0, view, start, own.seed, own.threads);
+        EXPECT_EQ(shared.worldFromObject.rotation, fresh.worldFromObject.rotation) << k;
+        EXPECT_EQ(shared.worldFromObject.translation, fresh.worldFromObject.translation) << k;
+        EXPECT_EQ(shared.similarity, fresh.similarity) << k;
+        EXPECT_EQ(shared.evaluations, fresh.evaluations) << k;
+        EXPECT_GT(cameraPoseDifference(frame.camera, start, shared.worldFromObject, defaultPivot(*model)).inPlaneMm, 0.01)
+            << "the search did not move: nothing compared";
+        const PoseUncertainty a = objectPoseUncertainty(scene, 0, view, fresh.worldFromObject, own);
+        const PoseUncertainty b = objectPoseUncertainty(prepared, scene, 0, view, fresh.worldFromObject, own.threads);
+        EXPECT_EQ(a.hessian, b.hessian) << k;
+        EXPECT_EQ(a.sd, b.sd) << k;
+        EXPECT_EQ(a.evaluations, b.evaluations) << k;
+    }
+}
+
 TEST(RealXray, RegistrationFromPerturbedStartsReachesTheJtsPose) {
     FM_REQUIRE_SHARED_DATA("jtml-kneel-tka-fluoro/fem.jts");
     const int starts = startsPerCase();
