@@ -29,14 +29,16 @@ Image cropImage(const Image& image, const PixelRect& r) {
     return out;
 }
 
-PreparedReference cropReference(const PreparedReference& r, const PixelRect& rect) {
+// Only the planes `measure` reads: a candidate's crop is copied every evaluation.
+PreparedReference cropReference(const PreparedReference& r, const PixelRect& rect, SimilarityMeasure measure) {
     PreparedReference out;
-    out.image = cropImage(r.image, rect);
-    if (!r.gradients.gx.empty()) {
+    if (&measuredPlane(measure, r) == &r.image) out.image = cropImage(r.image, rect);
+    if (!r.gradients.gx.empty() && &measuredPlane(measure, r) == &r.gradients.gx) {
         out.gradients.gx = cropImage(r.gradients.gx, rect);
         out.gradients.gy = cropImage(r.gradients.gy, rect);
     }
-    if (!r.edgeDistance.empty()) out.edgeDistance = cropImage(r.edgeDistance, rect);
+    if (!r.edgeDistance.empty() && &measuredPlane(measure, r) == &r.edgeDistance)
+        out.edgeDistance = cropImage(r.edgeDistance, rect);
     return out;
 }
 
@@ -179,6 +181,9 @@ Registration::Registration(Scene scene, SceneParameterizationPtr parameterizatio
             level.reference = prepareReference(cropImage(full, roi), settings_.similarity);
             if (in.valid)
                 level.valid = cropMask(downsampleMaskBy(cropMask(*in.valid, usableRect), f), roi);
+            // Every pixel valid (a real radiograph with no border): no mask to crop and
+            // intersect with every candidate's (nullptr and all-true are the same to a measure).
+            if (level.valid && level.valid->count() == level.valid->inside.size()) level.valid.reset();
             view.levels.push_back(std::move(level));
         }
         prepared.push_back(std::move(view));
@@ -308,8 +313,9 @@ double Registration::viewCost(const Scene& scene, const View& view, int levelInd
     if (level.valid) mask = intersect(mask, cropped ? cropMask(*level.valid, inRoi) : *level.valid);
     clock_->footprint.fetch_add(nanosecondsSince(mark), std::memory_order_relaxed);
     if (mask.count() < kMinMaskPixels) return 0.0;  // nothing in view: no evidence either way
-    const double cost = cropped ? -similarity(settings_.similarity, cropReference(level.reference, inRoi), drr, &mask)
-                                : -similarity(settings_.similarity, level.reference, drr, &mask);
+    const SimilarityMeasure measure = settings_.similarity;
+    const double cost = cropped ? -similarity(measure, cropReference(level.reference, inRoi, measure), drr, &mask)
+                                : -similarity(measure, level.reference, drr, &mask);
     clock_->similarity.fetch_add(nanosecondsSince(mark), std::memory_order_relaxed);
     return cost;
 }

@@ -44,9 +44,23 @@ PreparedReference prepareReference(const Image& reference, SimilarityMeasure mea
     return p;
 }
 
+const Image& measuredPlane(SimilarityMeasure measure, const PreparedReference& reference) {
+    switch (measure) {
+        case SimilarityMeasure::EdgeDistance:
+            return reference.edgeDistance;
+        case SimilarityMeasure::GradientNcc:
+        case SimilarityMeasure::GradientDifference:
+            return reference.gradients.gx;
+        case SimilarityMeasure::Ncc:
+        case SimilarityMeasure::MutualInformation:
+            break;
+    }
+    return reference.image;
+}
+
 double similarity(SimilarityMeasure measure, const PreparedReference& reference,
                   const Image& moving, const Mask* mask) {
-    const Image& ref = reference.image;
+    const Image& ref = measuredPlane(measure, reference);
     if (ref.width != moving.width || ref.height != moving.height)
         throw Error("similarity: the moving image size differs from the reference size");
     if (mask && (mask->width != ref.width || mask->height != ref.height))

@@ -31,6 +31,9 @@ struct PreparedReference {
     Image edgeDistance;        // EdgeDistance only: distance (pixels) to the nearest edge
 };
 PreparedReference prepareReference(const Image& reference, SimilarityMeasure measure);
+// The plane `measure` reads (the image, the x gradient of the two, or the edge distance): its
+// size is the reference's, and a crop of the reference needs only the planes the measure reads.
+const Image& measuredPlane(SimilarityMeasure measure, const PreparedReference& reference);
 
 // Compares `moving` (same size as the reference) over `mask` (nullptr = all pixels).
 double similarity(SimilarityMeasure measure, const PreparedReference& reference,

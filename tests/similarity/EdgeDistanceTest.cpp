@@ -48,7 +48,9 @@ TEST(EdgeDistance, EdgesOfADiscLieOnItsRim) {
     ASSERT_GT(e.count(), 60u);  // about the circumference, 2 pi 20 = 126
     for (int r = 0; r < 80; ++r)
         for (int c = 0; c < 80; ++c)
-            if (e.at(c, r)) EXPECT_NEAR(std::hypot(c - 40.0, r - 40.0), 20.0, 1.5);
+            if (e.at(c, r)) {
+                EXPECT_NEAR(std::hypot(c - 40.0, r - 40.0), 20.0, 1.5);
+            }
 }
 
 TEST(EdgeDistance, ScoreIsOneAtTheTruthAndFallsWithTheShift) {
@@ -62,7 +64,9 @@ TEST(EdgeDistance, ScoreIsOneAtTheTruthAndFallsWithTheShift) {
         EXPECT_LT(s, previous) << shift;
         // A step's edge lies between two pixels and thinning keeps one of them: at the truth
         // each outline pixel is at most 1 pixel from an edge, so the score is >= 1 - 1/cap.
-        if (shift == 0.0) EXPECT_GE(s, 1.0 - 1.0 / kEdgeCapPixels);
+        if (shift == 0.0) {
+            EXPECT_GE(s, 1.0 - 1.0 / kEdgeCapPixels);
+        }
         previous = s;
     }
     // Outline pixels outside the mask do not count; none counting gives 0.
