@@ -10,6 +10,9 @@ namespace fm {
 
 namespace {
 
+// Projected corners farther than this from the detector's origin (pixels) are not rasterised.
+constexpr double kFarPixels = 1e9;
+
 // Marks the pixel centres (integer col, row) inside or on the triangle a, b, c (pixels).
 void fillTriangle(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, Mask& mask) {
     double area = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
@@ -134,6 +137,9 @@ std::optional<Mask> rasterMeshSilhouette(const MeshDrrModel& model,
         if (!(along * toPlane > 0.0)) return std::nullopt;
         const glm::dvec3 rel = (toPlane / along) * w - rel0;
         pixels[i] = {glm::dot(rel, su), glm::dot(rel, sv)};
+        // A corner a hair in front of the source's plane projects arbitrarily far (even to
+        // infinity): no raster can hold it, the rays decide.
+        if (!(std::abs(pixels[i].x) < kFarPixels && std::abs(pixels[i].y) < kFarPixels)) return std::nullopt;
     }
     // A ray through a closed, consistently wound surface enters and leaves it in turn, so the
     // triangles of one winding in the image (positive area: those facing the source or those

@@ -31,7 +31,8 @@ namespace fm {
 std::vector<MeshDrrModel::Edge> pairedEdges(std::span<const glm::uvec3> triangles);
 
 // The silhouette as a mask of the detector's size; nullopt when a triangle corner is not
-// strictly in front of the source (then trace rays: renderMeshSilhouette).
+// strictly in front of the source or projects more than 1e9 pixels away (then trace rays:
+// renderMeshSilhouette).
 std::optional<Mask> rasterMeshSilhouette(const MeshDrrModel& model,
                                          const ProjectionGeometry& geometry);
 

@@ -32,13 +32,13 @@ Image cropImage(const Image& image, const PixelRect& r) {
 // Only the planes `measure` reads: a candidate's crop is copied every evaluation.
 PreparedReference cropReference(const PreparedReference& r, const PixelRect& rect, SimilarityMeasure measure) {
     PreparedReference out;
-    if (&measuredPlane(measure, r) == &r.image) out.image = cropImage(r.image, rect);
-    if (!r.gradients.gx.empty() && &measuredPlane(measure, r) == &r.gradients.gx) {
+    const Image* plane = &measuredPlane(measure, r);
+    if (plane == &r.image) out.image = cropImage(r.image, rect);
+    if (plane == &r.gradients.gx) {  // and its y partner
         out.gradients.gx = cropImage(r.gradients.gx, rect);
         out.gradients.gy = cropImage(r.gradients.gy, rect);
     }
-    if (!r.edgeDistance.empty() && &measuredPlane(measure, r) == &r.edgeDistance)
-        out.edgeDistance = cropImage(r.edgeDistance, rect);
+    if (plane == &r.edgeDistance) out.edgeDistance = cropImage(r.edgeDistance, rect);
     return out;
 }
 

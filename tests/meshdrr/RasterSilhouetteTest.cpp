@@ -136,6 +136,18 @@ TEST(RasterSilhouette, NoAnswerWhenTheModelReachesBehindTheSource) {
     fm::ProjectionGeometry g = tiltedRasterCamera();
     g.source = {0, 0, 0};  // inside the box
     EXPECT_FALSE(fm::rasterMeshSilhouette(*model, g));
+    // Nor when a corner lies a hair in front of the source's plane (it projects ~1e13 pixels
+    // away): the source at the origin, the film 1000 mm along +z.
+    fm::ProjectionGeometry plane;
+    plane.detector.size = {100, 100};
+    plane.detector.spacing = {1.0, 1.0};
+    plane.detector.u = {1, 0, 0};
+    plane.detector.v = {0, 1, 0};
+    plane.detector.origin = {-50, -50, 1000};
+    const auto grazing = fm::prepareMeshDrr(fm::test::boxMesh({5, 5, 1e-9f}, {20, 20, 100}), true);
+    EXPECT_FALSE(fm::rasterMeshSilhouette(*grazing, plane));
+    const auto ahead = fm::prepareMeshDrr(fm::test::boxMesh({5, 5, 50}, {20, 20, 100}), true);
+    EXPECT_TRUE(fm::rasterMeshSilhouette(*ahead, plane));
     // A scene falls back to tracing: the footprint is still there.
     fm::Scene scene;
     scene.cameras.push_back(g);
