@@ -13,9 +13,14 @@ namespace {
 // Projected corners farther than this from the detector's origin (pixels) are not rasterised.
 constexpr double kFarPixels = 1e9;
 
+// Twice the signed area of the triangle a, b, c (pixels): its winding in the image.
+double twiceSignedArea(const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& c) {
+    return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+}
+
 // Marks the pixel centres (integer col, row) inside or on the triangle a, b, c (pixels).
 void fillTriangle(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, Mask& mask) {
-    double area = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+    const double area = twiceSignedArea(a, b, c);
     if (area == 0.0) return;  // edge-on: covers no area
     if (area < 0.0) std::swap(b, c);
     const int c0 = std::max(0, static_cast<int>(std::ceil(std::min({a.x, b.x, c.x}))));
@@ -61,8 +66,7 @@ void fillFromOutline(const MeshDrrModel& model, const std::vector<glm::dvec2>& p
     std::vector<std::uint8_t> positive(model.triangles.size());
     for (std::size_t i = 0; i < model.triangles.size(); ++i) {
         const glm::uvec3& t = model.triangles[i];
-        const glm::dvec2 a = pixels[t.x], b = pixels[t.y], c = pixels[t.z];
-        positive[i] = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x) > 0.0;
+        positive[i] = twiceSignedArea(pixels[t.x], pixels[t.y], pixels[t.z]) > 0.0;
     }
     const std::size_t stride = std::size_t(mask.width) + 1;
     std::vector<std::int32_t> diff(stride * std::size_t(mask.height), 0);
@@ -155,8 +159,7 @@ std::optional<Mask> rasterMeshSilhouette(const MeshDrrModel& model,
     for (const glm::uvec3& t : model.triangles) {
         const glm::dvec2 a = pixels[t.x], b = pixels[t.y], c = pixels[t.z];
         if (model.closed) {
-            const double area = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
-            if (!(area > 0.0)) continue;
+            if (!(twiceSignedArea(a, b, c) > 0.0)) continue;
         }
         fillTriangle(a, b, c, mask);
     }

@@ -1,7 +1,6 @@
 #include "xray/ObjectRegistration.h"
 
 #include <memory>
-#include <optional>
 
 #include "core/Error.h"
 #include "scene/MeshXrayModel.h"
@@ -79,43 +78,6 @@ ObjectSearch objectSearch(const Scene& scene, std::size_t object, const Registra
 
 }  // namespace
 
-namespace {
-
-ObjectRegistrationResult runFrom(const Registration& registration, const ObjectSearch& s,
-                                 std::optional<std::uint64_t> seed, const RegistrationCallback& progress,
-                                 const std::atomic<bool>* stop) {
-    const RegistrationResult r = registration.run(s.parameterization->referenceParams(), progress, stop, seed);
-    ObjectRegistrationResult out;
-    out.worldFromObject = s.parameterization->worldFromObject(r.params);
-    out.similarity = r.similarity;
-    out.evaluations = r.evaluations;
-    out.seconds = r.seconds;
-    out.stopped = r.stopped;
-    out.profile = r.profile;
-    return out;
-}
-
-}  // namespace
-
-ObjectRegistrationResult registerObject(const Scene& scene, std::size_t object,
-                                        const RegistrationView& view,
-                                        const RigidTransform& start,
-                                        const RegistrationSettings& settings,
-                                        const RegistrationCallback& progress,
-                                        const std::atomic<bool>* stop) {
-    const ObjectSearch s = objectSearch(scene, object, view, start);
-    return runFrom(Registration(s.alone, s.parameterization, {view}, settings), s, std::nullopt, progress, stop);
-}
-
-PoseUncertainty objectPoseUncertainty(const Scene& scene, std::size_t object, const RegistrationView& view,
-                                      const RigidTransform& answer, const RegistrationSettings& settings) {
-    const ObjectSearch s = objectSearch(scene, object, view, answer);
-    RegistrationSettings finest = settings;
-    finest.levelFactors = {1};  // only the finest level is evaluated: no pyramid to prepare
-    const Registration registration(s.alone, s.parameterization, {view}, finest);
-    return poseUncertainty(registration, s.parameterization->referenceParams());
-}
-
 Registration prepareObjectRegistration(const Scene& scene, std::size_t object, const RegistrationView& view,
                                        const RegistrationSettings& settings) {
     // The preparation does not depend on the pose: the object's own one anchors it.
@@ -128,7 +90,16 @@ ObjectRegistrationResult registerObject(const Registration& prepared, const Scen
                                         std::uint64_t seed, int threads, const RegistrationCallback& progress,
                                         const std::atomic<bool>* stop) {
     const ObjectSearch s = objectSearch(scene, object, view, start);
-    return runFrom(Registration(prepared, s.parameterization, threads), s, seed, progress, stop);
+    const RegistrationResult r = Registration(prepared, s.parameterization, threads)
+                                     .run(s.parameterization->referenceParams(), progress, stop, seed);
+    ObjectRegistrationResult out;
+    out.worldFromObject = s.parameterization->worldFromObject(r.params);
+    out.similarity = r.similarity;
+    out.evaluations = r.evaluations;
+    out.seconds = r.seconds;
+    out.stopped = r.stopped;
+    out.profile = r.profile;
+    return out;
 }
 
 PoseUncertainty objectPoseUncertainty(const Registration& prepared, const Scene& scene, std::size_t object,

@@ -36,24 +36,14 @@ struct ObjectRegistrationResult {
     EvaluationProfile profile;
 };
 
-// Throws fm::Error if the object or the view's camera does not exist (and as Registration).
-ObjectRegistrationResult registerObject(const Scene& scene, std::size_t object,
-                                        const RegistrationView& view,
-                                        const RigidTransform& start,
-                                        const RegistrationSettings& settings,
-                                        const RegistrationCallback& progress = {},
-                                        const std::atomic<bool>* stop = nullptr);
-
-// How well the view fixes each of the object's six coordinates at `answer` (in the camera's
-// frame, pivot at the centre of its bounds; search/PoseUncertainty), the object alone as
-// registerObject has it, at the finest level of `settings`.
-PoseUncertainty objectPoseUncertainty(const Scene& scene, std::size_t object, const RegistrationView& view,
-                                      const RigidTransform& answer, const RegistrationSettings& settings);
-
-// The same, several times over one preparation of the view (xray/ConfirmedRegistration.h: the
-// confirmation's searches and the uncertainty at their answer). `prepared` is the object's
-// registration from prepareObjectRegistration; each call searches or measures around its own
-// pose on `threads`, with the results of the functions above.
+// One object searched from any start, and its uncertainty measured at any answer, over one
+// preparation of the view (its pyramid, edges and distance maps): `prepared` comes from
+// prepareObjectRegistration; each call rebinds it to the object alone (the others hidden) in
+// the camera's frame around its own pose (ObjectPoseParameterization, pivot at the centre of
+// its bounds, depth along the pivot's ray) on `threads`, with the results of a registration
+// constructed anew there (xray/ConfirmedRegistration.h runs a confirmation's searches and the
+// uncertainty so). The uncertainty is search/PoseUncertainty's at the finest level. Throw
+// fm::Error if the object or the view's camera does not exist (and as Registration).
 Registration prepareObjectRegistration(const Scene& scene, std::size_t object, const RegistrationView& view,
                                        const RegistrationSettings& settings);
 ObjectRegistrationResult registerObject(const Registration& prepared, const Scene& scene, std::size_t object,
