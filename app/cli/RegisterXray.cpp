@@ -46,7 +46,7 @@ const std::string& perModel(const std::vector<std::string>& list, std::size_t k,
 
 // How a model's pose was found: the stages, and the answer as the camera sees it.
 void printFound(const FoundPose& found, const ProjectionGeometry& camera, const glm::dvec3& pivot) {
-    for (const std::string& line : describeFindStages(found)) std::printf("found       %s\n", line.c_str());
+    for (const std::string& line : describeFindStages(found.stages)) std::printf("found       %s\n", line.c_str());
     const SeenPose seen = seenFrom(cameraAxes(camera), found.candidates.front().worldFromObject, pivot);
     std::printf("found at    pixel %.1f %.1f, depth %.1f mm, roll %.1f deg, tilts %.1f %.1f deg (as the camera "
                 "sees it; scan at 1/%d, %.2f s)\n",

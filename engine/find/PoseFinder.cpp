@@ -1,7 +1,6 @@
 #include "find/PoseFinder.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -22,10 +21,6 @@
 namespace fm {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 void validate(const FindSettings& s) {
     const auto powerOfTwo = [](int f) { return f >= 1 && (f & (f - 1)) == 0; };
@@ -92,11 +87,7 @@ int scanFactorFor(const SceneObject& target, const CameraAxes& axes, const FindS
 
 }  // namespace
 
-double FoundPose::seconds() const {
-    double t = 0.0;
-    for (const FindStage& s : stages) t += s.seconds;
-    return t;
-}
+double FoundPose::seconds() const { return findSeconds(stages); }
 
 FoundPose findObjectPose(const Scene& scene, std::size_t object, const RegistrationView& view,
                          const RegistrationSettings& finish, const FindSettings& settings,
@@ -127,18 +118,18 @@ FoundPose findObjectPose(const Scene& scene, std::size_t object, const Registrat
     // 1. Templates: one outline per pair of tilts, on the optical axis at the band's middle depth,
     //    at half the scan's pixel; the scan as coarse as keeps the model kMinScanSpanPixels wide at
     //    the band's far end (a probe template at 1/4 measures it).
-    auto t0 = Clock::now();
+    auto t0 = FindClock::now();
     const int scanFactor = scanFactorFor(target, axes, settings);
     const double scanPixelMm = axes.spacing.x * scanFactor;
     const OutlineTemplates templates = renderOutlineTemplates(
         target, axes, settings.space, settings.tiltStepDeg, axes.spacing.x * scanFactor / 2, threads);
     found.scanFactor = scanFactor;
-    found.stages.push_back({"templates", since(t0), static_cast<int>(templates.templates.size()),
+    found.stages.push_back({"templates", secondsSince(t0), static_cast<int>(templates.templates.size()),
                             static_cast<int>(templates.templates.size())});
 
     // 2. Scan: the edges found at half the scan's pixel, pooled to it; every template turned,
     //    scaled and shifted over the whole image.
-    t0 = Clock::now();
+    t0 = FindClock::now();
     const OrientedDistances distances = orientedEdgeDistances(downsampleBy(view.reference, scanFactor / 2), 2);
     const Image& coarse = distances.distance[0];
     std::optional<Mask> coarseValid;
@@ -153,7 +144,7 @@ FoundPose findObjectPose(const Scene& scene, std::size_t object, const Registrat
         scanTemplates(distances, coarseValid ? &*coarseValid : nullptr, templates, grid, threads);
     const std::vector<ScanHypothesis> hypotheses =
         distinctBest(scanned, templates, grid, static_cast<std::size_t>(settings.hypotheses), settings.perPlace);
-    found.stages.push_back({"scan", since(t0), static_cast<long long>(scanned.size()) * coarse.width * coarse.height,
+    found.stages.push_back({"scan", secondsSince(t0), static_cast<long long>(scanned.size()) * coarse.width * coarse.height,
                             static_cast<int>(hypotheses.size())});
     if (stopped()) {
         found.stopped = true;
@@ -161,7 +152,7 @@ FoundPose findObjectPose(const Scene& scene, std::size_t object, const Registrat
     }
 
     // 3. Refine: each hypothesis as a pose, polished at the refinement level (exact renders).
-    t0 = Clock::now();
+    t0 = FindClock::now();
     const auto poseOf = [&](const ScanHypothesis& h) {
         const OutlineTemplate& t = templates.templates[static_cast<std::size_t>(h.templateIndex)];
         SeenPose seen;
@@ -214,7 +205,7 @@ FoundPose findObjectPose(const Scene& scene, std::size_t object, const Registrat
     for (const Refined& r : refined) refineEvaluations += r.evaluations;
     std::stable_sort(refined.begin(), refined.end(), [](const Refined& a, const Refined& b) { return a.cost < b.cost; });
     const std::size_t finalists = std::min(refined.size(), static_cast<std::size_t>(settings.finalists));
-    found.stages.push_back({"refine", since(t0), refineEvaluations, static_cast<int>(finalists)});
+    found.stages.push_back({"refine", secondsSince(t0), refineEvaluations, static_cast<int>(finalists)});
     if (stopped()) {
         found.stopped = true;
         return found;
@@ -223,7 +214,7 @@ FoundPose findObjectPose(const Scene& scene, std::size_t object, const Registrat
     // 4. Finish: the best refined hypotheses registered fully, side by side; then the best
     //    answer's look-alikes (mirror images, reversed tilts: one view barely tells them apart),
     //    so that whichever of them the image prefers wins, and the other is seen as a rival.
-    t0 = Clock::now();
+    t0 = FindClock::now();
     // The view prepared once for all of them (pyramids, edge maps).
     const Registration full = prepareObjectRegistration(scene, object, view, finish);
     int finishEvaluations = 0;
@@ -258,23 +249,9 @@ FoundPose findObjectPose(const Scene& scene, std::size_t object, const Registrat
         });
         if (!same) found.candidates.push_back(a);
     }
-    found.stages.push_back({"finish", since(t0), finishEvaluations, static_cast<int>(found.candidates.size())});
+    found.stages.push_back({"finish", secondsSince(t0), finishEvaluations, static_cast<int>(found.candidates.size())});
     found.stopped = stopped();
     return found;
-}
-
-std::vector<std::string> describeFindStages(const FoundPose& found) {
-    std::vector<std::string> lines;
-    for (const FindStage& s : found.stages) {
-        char buf[200];
-        const char* what = s.name == "templates" ? "renders -> templates"
-                           : s.name == "scan"    ? "placements -> hypotheses"
-                           : s.name == "refine"  ? "evaluations -> finalists"
-                                                 : "evaluations -> distinct answers";
-        std::snprintf(buf, sizeof buf, "%-9s %6.2f s %10lld %s %d", s.name.c_str(), s.seconds, s.evaluations, what, s.kept);
-        lines.push_back(buf);
-    }
-    return lines;
 }
 
 }  // namespace fm

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "find/FindSpace.h"
+#include "find/FindStage.h"
 #include "search/Registration.h"
 #include "scene/Scene.h"
 
@@ -44,13 +45,6 @@ struct FindSettings {
     int threads = 0;             // 0 = all cores
 };
 
-struct FindStage {
-    std::string name;     // "templates", "scan", "refine", "finish"
-    double seconds = 0.0; // wall
-    long long evaluations = 0;  // renders (templates), template placements (scan), searches' evaluations
-    int kept = 0;         // what goes on to the next stage
-};
-
 struct FoundCandidate {
     RigidTransform worldFromObject;
     double similarity = 0.0;  // at the finest level (edge distance: against a perfect outline's 1)
@@ -72,8 +66,5 @@ struct FoundPose {
 FoundPose findObjectPose(const Scene& scene, std::size_t object, const RegistrationView& view,
                          const RegistrationSettings& finish, const FindSettings& settings,
                          const std::atomic<bool>* stop = nullptr);
-
-// One line per stage: "scan        0.41 s   52992 placements -> 24 hypotheses".
-std::vector<std::string> describeFindStages(const FoundPose& found);
 
 }  // namespace fm

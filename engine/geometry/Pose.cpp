@@ -1,5 +1,6 @@
 #include "geometry/Pose.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <string_view>
@@ -188,6 +189,24 @@ ProjectionGeometry sceneGeometry(const Pose& pose, const SceneSetup& setup,
     d.origin = filmCenter - 0.5 * (d.size.x - 1) * d.spacing.x * d.u -
                0.5 * (d.size.y - 1) * d.spacing.y * d.v;
     return g;
+}
+
+Pose poseOfSceneCamera(const ProjectionGeometry& camera, const SceneSetup& setup,
+                       const glm::dvec3& volumeCenter) {
+    validateSceneSetup(setup);
+    const DetectorGeometry& d = camera.detector;
+    // u x v = -s: the film's normal points along the beam, away from the source.
+    const glm::dvec3 s = -glm::normalize(glm::cross(d.u, d.v));
+    Pose pose;
+    pose.elevationDeg = glm::degrees(std::asin(std::clamp(s.z, -1.0, 1.0)));
+    // s = cos(el) cos(az) A + cos(el) sin(az) L + sin(el) Sup with A = -y, L = x.
+    pose.azimuthDeg = std::hypot(s.x, s.y) > 1e-12 ? glm::degrees(std::atan2(s.x, -s.y)) : 0.0;
+    const SceneFrame unturned = sceneFrame(pose.azimuthDeg, pose.elevationDeg, 0.0);
+    // filmU = cos(rot) right + sin(rot) down, with right and down the unturned film's u and v.
+    pose.rotationDeg = glm::degrees(std::atan2(glm::dot(d.u, unturned.filmV), glm::dot(d.u, unturned.filmU)));
+    const glm::dvec3 isocenter = camera.source - setup.sourceToIsocenterMm * s;
+    pose.offset = volumeCenter - isocenter;
+    return pose;
 }
 
 }  // namespace fm

@@ -78,4 +78,11 @@ SceneFrame sceneFrame(double azimuthDeg, double elevationDeg, double rotationDeg
 ProjectionGeometry sceneGeometry(const Pose& pose, const SceneSetup& setup,
                                  const glm::dvec3& volumeCenter);
 
+// The inverse: the pose whose sceneGeometry() is `camera` (any rigid motion of a scene camera:
+// its source at sourceToIsocenterMm from the isocenter on the film's normal). Azimuth is
+// meaningless at the poles (elevation +-90): 0 there. Film rotations outside -90..90 (a camera
+// turned upside down) come back as such: sceneGeometry accepts them, validatePose does not.
+Pose poseOfSceneCamera(const ProjectionGeometry& camera, const SceneSetup& setup,
+                       const glm::dvec3& volumeCenter);
+
 }  // namespace fm

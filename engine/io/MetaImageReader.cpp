@@ -20,9 +20,9 @@ namespace {
 
 // Headers are a few hundred bytes; anything without ElementDataFile in the first MiB is not
 // a MetaImage header.
-constexpr std::size_t kMaxHeaderBytes = 1 << 20;
+constexpr std::size_t kMaxMetaHeaderBytes = 1 << 20;
 // More slice files than this is a corrupt header, not a CT.
-constexpr long long kMaxDataFiles = 1 << 20;
+constexpr long long kMaxMetaDataFiles = 1 << 20;
 
 ScalarType metaScalarType(const std::string& name, const std::string& what) {
     static const std::map<std::string, ScalarType> kTypes = {
@@ -49,7 +49,7 @@ bool parseBool(const std::string& value, const std::string& what) {
 
 Volume readMetaImage(const fs::path& path) {
     const std::string what = quoted(path);
-    const Bytes head = readFilePrefix(path, kMaxHeaderBytes);
+    const Bytes head = readFilePrefix(path, kMaxMetaHeaderBytes);
     const std::string_view text(reinterpret_cast<const char*>(head.data()), head.size());
 
     // Key = Value lines up to ElementDataFile, which ends the header.
@@ -169,7 +169,7 @@ Volume readMetaImage(const fs::path& path) {
         const long long step = parseInteger(words[3], what + ": file list step");
         if (words.size() > 4) subdim = parseInteger(words[4], what + ": file list dimension");
         // Checked against the volume before any name is made: a corrupt range cannot loop long.
-        for (long long k : numberRange(first, last, step, std::min(n[0] * n[1] * n[2], kMaxDataFiles), what))
+        for (long long k : numberRange(first, last, step, std::min(n[0] * n[1] * n[2], kMaxMetaDataFiles), what))
             files.push_back(folder / formatFileNumber(words[0], k, what));
     } else {
         subdim = static_cast<long long>(spatial);

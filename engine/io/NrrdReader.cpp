@@ -19,10 +19,10 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr std::size_t kMaxHeaderBytes = 1 << 20;  // headers are tiny; a MiB is absurd already
+constexpr std::size_t kMaxNrrdHeaderBytes = 1 << 20;  // headers are tiny; a MiB is absurd already
 constexpr int kMaxAxes = 16;                      // NRRD_DIM_MAX
 // More slice files than this is a corrupt header, not a CT.
-constexpr long long kMaxDataFiles = 1 << 20;
+constexpr long long kMaxNrrdDataFiles = 1 << 20;
 
 ScalarType nrrdScalarType(const std::string& raw, const std::string& what) {
     // Collapse runs of spaces: "unsigned   short" is the same type.
@@ -152,7 +152,7 @@ std::uintmax_t skipLines(const fs::path& path, std::uintmax_t offset, long long 
 
 Volume readNrrd(const fs::path& path) {
     const std::string what = quoted(path);
-    const Bytes head = readFilePrefix(path, kMaxHeaderBytes);
+    const Bytes head = readFilePrefix(path, kMaxNrrdHeaderBytes);
     const std::string_view text(reinterpret_cast<const char*>(head.data()), head.size());
 
     std::size_t pos = 0;
@@ -190,7 +190,7 @@ Volume readNrrd(const fs::path& path) {
             listMode = true;
     }
     if (!headerEnded && pos < text.size())
-        throw Error(what + ": NRRD header is larger than " + std::to_string(kMaxHeaderBytes) +
+        throw Error(what + ": NRRD header is larger than " + std::to_string(kMaxNrrdHeaderBytes) +
                     " bytes");
     const std::size_t attachedStart = pos;
     auto field = [&](const char* key) -> const std::string* {
@@ -372,7 +372,7 @@ Volume readNrrd(const fs::path& path) {
             const long long step = parseInteger(words[3], what + ": data file step");
             subdim = nd - 1;
             if (words.size() > 4) subdim = parseInteger(words[4], what + ": data file dimension");
-            for (long long k : numberRange(first, last, step, std::min(n[0] * n[1] * n[2], kMaxDataFiles), what))
+            for (long long k : numberRange(first, last, step, std::min(n[0] * n[1] * n[2], kMaxNrrdDataFiles), what))
                 files.push_back(resolve(formatFileNumber(words[0], k, what)));
         } else {
             files.push_back(resolve(*df));

@@ -14,7 +14,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr std::size_t kMaxHeaderBytes = 1 << 16;  // the header is ~10 short lines
+constexpr std::size_t kMaxVtkHeaderBytes = 1 << 16;  // the header is ~10 short lines
 
 ScalarType vtkScalarType(const std::string& name, const std::string& what) {
     static const std::map<std::string, ScalarType> kTypes = {
@@ -36,7 +36,7 @@ ScalarType vtkScalarType(const std::string& name, const std::string& what) {
 
 Volume readLegacyVtk(const fs::path& path) {
     const std::string what = quoted(path);
-    const Bytes head = readFilePrefix(path, kMaxHeaderBytes);
+    const Bytes head = readFilePrefix(path, kMaxVtkHeaderBytes);
     const std::string_view text(reinterpret_cast<const char*>(head.data()), head.size());
     std::size_t pos = 0;
     std::string line;

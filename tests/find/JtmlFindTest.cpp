@@ -85,7 +85,7 @@ TEST(JtmlFind, BothImplantsFoundInOneRunWithNoStart) {
             const AnswerCheck check =
                 checkAnswer(scene.objects[k], c.answer.worldFromObject, {view}, scene.cameras, c.evidence, 0);
             const CameraPoseDifference d = cameraPoseDifference(scene.cameras[0], truth, c.answer.worldFromObject, pivot);
-            for (const std::string& line : describeFindStages(*r.found[k])) std::printf("  %s %s\n", implant.name, line.c_str());
+            for (const std::string& line : describeFindStages(r.found[k]->stages)) std::printf("  %s %s\n", implant.name, line.c_str());
             const SeenPose seen = seenFrom(cameraAxes(scene.cameras[0]), truth, pivot);
             std::printf("  %s: truth seen at pixel %.0f %.0f, depth %.0f mm, roll %.1f, tilts %.1f %.1f deg\n", implant.name,
                         seen.pixel.x, seen.pixel.y, seen.depth, seen.rollDeg, seen.tiltUDeg, seen.tiltVDeg);

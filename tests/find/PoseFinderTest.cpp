@@ -70,7 +70,7 @@ TEST(PoseFinder, FindsAnAsymmetricObjectAnywhereInTheImage) {
     EXPECT_LT(d.rotationDeg, 2.0);
     const AnswerCheck check = checkAnswer(scene.objects[0], c.answer.worldFromObject, {view}, scene.cameras, c.evidence, 0);
     EXPECT_EQ(check.verdict, AnswerVerdict::Ok) << check.text;
-    for (const std::string& line : describeFindStages(*r.found[0])) std::printf("%s\n", line.c_str());
+    for (const std::string& line : describeFindStages(r.found[0]->stages)) std::printf("%s\n", line.c_str());
     for (const FoundCandidate& f : r.found[0]->candidates) {
         const SeenPose s = seenFrom(axes, f.worldFromObject, pivot);
         std::printf("candidate %.4f: pixel %.1f %.1f depth %.1f roll %.1f tilts %.1f %.1f\n", f.similarity, s.pixel.x, s.pixel.y,

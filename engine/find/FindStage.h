@@ -1,0 +1,29 @@
+#pragma once
+// One stage of a search with no start (find/PoseFinder.h, find/ViewFinder.h): its name, wall
+// time, work and what it hands on, printed one line each.
+#include <chrono>
+#include <string>
+#include <vector>
+
+namespace fm {
+
+struct FindStage {
+    std::string name;     // "templates", "scan", "refine", "finish"
+    double seconds = 0.0; // wall
+    long long evaluations = 0;  // renders (templates), template placements (scan), searches' evaluations
+    int kept = 0;         // what goes on to the next stage
+};
+
+using FindClock = std::chrono::steady_clock;
+// Wall seconds from `start` to now: a stage's time.
+inline double secondsSince(FindClock::time_point start) {
+    return std::chrono::duration<double>(FindClock::now() - start).count();
+}
+
+// The stages' wall times summed.
+double findSeconds(const std::vector<FindStage>& stages);
+
+// One line per stage: "scan        0.41 s   52992 placements -> 24 hypotheses".
+std::vector<std::string> describeFindStages(const std::vector<FindStage>& stages);
+
+}  // namespace fm
