@@ -395,3 +395,30 @@ TEST(Scene, BothModesMeetInOneGeometry) {
 }
 
 }  // namespace
+
+// poseOfSceneCamera inverts sceneGeometry: every pose of the 2011 ranges (poles aside, where
+// azimuth means nothing) comes back from its camera, also a camera with another set-up and
+// volume centre; at a pole the camera comes back even though the azimuth does not.
+TEST(Pose, SceneCameraGivesItsPoseBack) {
+    fm::SceneSetup setup = fm::defaultSceneSetup();
+    setup.sourceToIsocenterMm = 620.0;
+    setup.isocenterToFilmMm = 410.0;
+    const glm::dvec3 centre{12.0, -30.0, 140.0};
+    const fm::Pose poses[] = {fm::Pose{}, fm::parsePose("33,31.5,-14,33.1,-22.1,-20.4"),
+                              fm::parsePose("-40,12,7,-179.5,60,89"), fm::parsePose("5,-3,4,180,-89,-90"),
+                              fm::parsePose("0,0,0,-90,0,45")};
+    for (const fm::Pose& p : poses) {
+        const fm::Pose back = fm::poseOfSceneCamera(fm::sceneGeometry(p, setup, centre), setup, centre);
+        const std::string what = fm::formatPose(p);
+        for (int i = 0; i < 3; ++i) EXPECT_NEAR(back.offset[i], p.offset[i], kPositionTolMm) << what;
+        EXPECT_NEAR(std::remainder(back.azimuthDeg - p.azimuthDeg, 360.0), 0.0, 1e-9) << what;
+        EXPECT_NEAR(back.elevationDeg, p.elevationDeg, 1e-9) << what;
+        EXPECT_NEAR(back.rotationDeg, p.rotationDeg, 1e-9) << what;
+    }
+    const fm::Pose pole = fm::parsePose("3,4,5,70,90,10");
+    const fm::ProjectionGeometry g = fm::sceneGeometry(pole, setup, centre);
+    const fm::ProjectionGeometry back = fm::sceneGeometry(fm::poseOfSceneCamera(g, setup, centre), setup, centre);
+    EXPECT_LT(glm::length(back.source - g.source), kPositionTolMm);
+    EXPECT_LT(glm::length(back.detector.u - g.detector.u), kUnitTol * 10);
+    EXPECT_LT(glm::length(back.detector.origin - g.detector.origin), kPositionTolMm);
+}
