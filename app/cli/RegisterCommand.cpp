@@ -27,6 +27,7 @@
 #include "cli/ValueChecks.h"
 #include "cli/VolumeOption.h"
 #include "core/Error.h"
+#include "find/ViewFinder.h"
 #include "match/PoseError.h"
 #include "scene/VolumeScene.h"
 #include "search/AnswerVerdict.h"
@@ -197,7 +198,7 @@ const std::vector<fm::cli::CommandMode>& registerModes() {
                          "pose", "biplane", "no-rest", "footprint-margin", "values", "runs", "max-runs"})},
             {"register", "a CT against one image, the 2011 pose",
              withSearch({"volume", "reference-pose", "reference", "geometry", "start", "truth",
-                         "values", "runs", "max-runs"})}};
+                         "values", "runs", "max-runs", "find-space"})}};
     }();
     return modes;
 }
@@ -245,6 +246,15 @@ void runRegister(const RegisterArgs& a, bool similarityGiven, int frame) {
         throw fm::Error("--reference needs --geometry g.json (the image's projection geometry)");
     fm::RegistrationSettings settings = fm::cli::registrationSettings(a.search);
     fm::cli::useWholeCtSpeedups(settings, a.search);
+    // The 2011 scene with no start: the pose is found (find/ViewFinder.h). A calibrated camera
+    // (--geometry) is its own start: the search begins there.
+    const bool findPose = synthetic && singleStart(a).empty();
+    if (!findPose && !a.xray.findSpace.empty())
+        throw fm::Error("--find-space applies to register --reference-pose with no --start (the pose found from "
+                        "nothing)");
+    fm::ViewFindSettings find;
+    if (!a.xray.findSpace.empty()) find.space = fm::parseViewSpace(a.xray.findSpace, "--find-space");
+    find.threads = settings.threads;
 
     const fm::Volume volume = fm::loadVolume(a.volume);
     const fm::DrrVolumePtr prepared = fm::cli::prepareForSearch(volume, a.search.values);
@@ -286,7 +296,17 @@ void runRegister(const RegisterArgs& a, bool similarityGiven, int frame) {
     else
         std::printf("reference   %s (%d x %d), geometry %s\n", a.reference.c_str(), reference.width,
                     reference.height, a.geometry.c_str());
-    std::printf("start       %s\n", fm::formatPose(start).c_str());
+    std::optional<fm::FoundView> found;
+    if (findPose) {
+        std::printf("find        %s\n", fm::describeViewSpace(find.space).c_str());
+        found = fm::findScenePose(prepared, setup, volume.center(), reference, settings, find);
+        for (const std::string& line : fm::describeFindStages(found->stages))
+            std::printf("found       %s\n", line.c_str());
+        start = found->candidates.front().pose;
+        std::printf("found at    %s (%.2f s)\n", fm::formatPose(start).c_str(), fm::findSeconds(found->stages));
+    } else {
+        std::printf("start       %s\n", fm::formatPose(start).c_str());
+    }
     const fm::Registration registration(fm::volumeScene(prepared), parameterization,
                                         {{0, reference, {}}}, settings);
     // The registration's own settings: levels finer than the voxels are left out.
@@ -317,7 +337,7 @@ void runRegister(const RegisterArgs& a, bool similarityGiven, int frame) {
         std::printf("\n%-14s %9s %9s %9s %9s %9s %9s\n", "", "x mm", "y mm", "z mm", "az deg",
                     "el deg", "rot deg");
         printPoseRow("truth", truth->toArray());
-        printPoseRow("start error", fm::poseDifference(*truth, start));
+        printPoseRow(found ? "found error" : "start error", fm::poseDifference(*truth, start));
         printPoseRow("final error", fm::poseDifference(*truth, finalPose));
         const auto targets = fm::registrationTargets(volume);
         const fm::TargetRegistrationError before =
@@ -325,9 +345,9 @@ void runRegister(const RegisterArgs& a, bool similarityGiven, int frame) {
         const fm::TargetRegistrationError after =
             fm::targetRegistrationError(model(*truth), model(finalPose), targets);
         std::printf(
-            "\nmTRE        start %.3f mm -> final %.3f mm (in-plane %.3f mm, "
+            "\nmTRE        %s %.3f mm -> final %.3f mm (in-plane %.3f mm, "
             "out-of-plane %.3f mm; %zu targets)\n",
-            before.meanMm, after.meanMm, after.meanInPlaneMm, after.meanDepthMm, targets.size());
+            found ? "found" : "start", before.meanMm, after.meanMm, after.meanInPlaneMm, after.meanDepthMm, targets.size());
     }
     std::printf("time        %.3f s (%d evaluations in %zu %s, %.2f ms each)%s\n", result.seconds,
                 result.evaluations, confirmed.runs.size(), confirmed.runs.size() == 1 ? "search" : "searches",
@@ -348,6 +368,24 @@ void runRegister(const RegisterArgs& a, bool similarityGiven, int frame) {
                     fm::describeUncertainty(confirmed.uncertainty, &names).c_str());
     }
     if (synthetic) fm::judgeAgainstPerfectMatch(evidence, result.similarity, registration.referenceSelfSimilarity());
+    if (found) {
+        // The searches started around the found pose and share its basin, right or wrong: the
+        // match against the reference's own must confirm it, and a different answer of the
+        // finder that fits nearly as well is a rival.
+        evidence.agreementConfirms = false;
+        if (found->candidates.size() > 1) {
+            const fm::ViewCandidate& other = found->candidates[1];
+            const double ceiling = registration.referenceSelfSimilarity();
+            const auto shortfall = [&](double similarity) { return std::max(ceiling - similarity, fm::kShortfallFloor); };
+            const auto d = fm::poseDifference(finalPose, other.pose);
+            evidence.rival = fm::AnswerEvidence::Rival{
+                shortfall(other.similarity) / shortfall(result.similarity),
+                fm::targetRegistrationError(model(finalPose), model(other.pose), fm::registrationTargets(volume))
+                    .meanInPlaneMm,
+                std::max({std::abs(d[3]), std::abs(d[4]), std::abs(d[5])})};
+            std::printf("rival       %s (similarity %.5f)\n", fm::formatPose(other.pose).c_str(), other.similarity);
+        }
+    }
     std::printf("verdict     %s\n", fm::judgeEvidence(evidence).text.c_str());
 }
 
@@ -366,7 +404,8 @@ FM_REGISTER_COMMAND("register", 40, [](CLI::App& app) {
     refPose->excludes(ref);
     cmd->add_option("--geometry", a->geometry, "Projection geometry JSON of --reference");
     cmd->add_option("--start", a->start,
-                    "Start pose x,y,z,az,el,rot (default 0,0,0,0,0,0); with --model: a .jts or "
+                    "Start pose x,y,z,az,el,rot (none: with --reference-pose the pose is found from "
+                    "nothing, see --find-space; with --geometry the calibrated camera); with --model: a .jts or "
                     ".tra file (row --frame) or x,y,z,zrot,xrot,yrot, one per --model (or one "
                     ".tra for all), 'find' for a model to be found (none given: all are found, "
                     "see --find-space); with --trial: a .tra (its pose at --frame; default the "
