@@ -85,8 +85,12 @@ void findHardDraws(const Volume& volume, const char* name) {
         const Pose best = found.candidates.front().pose;
         const double mtre = targetRegistrationError(draw.pose, best, setup, volume.center(), targets).meanMm;
         met += mtre < 1.0;
-        std::printf("%s draw %2d (%s) truth %s found %s: mTRE %.3f mm, %.2f s\n", name, seed, draw.view.c_str(),
-                    formatPose(draw.pose).c_str(), formatPose(best).c_str(), mtre, findSeconds(found.stages));
+        // Which of the scan's hypotheses (by its rank) the answer came from, and each stage's time.
+        std::printf("%s draw %2d (%s) truth %s found %s: mTRE %.3f mm, %.2f s, hypothesis %d;", name, seed,
+                    draw.view.c_str(), formatPose(draw.pose).c_str(), formatPose(best).c_str(), mtre,
+                    findSeconds(found.stages), found.candidates.front().hypothesis);
+        for (const FindStage& stage : found.stages) std::printf(" %s %.2f", stage.name.c_str(), stage.seconds);
+        std::printf("\n");
     }
     std::printf("%s: %d of %d within 1 mm\n", name, met, draws);
     EXPECT_GE(met, static_cast<int>(std::ceil(0.95 * draws))) << name;
