@@ -62,6 +62,33 @@ void Solver::start(std::shared_ptr<const LoadedScene> scene, Image reference, co
            });
 }
 
+void Solver::startFind(std::shared_ptr<const LoadedScene> scene, Image reference, RegistrationSettings settings,
+                       ViewFindSettings find) {
+    launch(settings.method, Pose{},
+           [this, scene = std::move(scene), reference = std::move(reference), settings, find](
+               const auto& prepared, const RegistrationCallback&, const std::atomic<bool>* stop) {
+               prepared(0, 0);
+               const FoundView found =
+                   findScenePose(scene->drrVolume, scene->setup, scene->center, reference, settings, find, stop,
+                                 [this](const char* stage) { publishStage(std::string("find: ") + stage); });
+               if (found.candidates.empty()) throw Error("find: stopped before any pose was found");
+               RegistrationResult result;
+               result.params = found.candidates.front().pose.toArray();
+               result.similarity = found.candidates.front().similarity;
+               for (const FindStage& stage : found.stages)
+                   if (stage.name == "refine" || stage.name == "finish")
+                       result.evaluations += static_cast<int>(stage.evaluations);
+               result.stopped = found.stopped;
+               return result;
+           });
+}
+
+void Solver::publishStage(std::string stage) {
+    std::lock_guard lock(mutex_);
+    snapshot_.stage = std::move(stage);
+    ++snapshot_.version;
+}
+
 void Solver::startBone(Scene scene, std::string bone, std::vector<Image> references,
                        RegistrationSettings settings) {
     const SceneParams start = boneParameterization(scene, bone)->referenceParams();

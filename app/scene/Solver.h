@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "core/Image.h"
+#include "find/ViewFinder.h"
 #include "geometry/Pose.h"
 #include "scene/LoadedScene.h"
 #include "search/Registration.h"
@@ -53,6 +54,11 @@ class Solver {
     // settings' seed and thread count.
     void start(std::shared_ptr<const LoadedScene> scene, Image reference, const Pose& start,
                RegistrationSettings settings);
+    // The same with no start (engine findScenePose): the pose found from nothing over the search
+    // space of `find`, its stages ("find: scan", ...) as the snapshot's stage; the snapshot's
+    // start is the centre pose. The best candidate is the answer.
+    void startFind(std::shared_ptr<const LoadedScene> scene, Image reference, RegistrationSettings settings,
+                   ViewFindSettings find);
     // One bone of `scene` registered alone against `references` (one per camera of the scene,
     // camera 0 the user's), the others where they are (engine registerBone). The snapshot's
     // poses are then the bone's six search numbers (boneParameterization(scene, bone)), not a
@@ -78,6 +84,7 @@ class Solver {
         const std::function<void(int budget, int levels)>& prepared,
         const RegistrationCallback& progress, const std::atomic<bool>* stop)>;
     void launch(SearchMethod method, const Pose& start, Search search);
+    void publishStage(std::string stage);
 
     mutable std::mutex mutex_;
     std::thread worker_;

@@ -131,6 +131,7 @@ struct Timings {
 struct SolveStatus {
     int method = 3;  // index into kSolveMethods (default CMA-ES)
     bool running = false;
+    bool find = false;      // a search with no start (Find), not from the user's pose (Solve)
     bool finished = false;  // a result is shown (completed or stopped)
     bool stopped = false;
     std::string error;
@@ -168,6 +169,7 @@ struct Requests {
     bool newReference = false;
     bool match = false;
     bool solve = false;          // start the search (stops a running one first)
+    bool find = false;           // the same with no start: the pose found from nothing
     bool stopSolve = false;      // end it, keeping the best pose so far
     bool applySolution = false;  // set the sliders to the solver's pose
     bool reveal = false;

@@ -245,7 +245,7 @@ void App::newReference() {
     solveShownPose_.reset();
 }
 
-void App::startSolve() {
+void App::startSolve(bool find) {
     if (!scene_) return;
     const int method = std::clamp(state_.solve.method, 0, kSolveMethodCount - 1);
     const BonesState& bones = state_.bones;
@@ -260,6 +260,13 @@ void App::startSolve() {
                              " (Bones tab), or choose the camera.";
         return;
     }
+    if (find && (state_.mode != ImagingMode::Xray || boneToSolve() >= 0)) {
+        solver_.stop();
+        state_.solve = SolveStatus{method};
+        state_.solve.error = "Find searches the camera's pose from nothing: it needs the X-ray mode and the camera "
+                             "as the target.";
+        return;
+    }
     if (state_.mode == ImagingMode::Slice) {
         SampledSlice reference =
             renderAppSlice(*scene_, state_.referencePose, 1, options_.drrThreads);
@@ -271,10 +278,14 @@ void App::startSolve() {
         startBoneSolve(method, bone);
     } else {
         solveBone_ = -1;
-        startXraySolve(method);
+        if (find)
+            startFind(method);
+        else
+            startXraySolve(method);
     }
     state_.solve = SolveStatus{method};
     state_.solve.running = true;
+    state_.solve.find = find;
     state_.solve.bone = solveBone_;
     solveJudged_ = false;
     solveShownPose_ = state_.userPose;
@@ -289,6 +300,21 @@ void App::startXraySolve(int method) {
             .image;
     solver_.start(scene_, reference, state_.userPose,
                   appSolveSettings(parseSearchMethod(kSolveMethods[method]), options_.drrThreads));
+}
+
+void App::startFind(int method) {
+    const Image reference =
+        referenceCache_.get(*scene_, state_.referencePose, 1, options_.drrThreads, ImagingMode::Xray,
+                            {}, referenceSpectrum())
+            .image;
+    // The registration `register` runs on a CT (block means at coarse levels, no level finer than
+    // the voxels), over the default search space (the hard reference draws).
+    RegistrationSettings settings = appSolveSettings(parseSearchMethod(kSolveMethods[method]), options_.drrThreads);
+    settings.coarseVolumeRatio = 1.25;
+    settings.dropLevelsFinerThanVoxels = true;
+    ViewFindSettings find;
+    find.threads = options_.drrThreads;
+    solver_.startFind(scene_, reference, settings, find);
 }
 
 void App::pollSolver() {
@@ -309,7 +335,8 @@ void App::pollSolver() {
     out.bestPose = s.bestPose;
     out.candidate = s.candidate;
     out.elapsedMs = s.elapsedMs;
-    if (s.running && solveBone_ < 0 &&
+    // The user pane follows a Solve's best pose; a Find has none to show until it ends.
+    if (s.running && solveBone_ < 0 && !out.find &&
         state_.frame >= solveShownFrame_ + kSolveDisplayEveryFrames) {
         solveShownPose_ = s.bestPose;
         solveShownFrame_ = state_.frame;
@@ -366,7 +393,7 @@ void App::processRequests() {
         solver_.stop();
         pollSolver();
     }
-    if (requests.solve) startSolve();
+    if (requests.solve || requests.find) startSolve(requests.find);
     if (requests.applySolution && state_.solve.finished && state_.solve.bone >= 0 &&
         state_.solve.bone < int(state_.bones.list.size())) {
         const auto specs = boneMotionSpecs();

@@ -106,8 +106,10 @@ class App : public ScriptableApp {
                      std::chrono::steady_clock::time_point inputTime);
     ImageEdgeLetters edgeLetters(const Pose& pose) const;  // of the image at `pose` (mode's)
     void newReference();
-    void startSolve();
+    // Solve (from the user's pose) or Find (the camera's pose from nothing: X-ray mode, the camera).
+    void startSolve(bool find = false);
     void startXraySolve(int method);
+    void startFind(int method);  // the camera's pose found from nothing (find/ViewFinder)
     void recordAttempt(MatchOutcome outcome);  // counts it as the latest, best-so-far tracked
     void pollSolver();
     // `factor`, `fullTriangles`: the display surface's coarsening (scene/DisplaySurface.h).

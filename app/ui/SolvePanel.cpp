@@ -31,6 +31,18 @@ void Ui::solveSection(AppState& state) {
     } else {
         if (ImGui::Button("Solve")) state.requests.solve = true;
         record("button:solve");
+        // Find: the camera's pose from nothing (the X-ray mode, the camera as the target).
+        const BonesState& bones = state.bones;
+        const bool cameraTarget = bones.sliderTarget < 0 || bones.sliderTarget >= int(bones.list.size());
+        if (state.mode == ImagingMode::Xray && cameraTarget && !bones.flex.active) {
+            ImGui::SameLine();
+            if (ImGui::Button("Find")) state.requests.find = true;
+            record("button:find");
+            if (ImGui::IsItemHovered())
+                tooltip("Find the camera's pose from nothing: the CT's DRR from every direction, "
+                        "turned, scaled and shifted over the reference, the best refined and "
+                        "registered (azimuth any, elevation +-45, rotation +-30 deg, offsets +-40 mm)");
+        }
     }
     solveTarget(state);
     if (!solve.error.empty()) coloredWrapped(kBad, solve.error);
@@ -43,14 +55,17 @@ void Ui::solveSection(AppState& state) {
                        bones.list[target].name.c_str(), bones.isKnee ? "flex" : "move");
         else
             dimWrapped("Solve: the automatic search from your pose, to compare with your "
-                       "attempts.");
+                       "attempts. Find: the same with no start, from nothing.");
         return;
     }
 
     char overlay[160];
-    std::snprintf(overlay, sizeof(overlay), "level %d/%d %s  %d/%d", solve.level + 1,
-                  std::max(1, solve.levelCount), solve.stage.c_str(), solve.evaluations,
-                  solve.budget);
+    if (solve.find && solve.running)  // the finder's stages have no budget to count against
+        std::snprintf(overlay, sizeof(overlay), "%s", solve.stage.c_str());
+    else
+        std::snprintf(overlay, sizeof(overlay), "level %d/%d %s  %d/%d", solve.level + 1,
+                      std::max(1, solve.levelCount), solve.stage.c_str(), solve.evaluations,
+                      solve.budget);
     const float fraction =
         solve.budget > 0 ? std::min(1.0f, float(solve.evaluations) / float(solve.budget)) : 0.0f;
     ImGui::ProgressBar(solve.finished && !solve.stopped ? 1.0f : fraction, ImVec2(-1.0f, 0.0f),
@@ -83,9 +98,10 @@ void Ui::solveSection(AppState& state) {
         solve.matched ? "The computer's answer matches the reference."
                       : std::string("No match: the computer's answer is ") +
                             closenessName(solve.closeness) +
-                            (solve.closeness == Closeness::Far ? " from" : " to") +
-                            " the reference. It searches around your pose: start closer and "
-                            "Solve again.";
+                            (solve.closeness == Closeness::Far ? " from" : " to") + " the reference." +
+                            (solve.find ? " The reference may lie outside Find's search space, or look alike "
+                                          "from another side: Solve from a pose near it."
+                                        : " It searches around your pose: start closer and Solve again.");
     if (solve.stopped) verdict += " (stopped)";
     coloredWrapped(solve.matched ? kGood : kWarn, verdict);
     record("text:solve-verdict");

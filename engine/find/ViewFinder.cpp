@@ -74,7 +74,7 @@ Pose placementPose(const ViewTemplate& view, const ViewPlacement& placement, con
 
 FoundView findScenePose(const DrrVolumePtr& volume, const SceneSetup& setup, const glm::dvec3& volumeCenter,
                         const Image& reference, const RegistrationSettings& finish, const ViewFindSettings& settings,
-                        const std::atomic<bool>* stop) {
+                        const std::atomic<bool>* stop, const FindStageCallback& onStage) {
     validate(settings);
     validateSceneSetup(setup);
     if (!volume) throw Error("find: no volume");
@@ -95,6 +95,10 @@ FoundView findScenePose(const DrrVolumePtr& volume, const SceneSetup& setup, con
 
     // 1. Templates at the finer scan's pitch through block means no coarser than its rays at the
     //    isocenter, on a film wide enough for every turn, scale and shift.
+    const auto starting = [&](const char* stage) {
+        if (onStage) onStage(stage);
+    };
+    starting("templates");
     auto t0 = FindClock::now();
     const double pitch = fine.scan.pitchMm;
     const int coarsen = coarseningFactor(std::min({drrVolumeInfo(*volume).spacing.x, drrVolumeInfo(*volume).spacing.y,
@@ -114,6 +118,7 @@ FoundView findScenePose(const DrrVolumePtr& volume, const SceneSetup& setup, con
                             static_cast<int>(templates.templates.size())});
 
     // 2. Scan: every placement on the coarser image, the best again on the finer one.
+    starting("scan");
     t0 = FindClock::now();
     std::vector<ViewPlacement> placed = scanViews(coarse.scan, halvedTemplates(templates), grid, maxShiftMm, threads);
     const long long placements = static_cast<long long>(placed.size()) * coarse.image.width * coarse.image.height;
@@ -123,12 +128,17 @@ FoundView findScenePose(const DrrVolumePtr& volume, const SceneSetup& setup, con
     const std::vector<ViewPlacement> hypotheses =
         distinctViews(std::move(placed), templates, grid, 2.0 * pitch, static_cast<std::size_t>(settings.hypotheses));
     found.stages.push_back({"scan", secondsSince(t0), placements, static_cast<int>(hypotheses.size())});
-    if (stopped()) {
+    const auto poseOf = [&](const ViewPlacement& h) {
+        return placementPose(templates.templates[static_cast<std::size_t>(h.templateIndex)], h, setup, volumeCenter);
+    };
+    if (stopped()) {  // the scan's best as it stands (its similarity: the scan's NCC)
         found.stopped = true;
+        if (!hypotheses.empty()) found.candidates.push_back({poseOf(hypotheses.front()), hypotheses.front().ncc, 0, 0});
         return found;
     }
 
     // 3. Refine: each hypothesis polished at the scan's level and the next finer one.
+    starting("refine");
     t0 = FindClock::now();
     const auto parameterization = std::make_shared<Pose2011Parameterization>(setup, volumeCenter);
     const Scene scene = volumeScene(volume);
@@ -158,10 +168,7 @@ FoundView findScenePose(const DrrVolumePtr& volume, const SceneSetup& setup, con
     std::vector<Refined> refined(hypotheses.size());
     parallelFor(static_cast<int>(hypotheses.size()), threads, [&](int begin, int end) {
         for (int k = begin; k < end; ++k) {
-            const ViewPlacement& h = hypotheses[static_cast<std::size_t>(k)];
-            const Pose start = placementPose(templates.templates[static_cast<std::size_t>(h.templateIndex)], h, setup,
-                                             volumeCenter);
-            const RegistrationResult r = refinement.run(start.toArray(), {}, stop);
+            const RegistrationResult r = refinement.run(poseOf(hypotheses[static_cast<std::size_t>(k)]).toArray(), {}, stop);
             refined[static_cast<std::size_t>(k)] = {r.pose(), -r.similarity, r.evaluations, k};
         }
     }, 4);
@@ -170,12 +177,16 @@ FoundView findScenePose(const DrrVolumePtr& volume, const SceneSetup& setup, con
     std::stable_sort(refined.begin(), refined.end(), [](const Refined& a, const Refined& b) { return a.cost < b.cost; });
     const std::size_t finalists = std::min(refined.size(), static_cast<std::size_t>(settings.finalists));
     found.stages.push_back({"refine", secondsSince(t0), refineEvaluations, static_cast<int>(finalists)});
-    if (stopped()) {
+    if (stopped()) {  // the refinement's best as it stands (its similarity at 1/4)
         found.stopped = true;
+        if (!refined.empty())
+            found.candidates.push_back({refined.front().pose, -refined.front().cost, refined.front().hypothesis,
+                                        refined.front().evaluations});
         return found;
     }
 
     // 4. Finish: the finalists registered fully, side by side.
+    starting("finish");
     t0 = FindClock::now();
     const Registration full(scene, parameterization, {{0, reference, {}}}, finish);
     const int each = finalists >= static_cast<std::size_t>(threads) ? 1 : threads;

@@ -12,6 +12,7 @@
 //      runs), answers that agree merged, best first.
 // Deterministic for a given input, whatever the thread count.
 #include <atomic>
+#include <functional>
 #include <vector>
 
 #include "core/Image.h"
@@ -45,17 +46,24 @@ struct ViewCandidate {
 };
 
 struct FoundView {
-    std::vector<ViewCandidate> candidates;  // distinct answers of stage 4, best first
+    // Distinct answers of stage 4, best first; when stopped earlier, the best of the last stage
+    // that ended (empty only if stopped before the scan ended with a hypothesis).
+    std::vector<ViewCandidate> candidates;
     std::vector<FindStage> stages;
     bool stopped = false;
 };
 
+// Told the name of each stage as it starts ("templates", "scan", "refine", "finish"), on the
+// calling thread: what a progress display shows.
+using FindStageCallback = std::function<void(const char* stage)>;
+
 // The CT `volume` (centre `volumeCenter`) in the 2011 scene of `setup`; `reference` has the film's
-// size. `finish` is the registration of stage 4 (`register`'s). Throws fm::Error for a reference
-// of another size or settings out of range.
+// size. `finish` is the registration of stage 4 (`register`'s). Setting *stop ends it after the
+// current stage's searches (the candidates so far, `stopped` set). Throws fm::Error for a
+// reference of another size or settings out of range.
 FoundView findScenePose(const DrrVolumePtr& volume, const SceneSetup& setup, const glm::dvec3& volumeCenter,
                         const Image& reference, const RegistrationSettings& finish, const ViewFindSettings& settings,
-                        const std::atomic<bool>* stop = nullptr);
+                        const std::atomic<bool>* stop = nullptr, const FindStageCallback& onStage = {});
 
 // The pose whose image is `placement` of template `view`: the camera turned about its axis by the
 // roll, moved along it for the scale and sideways for the shift, then turned about the source so

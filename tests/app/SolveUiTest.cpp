@@ -1,6 +1,8 @@
 // The Solve section: the automatic search run from the UI on a worker thread, driven headless
 // through the real buttons and checked against the known reference pose (the truth).
 #include <chrono>
+#include <set>
+#include <string>
 #include <thread>
 
 #include "AppFixture.h"
@@ -183,6 +185,40 @@ TEST_F(SolveUi, StopEndsTheRunPromptlyAndKeepsTheBestSoFar) {
     EXPECT_EQ(solve.matched, judged.match);
     EXPECT_EQ(solve.closeness, judged.closeness);
     EXPECT_TRUE(samePose(app->state().userPose, start)) << "Stop does not apply the solution";
+}
+
+// Find: the camera's pose from nothing (engine findScenePose). The user stays at the centre pose,
+// far from the reference; the finder's stages are shown as it goes, the user pane stays the
+// user's (there is no best pose to follow before the end), and the answer is judged like an
+// attempt: a match, well under the tolerances.
+TEST_F(SolveUi, FindReachesTheReferenceFromNothing) {
+    const Pose centre{};
+    app->state().userPose = centre;
+    script->idle(1);
+    // Twice the capture range of a search from a start (10 mm mTRE, docs/search.md).
+    ASSERT_GT(mtre(centre), 20.0) << "the centre pose must be far from the reference";
+    script->clickWidget("tab:solve");
+    script->idle(1);
+    script->clickWidget("button:find");
+    ASSERT_TRUE(app->state().solve.running) << app->state().solve.error;
+    EXPECT_TRUE(app->state().solve.find);
+    std::set<std::string> stages;
+    for (int frames = 0; app->state().solve.running && frames < kMaxSolveFrames; ++frames) {
+        step();
+        stages.insert(app->state().solve.stage);
+        ASSERT_TRUE(samePose(app->state().userPose, centre)) << "Find moved the sliders";
+        ASSERT_TRUE(samePose(app->shownUserPose(), centre)) << "the user pane left the user's pose";
+    }
+    const app::SolveStatus& solve = app->state().solve;
+    ASSERT_TRUE(solve.finished) << solve.error;
+    EXPECT_FALSE(solve.stopped);
+    EXPECT_TRUE(stages.count("find: scan") || stages.count("find: refine") || stages.count("find: finish"))
+        << "no stage of the finder shown";
+    EXPECT_GT(solve.evaluations, 0);
+    EXPECT_NEAR(solve.poseErrorMm, mtre(solve.bestPose), kSameComputationMm);
+    EXPECT_LT(solve.poseErrorMm, kSolvedMtreMm);
+    EXPECT_TRUE(solve.matched);
+    EXPECT_TRUE(samePose(app->state().userPose, centre)) << "finished, but not applied";
 }
 
 TEST_F(SolveUi, ReloadingTheSceneOrANewReferenceEndsTheSolve) {
