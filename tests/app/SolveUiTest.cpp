@@ -221,6 +221,28 @@ TEST_F(SolveUi, FindReachesTheReferenceFromNothing) {
     EXPECT_TRUE(samePose(app->state().userPose, centre)) << "finished, but not applied";
 }
 
+// Stop during a Find ends it after the stage under way and keeps that stage's best: a pose, not
+// the centre it started from, judged like any answer.
+TEST_F(SolveUi, StopEndsAFindAndKeepsTheBestOfItsLastStage) {
+    app->state().userPose = Pose{};
+    script->clickWidget("tab:solve");
+    script->idle(1);
+    script->clickWidget("button:find");
+    int frames = 0;
+    while (app->state().solve.running && app->state().solve.stage.rfind("find: ", 0) != 0 &&
+           frames++ < kMaxSolveFrames)
+        step();
+    ASSERT_TRUE(app->state().solve.running) << "finished before Stop could be pressed";
+    script->clickWidget("button:stop-solve");
+    const app::SolveStatus& solve = app->state().solve;
+    EXPECT_FALSE(solve.running);
+    ASSERT_TRUE(solve.finished) << solve.error;
+    EXPECT_TRUE(solve.stopped);
+    EXPECT_FALSE(samePose(solve.bestPose, Pose{})) << "a stage's best is kept, not the start";
+    EXPECT_NEAR(solve.poseErrorMm, mtre(solve.bestPose), kSameComputationMm);
+    EXPECT_TRUE(samePose(app->state().userPose, Pose{})) << "Stop does not apply the answer";
+}
+
 TEST_F(SolveUi, ReloadingTheSceneOrANewReferenceEndsTheSolve) {
     app->state().userPose = startPose();
     solve();
