@@ -6,7 +6,8 @@
 #     mTRE below 1 mm, the verdict ok;
 #  2. a narrower --find-space is the one searched (its line, fewer templates) (Release only);
 #  3. refused before any search, naming the option and the key: --find-space with a --start or a
-#     calibrated camera (--geometry), the mesh finder's keys, values out of range.
+#     calibrated camera (--geometry), the mesh finder's keys, values out of range; a reference with
+#     nothing of the CT on it.
 set -uo pipefail
 FM=$1
 QUICK=${FM_FIND_TEST_QUICK:-0}
@@ -55,4 +56,5 @@ refuse "an elevation of 100 deg" "elevation must be 0 to 90" --reference-pose "$
 refuse "a rotation that is not a number" "rotation" --reference-pose "$truth" --find-space rotation=abc
 refuse "an offset of 0" "offset must be above 0" --reference-pose "$truth" --find-space offset=0
 refuse "no key" "expected key=value" --reference-pose "$truth" --find-space 40
+refuse "a reference with nothing of the CT on it" "the reference is uniform" --reference-pose 400,0,0,0,0,0
 echo "cli find scene: all checks passed"

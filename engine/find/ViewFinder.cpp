@@ -37,15 +37,17 @@ glm::dvec3 turnedLike(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3
 // A pyramid level of the reference with its pitch and principal point.
 struct Level {
     Image image;
-    ViewScanImage scan;
+    double pitchMm = 1.0;
+    glm::dvec2 principal{0.0};
+    ViewScanImage scan() const { return {&image, pitchMm, principal}; }
 };
 Level levelOf(const Image& reference, const SceneSetup& setup, int factor) {
     Level l;
     l.image = downsampleBy(reference, factor);
-    const glm::dvec2 pitch = setup.filmSizeMm / glm::dvec2(setup.filmPixels);
+    l.pitchMm = setup.filmSizeMm.x / setup.filmPixels.x * factor;
     // A level pixel is the mean of factor^2 film pixels: its centre sits (factor - 1) / 2 in.
     const glm::dvec2 centre = 0.5 * (glm::dvec2(setup.filmPixels) - 1.0);
-    l.scan = {&l.image, pitch.x * factor, (centre - 0.5 * (factor - 1)) / double(factor)};
+    l.principal = (centre - 0.5 * (factor - 1)) / double(factor);
     return l;
 }
 
@@ -80,6 +82,8 @@ FoundView findScenePose(const DrrVolumePtr& volume, const SceneSetup& setup, con
     if (!volume) throw Error("find: no volume");
     if (reference.width != setup.filmPixels.x || reference.height != setup.filmPixels.y)
         throw Error("find: the reference's size differs from the film's");
+    const auto [low, high] = std::minmax_element(reference.pixels.begin(), reference.pixels.end());
+    if (!(*high > *low)) throw Error("find: the reference is uniform (nothing of the CT on the film?): nothing to find");
     const int threads = settings.threads > 0 ? settings.threads : defaultThreadCount();
     const auto stopped = [&] { return stop && stop->load(); };
     FoundView found;
@@ -100,10 +104,9 @@ FoundView findScenePose(const DrrVolumePtr& volume, const SceneSetup& setup, con
     };
     starting("templates");
     auto t0 = FindClock::now();
-    const double pitch = fine.scan.pitchMm;
-    const int coarsen = coarseningFactor(std::min({drrVolumeInfo(*volume).spacing.x, drrVolumeInfo(*volume).spacing.y,
-                                                   drrVolumeInfo(*volume).spacing.z}),
-                                         pitch * s / sid, 1.25);
+    const double pitch = fine.pitchMm;
+    const glm::dvec3 voxel = drrVolumeInfo(*volume).spacing;
+    const int coarsen = coarseningFactor(std::min({voxel.x, voxel.y, voxel.z}), pitch * s / sid, 1.25);
     const DrrVolumePtr traced = coarsen > 1 ? coarsenDrrVolume(*volume, coarsen, threads) : volume;
     ViewScanGrid grid;
     grid.rollsDeg = evenGrid(settings.space.rotationDeg, settings.rollStepDeg);
@@ -120,11 +123,12 @@ FoundView findScenePose(const DrrVolumePtr& volume, const SceneSetup& setup, con
     // 2. Scan: every placement on the coarser image, the best again on the finer one.
     starting("scan");
     t0 = FindClock::now();
-    std::vector<ViewPlacement> placed = scanViews(coarse.scan, halvedTemplates(templates), grid, maxShiftMm, threads);
-    const long long placements = static_cast<long long>(placed.size()) * coarse.image.width * coarse.image.height;
+    std::vector<ViewPlacement> placed = scanViews(coarse.scan(), halvedTemplates(templates), grid, maxShiftMm, threads);
+    const int shifts = 2 * scanShiftPixels(maxShiftMm, coarse.pitchMm) + 1;
+    const long long placements = static_cast<long long>(placed.size()) * shifts * shifts;
     std::stable_sort(placed.begin(), placed.end(), [](const ViewPlacement& a, const ViewPlacement& b) { return a.ncc > b.ncc; });
     placed.resize(std::min(placed.size(), static_cast<std::size_t>(settings.rescored)));
-    placed = rescoreViews(fine.scan, templates, std::move(placed), 2, threads);
+    placed = rescoreViews(fine.scan(), templates, std::move(placed), 2, threads);
     const std::vector<ViewPlacement> hypotheses =
         distinctViews(std::move(placed), templates, grid, 2.0 * pitch, static_cast<std::size_t>(settings.hypotheses));
     found.stages.push_back({"scan", secondsSince(t0), placements, static_cast<int>(hypotheses.size())});

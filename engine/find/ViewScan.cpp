@@ -101,13 +101,17 @@ void checkReference(const ViewScanImage& reference) {
 
 }  // namespace
 
+int scanShiftPixels(double maxShiftMm, double pitchMm) {
+    return std::max(1, static_cast<int>(std::ceil(maxShiftMm / pitchMm)));
+}
+
 std::vector<ViewPlacement> scanViews(const ViewScanImage& reference, const ViewTemplates& templates,
                                      const ViewScanGrid& grid, double maxShiftMm, int threads) {
     checkReference(reference);
     if (grid.rollsDeg.empty() || grid.scales.empty() || templates.templates.empty())
         throw Error("view scan: no template, roll or scale to scan");
     const Centred ref = centred(*reference.image);
-    const int margin = std::max(1, static_cast<int>(std::ceil(maxShiftMm / reference.pitchMm)));
+    const int margin = scanShiftPixels(maxShiftMm, reference.pitchMm);
     const std::size_t perTemplate = grid.rollsDeg.size() * grid.scales.size();
     std::vector<ViewPlacement> out(templates.templates.size() * perTemplate);
     parallelFor(static_cast<int>(out.size()), threads, [&](int begin, int end) {

@@ -34,6 +34,9 @@ struct ViewScanImage {
     glm::dvec2 principal{0.0};  // where the central ray meets it (pixel coordinates)
 };
 
+// The shifts scanViews tries along each film axis: -n..n pixels of `pitchMm` for maxShiftMm.
+int scanShiftPixels(double maxShiftMm, double pitchMm);
+
 // The best shift (up to maxShiftMm along each film axis) of every (template, roll, scale), side
 // by side on `threads`; results in that order whatever the thread count.
 std::vector<ViewPlacement> scanViews(const ViewScanImage& reference, const ViewTemplates& templates,
