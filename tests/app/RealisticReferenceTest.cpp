@@ -1,6 +1,7 @@
 // The game's realistic reference (AppState::realistic): the checkbox turns the reference into a
 // realistic radiograph of the same pose (engine/spectral), still the same anatomy (correlated with
-// the DRR, not equal to it), Solve still finds the hidden pose against it, and it is offered only
+// the DRR, not equal to it), Solve (and Find, from nothing) still finds the hidden pose against it,
+// and it is offered only
 // while the reference is the whole CT.
 #include <chrono>
 #include <cmath>
@@ -58,6 +59,27 @@ TEST_F(RealisticReference, SolveFindsTheHiddenPoseAgainstIt) {
     script->clickWidget("tab:solve");
     script->idle(1);
     script->clickWidget("button:solve");
+    for (int frames = 0; app->state().solve.running && frames < kMaxSolveFrames; ++frames) {
+        script->idle(1);
+        std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+    const app::SolveStatus& solve = app->state().solve;
+    ASSERT_TRUE(solve.finished) << solve.error;
+    const app::LoadedScene& s = *app->scene();
+    EXPECT_LT(targetRegistrationError(app->state().referencePose, solve.bestPose, s.setup, s.center, s.bonePoints).meanMm,
+              kSolvedMtreMm);
+}
+
+// Find (no start: from the centre pose, 25 mm mTRE away) against the realistic radiograph: its
+// DRR templates correlate with the radiograph as the DRR does.
+TEST_F(RealisticReference, FindFindsTheHiddenPoseFromNothingAgainstIt) {
+    app->state().realistic.enabled = true;
+    app->state().userPose = Pose{};
+    script->idle(1);
+    script->clickWidget("tab:solve");
+    script->idle(1);
+    script->clickWidget("button:find");
+    ASSERT_TRUE(app->state().solve.find);
     for (int frames = 0; app->state().solve.running && frames < kMaxSolveFrames; ++frames) {
         script->idle(1);
         std::this_thread::sleep_for(std::chrono::milliseconds(2));
