@@ -1,8 +1,7 @@
 // The game's realistic reference (AppState::realistic): the checkbox turns the reference into a
 // realistic radiograph of the same pose (engine/spectral), still the same anatomy (correlated with
 // the DRR, not equal to it), Solve (and Find, from nothing) still finds the hidden pose against it,
-// and it is offered only
-// while the reference is the whole CT.
+// and it is offered only while the reference is the whole CT.
 #include <chrono>
 #include <cmath>
 #include <thread>
