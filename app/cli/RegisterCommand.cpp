@@ -378,12 +378,17 @@ void runRegister(const RegisterArgs& a, bool similarityGiven, int frame) {
             const double ceiling = registration.referenceSelfSimilarity();
             const auto shortfall = [&](double similarity) { return std::max(ceiling - similarity, fm::kShortfallFloor); };
             const auto d = fm::poseDifference(finalPose, other.pose);
-            evidence.rival = fm::AnswerEvidence::Rival{
+            const fm::AnswerEvidence::Rival rival{
                 shortfall(other.similarity) / shortfall(result.similarity),
                 fm::targetRegistrationError(model(finalPose), model(other.pose), fm::registrationTargets(volume))
                     .meanInPlaneMm,
                 std::max({std::abs(d[3]), std::abs(d[4]), std::abs(d[5])})};
-            std::printf("rival       %s (similarity %.5f)\n", fm::formatPose(other.pose).c_str(), other.similarity);
+            // The confirmation may have ended where the finder's second answer was: then it is the
+            // answer, not a rival.
+            if (rival.inPlaneMm > confirmation.agreeInPlaneMm || rival.rotationDeg > confirmation.agreeRotationDeg) {
+                evidence.rival = rival;
+                std::printf("rival       %s (similarity %.5f)\n", fm::formatPose(other.pose).c_str(), other.similarity);
+            }
         }
     }
     std::printf("verdict     %s\n", fm::judgeEvidence(evidence).text.c_str());

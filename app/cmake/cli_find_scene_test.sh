@@ -4,7 +4,8 @@
 #  1. a hard reference drawn by the app (seed 6: a PA view, every parameter hidden, offsets up to
 #     40 mm) found from nothing: the search space line, the four stages, "found at", the final
 #     mTRE below 1 mm, the verdict ok;
-#  2. a narrower --find-space is the one searched (its line, fewer templates) (Release only);
+#  2. a narrower --find-space is the one searched (its line, fewer templates) (Release only); a
+#     cylinder (the same from many sides) is not said to be found for sure, the other answer named;
 #  3. refused before any search, naming the option and the key: --find-space with a --start or a
 #     calibrated camera (--geometry), the mesh finder's keys, values out of range; a reference with
 #     nothing of the CT on it.
@@ -37,6 +38,13 @@ if [ "$QUICK" != 1 ]; then
     grep -q "^found       templates .* 180 renders" <<<"$out" || fail "not 180 templates: $out"
     grep -q "^verdict     ok" <<<"$out" || fail "narrower space: verdict not ok: $out"
 fi
+
+# A cylinder looks the same from many sides: whatever pose is found, it is not said to be sure, and
+# the finder's other answer is named.
+out=$("$FM" register --volume phantom:cylinder --reference-pose 10,5,-8,40,10,5 --threads 2 2>&1) ||
+    fail "register of the cylinder exited $?: $out"
+grep -q "^rival       " <<<"$out" || fail "the cylinder's other answer is not named: $out"
+grep -q "^verdict     ok" <<<"$out" && fail "a symmetric CT's pose said ok: $out"
 
 refuse() {  # refuse WHAT PATTERN args...
     local what=$1 pattern=$2; shift 2
