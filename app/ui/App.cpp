@@ -293,20 +293,18 @@ void App::startSolve(bool find) {
     pollSolver();
 }
 
+Image App::xrayReference() {
+    return referenceCache_.get(*scene_, state_.referencePose, 1, options_.drrThreads, ImagingMode::Xray, {},
+                               referenceSpectrum())
+        .image;
+}
+
 void App::startXraySolve(int method) {
-    const Image reference =
-        referenceCache_.get(*scene_, state_.referencePose, 1, options_.drrThreads, ImagingMode::Xray,
-                            {}, referenceSpectrum())
-            .image;
-    solver_.start(scene_, reference, state_.userPose,
+    solver_.start(scene_, xrayReference(), state_.userPose,
                   appSolveSettings(parseSearchMethod(kSolveMethods[method]), options_.drrThreads));
 }
 
 void App::startFind(int method) {
-    const Image reference =
-        referenceCache_.get(*scene_, state_.referencePose, 1, options_.drrThreads, ImagingMode::Xray,
-                            {}, referenceSpectrum())
-            .image;
     // The registration `register` runs on a CT (block means at coarse levels, no level finer than
     // the voxels), over the default search space (the hard reference draws).
     RegistrationSettings settings = appSolveSettings(parseSearchMethod(kSolveMethods[method]), options_.drrThreads);
@@ -314,7 +312,7 @@ void App::startFind(int method) {
     settings.dropLevelsFinerThanVoxels = true;
     ViewFindSettings find;
     find.threads = options_.drrThreads;
-    solver_.startFind(scene_, reference, settings, find);
+    solver_.startFind(scene_, xrayReference(), settings, find);
 }
 
 void App::pollSolver() {

@@ -108,6 +108,7 @@ class App : public ScriptableApp {
     void newReference();
     // Solve (from the user's pose) or Find (the camera's pose from nothing: X-ray mode, the camera).
     void startSolve(bool find = false);
+    Image xrayReference();  // the reference as Solve and Find compare with it (full film, realistic or not)
     void startXraySolve(int method);
     void startFind(int method);  // the camera's pose found from nothing (find/ViewFinder)
     void recordAttempt(MatchOutcome outcome);  // counts it as the latest, best-so-far tracked
