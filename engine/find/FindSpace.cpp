@@ -7,16 +7,24 @@
 
 namespace fm {
 
-FindSpace parseFindSpace(const std::string& text, const std::string& option) {
-    FindSpace space;
-    const std::string keys = " (tilt=DEG, roll=DEG, depth=NEAR:FAR as fractions of the source-to-detector distance)";
+void forEachKeyValue(const std::string& text, const std::string& option, const std::string& keysHelp,
+                     const std::function<void(const std::string& key, const std::string& value)>& each) {
     std::size_t start = 0;
     while (start < text.size()) {
         const std::size_t comma = text.find(',', start);
         const std::string part = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
         const std::size_t eq = part.find('=');
-        if (eq == std::string::npos) throw Error(option + " \"" + text + "\": expected key=value" + keys);
-        const std::string key = part.substr(0, eq), value = part.substr(eq + 1);
+        if (eq == std::string::npos) throw Error(option + " \"" + text + "\": expected key=value" + keysHelp);
+        each(part.substr(0, eq), part.substr(eq + 1));
+        if (comma == std::string::npos) break;
+        start = comma + 1;
+    }
+}
+
+FindSpace parseFindSpace(const std::string& text, const std::string& option) {
+    FindSpace space;
+    const std::string keys = " (tilt=DEG, roll=DEG, depth=NEAR:FAR as fractions of the source-to-detector distance)";
+    forEachKeyValue(text, option, keys, [&](const std::string& key, const std::string& value) {
         if (key == "tilt") {
             space.tiltDeg = io::parseFinite(value, option + " tilt");
             if (!(space.tiltDeg >= 0.0 && space.tiltDeg <= 90.0)) throw Error(option + ": tilt must be 0 to 90 deg");
@@ -51,9 +59,7 @@ FindSpace parseFindSpace(const std::string& text, const std::string& option) {
         } else {
             throw Error(option + ": unknown \"" + key + "\"" + keys);
         }
-        if (comma == std::string::npos) break;
-        start = comma + 1;
-    }
+    });
     return space;
 }
 

@@ -9,6 +9,7 @@
 // view sees the .jts poses within a few degrees of it); a user with another convention widens
 // the tilt. Rotations are relative to the ray through the pivot, so an object seen off the
 // optical axis has the same search space as one on it.
+#include <functional>
 #include <string>
 
 namespace fm {
@@ -31,6 +32,11 @@ struct FindSpace {
     double nearDepth(double distance) const { return nearMm > 0.0 ? nearMm : nearFraction * distance; }
     double farDepth(double distance) const { return farMm > 0.0 ? farMm : farFraction * distance; }
 };
+
+// Calls `each(key, value)` for every comma-separated key=value of `text` in order. Throws fm::Error
+// naming `option` (and `keysHelp`, what the keys are) for a part without '='.
+void forEachKeyValue(const std::string& text, const std::string& option, const std::string& keysHelp,
+                     const std::function<void(const std::string& key, const std::string& value)>& each);
 
 // "tilt=35,roll=180,depth=0.25:0.92" (any subset, any order) over the defaults; depth in mm as
 // "depth=600mm:1400mm". Throws fm::Error naming `option` and the key for an unknown key, a value

@@ -9,6 +9,7 @@
 #include "core/Parallel.h"
 #include "find/OrientedEdges.h"
 #include "find/OutlineTemplates.h"
+#include "find/RefineHypotheses.h"
 #include "find/SeenPose.h"
 #include "find/TemplateScan.h"
 #include "scene/ObjectPoseParameterization.h"
@@ -171,39 +172,26 @@ FoundPose findObjectPose(const Scene& scene, std::size_t object, const Registrat
     middle.depth = templates.depth;
     const auto parameterization = std::make_shared<ObjectPoseParameterization>(
         target.name, camera, worldFromSeen(axes, middle, pivot), pivot, DepthSearch::AlongRay);
-    RegistrationSettings refine = finish;
-    refine.levelFactors = {settings.refineFactor, settings.refineFactor / 2};
-    refine.method = SearchMethod::NelderMead;
-    refine.globalEvaluations = settings.refineEvaluations;
-    refine.polishEvaluations = settings.refineEvaluations / 2;
-    refine.finestPolishEvaluations = -1;
-    refine.polishCoarsest = false;
-    refine.hypothesisTiltDeg = 0.0;
-    refine.depthRounds = 2;
     const double atObject = scanPixelMm * templates.depth / axes.distance;  // a scan pixel at the middle depth
-    refine.searchRadius = {0.5 * atObject, 0.5 * atObject, templates.depth * (settings.scaleStep - 1.0),
-                           0.5 * settings.tiltStepDeg, 0.5 * settings.tiltStepDeg, 0.5 * settings.rollStepDeg};
-    refine.depthStepMm = 0.5 * refine.searchRadius[2];
-    refine.threads = 1;
+    const RegistrationSettings refine = refinementSettings(
+        finish, {settings.refineFactor, settings.refineFactor / 2}, settings.refineEvaluations,
+        {0.5 * atObject, 0.5 * atObject, templates.depth * (settings.scaleStep - 1.0), 0.5 * settings.tiltStepDeg,
+         0.5 * settings.tiltStepDeg, 0.5 * settings.rollStepDeg});
     const Registration refinement(alone, parameterization, {view}, refine);
+    std::vector<SceneParams> starts;
+    for (const ScanHypothesis& h : hypotheses) starts.push_back(parameterization->paramsOf(poseOf(h)));
     struct Refined {
         RigidTransform pose;
         double cost = 0.0;
         int evaluations = 0;
         int hypothesis = 0;
     };
-    std::vector<Refined> refined(hypotheses.size());
-    parallelFor(static_cast<int>(hypotheses.size()), threads, [&](int begin, int end) {
-        for (int k = begin; k < end; ++k) {
-            const SceneParams start = parameterization->paramsOf(poseOf(hypotheses[static_cast<std::size_t>(k)]));
-            const RegistrationResult r = refinement.run(start, {}, stop);
-            refined[static_cast<std::size_t>(k)] = {parameterization->worldFromObject(r.params), -r.similarity,
-                                                    r.evaluations, k};
-        }
-    }, 4);
+    std::vector<Refined> refined;
     int refineEvaluations = 0;
-    for (const Refined& r : refined) refineEvaluations += r.evaluations;
-    std::stable_sort(refined.begin(), refined.end(), [](const Refined& a, const Refined& b) { return a.cost < b.cost; });
+    for (const RefinedHypothesis& r : refineHypotheses(refinement, starts, threads, stop)) {
+        refined.push_back({parameterization->worldFromObject(r.params), r.cost, r.evaluations, r.hypothesis});
+        refineEvaluations += r.evaluations;
+    }
     const std::size_t finalists = std::min(refined.size(), static_cast<std::size_t>(settings.finalists));
     found.stages.push_back({"refine", secondsSince(t0), refineEvaluations, static_cast<int>(finalists)});
     if (stopped()) {

@@ -6,6 +6,7 @@
 #include "core/Error.h"
 #include "core/Parallel.h"
 #include "find/OutlineTemplates.h"
+#include "find/RefineHypotheses.h"
 #include "match/PoseError.h"
 #include "scene/CoarseVolumes.h"
 #include "scene/SceneParameterization.h"
@@ -146,46 +147,24 @@ FoundView findScenePose(const DrrVolumePtr& volume, const SceneSetup& setup, con
     t0 = FindClock::now();
     const auto parameterization = std::make_shared<Pose2011Parameterization>(setup, volumeCenter);
     const Scene scene = volumeScene(volume);
-    RegistrationSettings refine = finish;
-    refine.levelFactors = {scanFactor, scanFactor / 2};
-    refine.dropLevelsFinerThanVoxels = false;
-    refine.method = SearchMethod::NelderMead;
-    refine.globalEvaluations = settings.refineEvaluations;
-    refine.polishEvaluations = settings.refineEvaluations / 2;
-    refine.finestPolishEvaluations = -1;
-    refine.polishCoarsest = false;
-    refine.hypothesisTiltDeg = 0.0;
-    refine.tiltRounds = 0;
-    refine.depthRounds = 2;
     const double atIsocenter = pitch * s / sid;
-    refine.searchRadius = {0.5 * atIsocenter, 0.5 * atIsocenter, s * (settings.scaleStep - 1.0),
-                           0.5 * settings.templateStepDeg, 0.5 * settings.templateStepDeg, 0.5 * settings.rollStepDeg};
-    refine.depthStepMm = 0.5 * refine.searchRadius[2];
-    refine.threads = 1;
-    const Registration refinement(scene, parameterization, {{0, reference, {}}}, refine);
-    struct Refined {
-        Pose pose;
-        double cost = 0.0;
-        int evaluations = 0;
-        int hypothesis = 0;
-    };
-    std::vector<Refined> refined(hypotheses.size());
-    parallelFor(static_cast<int>(hypotheses.size()), threads, [&](int begin, int end) {
-        for (int k = begin; k < end; ++k) {
-            const RegistrationResult r = refinement.run(poseOf(hypotheses[static_cast<std::size_t>(k)]).toArray(), {}, stop);
-            refined[static_cast<std::size_t>(k)] = {r.pose(), -r.similarity, r.evaluations, k};
-        }
-    }, 4);
+    const Registration refinement(
+        scene, parameterization, {{0, reference, {}}},
+        refinementSettings(finish, {scanFactor, scanFactor / 2}, settings.refineEvaluations,
+                           {0.5 * atIsocenter, 0.5 * atIsocenter, s * (settings.scaleStep - 1.0),
+                            0.5 * settings.templateStepDeg, 0.5 * settings.templateStepDeg, 0.5 * settings.rollStepDeg}));
+    std::vector<SceneParams> starts;
+    for (const ViewPlacement& h : hypotheses) starts.push_back(poseOf(h).toArray());
+    const std::vector<RefinedHypothesis> refined = refineHypotheses(refinement, starts, threads, stop);
     int refineEvaluations = 0;
-    for (const Refined& r : refined) refineEvaluations += r.evaluations;
-    std::stable_sort(refined.begin(), refined.end(), [](const Refined& a, const Refined& b) { return a.cost < b.cost; });
+    for (const RefinedHypothesis& r : refined) refineEvaluations += r.evaluations;
     const std::size_t finalists = std::min(refined.size(), static_cast<std::size_t>(settings.finalists));
     found.stages.push_back({"refine", secondsSince(t0), refineEvaluations, static_cast<int>(finalists)});
     if (stopped()) {  // the refinement's best as it stands (its similarity at 1/4)
         found.stopped = true;
         if (!refined.empty())
-            found.candidates.push_back({refined.front().pose, -refined.front().cost, refined.front().hypothesis,
-                                        refined.front().evaluations});
+            found.candidates.push_back({Pose::fromArray(refined.front().params), -refined.front().cost,
+                                        refined.front().hypothesis, refined.front().evaluations});
         return found;
     }
 
@@ -198,7 +177,7 @@ FoundView findScenePose(const DrrVolumePtr& volume, const SceneSetup& setup, con
     parallelFor(static_cast<int>(finalists), each == 1 ? threads : 1, [&](int begin, int end) {
         for (int k = begin; k < end; ++k) {
             const Registration mine(full, parameterization, each);
-            const RegistrationResult r = mine.run(refined[static_cast<std::size_t>(k)].pose.toArray(), {}, stop);
+            const RegistrationResult r = mine.run(refined[static_cast<std::size_t>(k)].params, {}, stop);
             answers[static_cast<std::size_t>(k)] = {r.pose(), r.similarity, refined[static_cast<std::size_t>(k)].hypothesis,
                                                     r.evaluations};
         }

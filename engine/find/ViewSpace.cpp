@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "core/Error.h"
+#include "find/FindSpace.h"
 #include "io/HeaderText.h"
 
 namespace fm {
@@ -10,13 +11,7 @@ namespace fm {
 ViewSpace parseViewSpace(const std::string& text, const std::string& option) {
     ViewSpace space;
     const std::string keys = " (elevation=DEG, rotation=DEG, offset=MM: the 2011 scene's search space)";
-    std::size_t start = 0;
-    while (start < text.size()) {
-        const std::size_t comma = text.find(',', start);
-        const std::string part = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
-        const std::size_t eq = part.find('=');
-        if (eq == std::string::npos) throw Error(option + " \"" + text + "\": expected key=value" + keys);
-        const std::string key = part.substr(0, eq), value = part.substr(eq + 1);
+    forEachKeyValue(text, option, keys, [&](const std::string& key, const std::string& value) {
         if (key == "elevation" || key == "rotation") {
             const double v = io::parseFinite(value, option + " " + key);
             if (!(v >= 0.0 && v <= 90.0)) throw Error(option + ": " + key + " must be 0 to 90 deg");
@@ -28,9 +23,7 @@ ViewSpace parseViewSpace(const std::string& text, const std::string& option) {
         } else {
             throw Error(option + ": unknown \"" + key + "\"" + keys);
         }
-        if (comma == std::string::npos) break;
-        start = comma + 1;
-    }
+    });
     return space;
 }
 
