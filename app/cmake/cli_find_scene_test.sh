@@ -46,13 +46,8 @@ out=$("$FM" register --volume phantom:cylinder --reference-pose 10,5,-8,40,10,5 
 grep -q "^rival       " <<<"$out" || fail "the cylinder's other answer is not named: $out"
 grep -q "^verdict     ok" <<<"$out" && fail "a symmetric CT's pose said ok: $out"
 
-refuse() {  # refuse WHAT PATTERN args...
-    local what=$1 pattern=$2; shift 2
-    msg=$("$FM" register "$@" 2>&1) && fail "$what accepted"
-    grep -q -- "$pattern" <<<"$msg" || fail "$what: message does not say '$pattern': $msg"
-    grep -q "^found" <<<"$msg" && fail "$what: refused only after the search"
-    return 0
-}
+REFUSED_BEFORE="^found"
+source "$(dirname "$0")/cli_refuse.sh"
 "$FM" geometry --pose 0,0,0,0,0,0 >"$OUT/g.json" || fail "geometry"
 "$FM" drr --pose 0,0,0,0,0,0 --out "$OUT/ref.png" >/dev/null || fail "drr"
 refuse "--find-space with a --start" "applies to register --reference-pose with no --start" \

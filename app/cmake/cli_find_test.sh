@@ -50,13 +50,8 @@ if [ "$QUICK" != 1 ]; then
     grep -q "^start .*(found)" <<<"$out" || fail "the found start is not marked: $out"
 fi
 
-refuse() {  # refuse WHAT PATTERN args...
-    local what=$1 pattern=$2; shift 2
-    msg=$("$FM" register "$@" 2>&1) && fail "$what accepted"
-    grep -q -- "$pattern" <<<"$msg" || fail "$what: message does not say '$pattern': $msg"
-    grep -q "^found" <<<"$msg" && fail "$what: refused only after the search"
-    return 0
-}
+REFUSED_BEFORE="^found"
+source "$(dirname "$0")/cli_refuse.sh"
 base=(--reference "$IMG" --camera "$CAL" --model "$FEM" --invert --frame 2)
 refuse "--find-space with every start given" "applies to models with no start" "${base[@]}" --start "$D/fem.jts" --find-space tilt=20
 refuse "an unknown key" 'unknown "spin"' "${base[@]}" --find-space spin=3

@@ -77,13 +77,8 @@ assert twice[:16] == twice[16:], (twice[:16], twice[16:])
 assert twice[:16] == alone, (twice[:16], alone)
 PY
 
-refuse() {  # refuse WHAT PATTERN args...
-    local what=$1 pattern=$2; shift 2
-    msg=$("$FM" register "$@" 2>&1) && fail "$what accepted"
-    grep -q -- "$pattern" <<<"$msg" || fail "$what: message does not say '$pattern': $msg"
-    grep -q "^final pose" <<<"$msg" && fail "$what: refused only after the search"
-    return 0
-}
+REFUSED_BEFORE="^final pose"
+source "$(dirname "$0")/cli_refuse.sh"
 base=(--reference "$IMG" --camera "$CAL" --model "$FEM" --invert)
 printf 'JT_EULER_312\nx,y,z,zr,xr,yr\n1,2,3,4,5\n' > "$OUT/five.jts"
 refuse "a .jts row with five numbers" "five.jts: line 3" "${base[@]}" --start "$OUT/five.jts"
