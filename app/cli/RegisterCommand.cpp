@@ -373,6 +373,7 @@ void runRegister(const RegisterArgs& a, bool similarityGiven, int frame) {
         // match against the reference's own must confirm it, and a different answer of the
         // finder that fits nearly as well is a rival.
         evidence.agreementConfirms = false;
+        if (evidence.similarityRatio) evidence.confirmedRatio = fm::kConfirmedFoundPerfectMatchRatio;
         if (found->candidates.size() > 1) {
             const fm::ViewCandidate& other = found->candidates[1];
             const double ceiling = registration.referenceSelfSimilarity();

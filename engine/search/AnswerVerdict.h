@@ -27,6 +27,12 @@ inline constexpr double kLostSimilarityRatio = 0.5;
 // nearly 1 (the knee phantom, cmaes with small budgets: every success at 0.958 or more, misses of
 // 1.2-3.3 mm at 0.92-0.958; docs/search.md, "Verdicts").
 inline constexpr double kConfirmedPerfectMatchRatio = 0.96;
+// The same for a pose found with no start (find/ViewFinder, `register --reference-pose` with no
+// --start), whose confirming searches all start in its basin: right answers after the full
+// registration scored 0.99998 (the knee phantom) and 0.995-0.999 (example_ct, its finest level
+// left out); a pose of the analytic cylinder 43 mm mTRE off, on which both confirming searches
+// agreed, 0.97 (docs/find.md).
+inline constexpr double kConfirmedFoundPerfectMatchRatio = 0.99;
 // Real radiographs, edge distance: a perfect outline match scores 1 (every outline pixel on an
 // image edge). On the JTML frames every start that ended within 1 mm / 2 deg scored at least
 // 0.90 and every miss at most 0.913, from starts 2.5x the range (docs/real-xray.md,
