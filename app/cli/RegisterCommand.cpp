@@ -333,21 +333,26 @@ void runRegister(const RegisterArgs& a, bool similarityGiven, int frame) {
     std::printf("\nfinal pose  %s\n", fm::formatPose(finalPose).c_str());
     std::printf("similarity  %.5f (%s at the finest level)\n", result.similarity,
                 fm::toString(settings.similarity));
+    // The bone's target points (mTRE), made once if needed.
+    std::optional<std::vector<glm::dvec3>> targetPoints;
+    const auto targets = [&]() -> const std::vector<glm::dvec3>& {
+        if (!targetPoints) targetPoints = fm::registrationTargets(volume);
+        return *targetPoints;
+    };
     if (truth) {
         std::printf("\n%-14s %9s %9s %9s %9s %9s %9s\n", "", "x mm", "y mm", "z mm", "az deg",
                     "el deg", "rot deg");
         printPoseRow("truth", truth->toArray());
         printPoseRow(found ? "found error" : "start error", fm::poseDifference(*truth, start));
         printPoseRow("final error", fm::poseDifference(*truth, finalPose));
-        const auto targets = fm::registrationTargets(volume);
         const fm::TargetRegistrationError before =
-            fm::targetRegistrationError(model(*truth), model(start), targets);
+            fm::targetRegistrationError(model(*truth), model(start), targets());
         const fm::TargetRegistrationError after =
-            fm::targetRegistrationError(model(*truth), model(finalPose), targets);
+            fm::targetRegistrationError(model(*truth), model(finalPose), targets());
         std::printf(
             "\nmTRE        %s %.3f mm -> final %.3f mm (in-plane %.3f mm, "
             "out-of-plane %.3f mm; %zu targets)\n",
-            found ? "found" : "start", before.meanMm, after.meanMm, after.meanInPlaneMm, after.meanDepthMm, targets.size());
+            found ? "found" : "start", before.meanMm, after.meanMm, after.meanInPlaneMm, after.meanDepthMm, targets().size());
     }
     std::printf("time        %.3f s (%d evaluations in %zu %s, %.2f ms each)%s\n", result.seconds,
                 result.evaluations, confirmed.runs.size(), confirmed.runs.size() == 1 ? "search" : "searches",
@@ -367,29 +372,25 @@ void runRegister(const RegisterArgs& a, bool similarityGiven, int frame) {
         std::printf("uncertainty %s (the CT offset along the start camera's axes)\n",
                     fm::describeUncertainty(confirmed.uncertainty, &names).c_str());
     }
-    if (synthetic) fm::judgeAgainstPerfectMatch(evidence, result.similarity, registration.referenceSelfSimilarity());
+    // A found pose (always on a rendered reference) is confirmed by the perfect match alone, from
+    // a higher ratio: its confirming searches started around it and share its basin, right or wrong.
+    const double ceiling = registration.referenceSelfSimilarity();
+    if (synthetic)
+        fm::judgeAgainstPerfectMatch(evidence, result.similarity, ceiling,
+                                     found ? fm::kConfirmedFoundPerfectMatchRatio : fm::kConfirmedPerfectMatchRatio);
     if (found) {
-        // The searches started around the found pose and share its basin, right or wrong: the
-        // match against the reference's own must confirm it, and a different answer of the
-        // finder that fits nearly as well is a rival.
         evidence.agreementConfirms = false;
-        if (evidence.similarityRatio) evidence.confirmedRatio = fm::kConfirmedFoundPerfectMatchRatio;
+        // The finder's second answer, if it is a different one (beyond the search radius: nearer, it
+        // is the answer's own basin, e.g. a finalist stopped 2.9 deg short at 0.989 against 0.99998
+        // on one hard knee draw, or the answer itself), is a rival.
         if (found->candidates.size() > 1) {
             const fm::ViewCandidate& other = found->candidates[1];
-            const double ceiling = registration.referenceSelfSimilarity();
-            const auto shortfall = [&](double similarity) { return std::max(ceiling - similarity, fm::kShortfallFloor); };
             const auto d = fm::poseDifference(finalPose, other.pose);
-            const fm::AnswerEvidence::Rival rival{
-                shortfall(other.similarity) / shortfall(result.similarity),
-                fm::targetRegistrationError(model(finalPose), model(other.pose), fm::registrationTargets(volume))
-                    .meanInPlaneMm,
-                std::max({std::abs(d[3]), std::abs(d[4]), std::abs(d[5])})};
-            // A different answer: beyond the search's own reach from the answer (its start radius,
-            // as the mesh finder's rivals). Nearer, it is the answer's own basin (the finder's
-            // second finalist stopped a few degrees short: 0.7 mm / 2.9 deg at 0.989 against
-            // 0.99998 on one hard knee draw), or the answer itself.
-            if (rival.inPlaneMm > settings.searchRadius[0] || rival.rotationDeg > settings.searchRadius[3]) {
-                evidence.rival = rival;
+            const double inPlane =
+                fm::targetRegistrationError(model(finalPose), model(other.pose), targets()).meanInPlaneMm;
+            const double rotation = std::max({std::abs(d[3]), std::abs(d[4]), std::abs(d[5])});
+            if (fm::beyondSearchRadius(settings.searchRadius, inPlane, rotation)) {
+                evidence.rival = fm::rivalEvidence(result.similarity, other.similarity, ceiling, inPlane, rotation);
                 std::printf("rival       %s (similarity %.5f)\n", fm::formatPose(other.pose).c_str(), other.similarity);
             }
         }

@@ -93,8 +93,7 @@ RegistrationSettings registrationSettings(const SearchArgs& a, RegistrationSetti
 }
 
 void useWholeCtSpeedups(RegistrationSettings& settings, const SearchArgs& args) {
-    settings.coarseVolumeRatio = 1.25;
-    settings.dropLevelsFinerThanVoxels = args.levels.empty();
+    fm::useWholeCtSpeedups(settings, args.levels.empty());
 }
 
 std::string describeLevels(const RegistrationSettings& s) {

@@ -308,8 +308,7 @@ void App::startFind(int method) {
     // The registration `register` runs on a CT (block means at coarse levels, no level finer than
     // the voxels), over the default search space (the hard reference draws).
     RegistrationSettings settings = appSolveSettings(parseSearchMethod(kSolveMethods[method]), options_.drrThreads);
-    settings.coarseVolumeRatio = 1.25;
-    settings.dropLevelsFinerThanVoxels = true;
+    useWholeCtSpeedups(settings);
     ViewFindSettings find;
     find.threads = options_.drrThreads;
     solver_.startFind(scene_, xrayReference(), settings, find);

@@ -43,16 +43,12 @@ FoundRegistration registerObjectsFinding(const Scene& scene, const std::vector<b
         for (const FoundCandidate& candidate : out.found[k]->candidates) {
             const CameraPoseDifference d =
                 cameraPoseDifference(camera, c.answer.worldFromObject, candidate.worldFromObject, pivot);
-            // Within the registration's start radius it is the answer's own basin (a search from it
-            // ends at the answer), not a rival. Candidates are best first: the first beyond is it.
-            const double radiusDeg = std::max({settings.searchRadius[3], settings.searchRadius[4], settings.searchRadius[5]});
-            if (d.inPlaneMm <= std::max(settings.searchRadius[0], settings.searchRadius[1]) && d.rotationDeg <= radiusDeg)
-                continue;
+            // Within the registration's start radius it is the answer's own basin, not a rival.
+            // Candidates are best first: the first beyond is it.
+            if (!beyondSearchRadius(settings.searchRadius, d.inPlaneMm, d.rotationDeg)) continue;
             // Edge distance has a ceiling (a perfect outline match's 1) to measure shortfalls from.
             if (settings.similarity == SimilarityMeasure::EdgeDistance)
-                c.evidence.rival = AnswerEvidence::Rival{std::max(1.0 - candidate.similarity, kShortfallFloor) /
-                                                             std::max(1.0 - c.answer.similarity, kShortfallFloor),
-                                                         d.inPlaneMm, d.rotationDeg};
+                c.evidence.rival = rivalEvidence(c.answer.similarity, candidate.similarity, 1.0, d.inPlaneMm, d.rotationDeg);
             break;
         }
     }

@@ -7,7 +7,7 @@
 #include "core/Parallel.h"
 #include "find/OutlineTemplates.h"
 #include "find/RefineHypotheses.h"
-#include "match/PoseError.h"
+#include "match/MatchVerdict.h"
 #include "scene/CoarseVolumes.h"
 #include "scene/SceneParameterization.h"
 #include "scene/VolumeScene.h"
@@ -187,11 +187,10 @@ FoundView findScenePose(const DrrVolumePtr& volume, const SceneSetup& setup, con
     std::stable_sort(answers.begin(), answers.end(),
                      [](const ViewCandidate& x, const ViewCandidate& y) { return x.similarity > y.similarity; });
     for (const ViewCandidate& a : answers) {
+        // One answer when the 2011 game's judge would call them a match (every number within its
+        // tolerance: 2 mm, 2 deg).
         const bool same = std::any_of(found.candidates.begin(), found.candidates.end(), [&](const ViewCandidate& c) {
-            const auto d = poseDifference(c.pose, a.pose);
-            for (int p = 0; p < kPoseParameterCount; ++p)
-                if (std::abs(d[static_cast<std::size_t>(p)]) > 2.0) return false;
-            return true;
+            return judgeMatch(c.pose, a.pose, 0.0).match;
         });
         if (!same) found.candidates.push_back(a);
     }

@@ -1,5 +1,6 @@
 #include "search/AnswerVerdict.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -34,11 +35,21 @@ std::string format(const char* pattern, double a, double b = 0.0, double c = 0.0
 
 }  // namespace
 
-void judgeAgainstPerfectMatch(AnswerEvidence& evidence, double similarity, double ceiling) {
+void judgeAgainstPerfectMatch(AnswerEvidence& evidence, double similarity, double ceiling, double confirmedFrom) {
     if (!(ceiling > 0.0)) return;
     evidence.similarityRatio = similarity / ceiling;
     evidence.similarityReference = "a perfect match's";
-    evidence.confirmedRatio = kConfirmedPerfectMatchRatio;
+    evidence.confirmedRatio = confirmedFrom;
+}
+
+bool beyondSearchRadius(const std::array<double, 6>& radius, double inPlaneMm, double rotationDeg) {
+    return inPlaneMm > std::max(radius[0], radius[1]) || rotationDeg > std::max({radius[3], radius[4], radius[5]});
+}
+
+AnswerEvidence::Rival rivalEvidence(double answerSimilarity, double rivalSimilarity, double ceiling,
+                                    double inPlaneMm, double rotationDeg) {
+    return {std::max(ceiling - rivalSimilarity, kShortfallFloor) / std::max(ceiling - answerSimilarity, kShortfallFloor),
+            inPlaneMm, rotationDeg};
 }
 
 AnswerCheck judgeEvidence(const AnswerEvidence& evidence) {

@@ -87,9 +87,21 @@ struct AnswerCheck {
 };
 
 // The answer's similarity judged against a perfect match's (`ceiling`: the reference against
-// itself, for references the model rendered or sliced itself): ok from
-// kConfirmedPerfectMatchRatio. A ceiling that is not positive says nothing (left unset).
-void judgeAgainstPerfectMatch(AnswerEvidence& evidence, double similarity, double ceiling);
+// itself, for references the model rendered or sliced itself): ok from `confirmedFrom`
+// (kConfirmedFoundPerfectMatchRatio for a pose found with no start). A ceiling that is not
+// positive says nothing (left unset).
+void judgeAgainstPerfectMatch(AnswerEvidence& evidence, double similarity, double ceiling,
+                              double confirmedFrom = kConfirmedPerfectMatchRatio);
+
+// A candidate `inPlaneMm` / `rotationDeg` from the answer (as the camera sees them) is a different
+// answer, not the answer's own basin, when it lies beyond the search's start radius (`radius`:
+// RegistrationSettings::searchRadius, u, v, depth mm, three angles deg): a search from it would
+// not end at the answer.
+bool beyondSearchRadius(const std::array<double, 6>& radius, double inPlaneMm, double rotationDeg);
+// Its evidence as a rival: its shortfall from `ceiling` over the answer's, each at least
+// kShortfallFloor.
+AnswerEvidence::Rival rivalEvidence(double answerSimilarity, double rivalSimilarity, double ceiling,
+                                    double inPlaneMm, double rotationDeg);
 
 // The verdict of the evidence alone.
 AnswerCheck judgeEvidence(const AnswerEvidence& evidence);

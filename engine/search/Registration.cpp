@@ -211,6 +211,11 @@ Registration::Registration(Scene scene, SceneParameterizationPtr parameterizatio
     }
 }
 
+void useWholeCtSpeedups(RegistrationSettings& settings, bool dropFinerLevels) {
+    settings.coarseVolumeRatio = 1.25;
+    settings.dropLevelsFinerThanVoxels = dropFinerLevels;
+}
+
 Registration::Registration(const Registration& prepared, SceneParameterizationPtr parameterization,
                            int threads)
     : scene_(prepared.scene_),

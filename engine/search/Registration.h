@@ -115,6 +115,11 @@ struct RegistrationSettings {
     int hypothesesKept = 2;
 };
 
+// What `register`, `evaluate` and the app's Find use on a whole CT: block means at coarse levels
+// (coarseVolumeRatio 1.25) and, with `dropFinerLevels` (no levels asked for), no level finer
+// than the voxels.
+void useWholeCtSpeedups(RegistrationSettings& settings, bool dropFinerLevels = true);
+
 // One image of the registration: which camera of the scene took it, the image, and which of
 // its pixels carry image (the rest is never compared; nullopt = all).
 struct RegistrationView {

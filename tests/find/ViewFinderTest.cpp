@@ -50,9 +50,11 @@ TEST(ViewFinder, APlacedTemplateIsWhatItsPoseShows) {
         EXPECT_GT(glm::length(pose.offset), 20.0);
         const Image seen = downsampleBy(renderDrr(*prepared, sceneGeometry(pose, setup, knee.center()), {}), 8);
         const ViewScanImage image{&seen, pitch, glm::dvec2(15.5)};
-        const ViewPlacement same = rescoreViews(image, templates, {placed}, 0, 1).front();
+        // Among the shifts within 2 pixels the placed one is the best, and it correlates closely.
+        const ViewPlacement same = rescoreViews(image, templates, {placed}, 2, 1).front();
         EXPECT_GT(same.ncc, kPlacedMinNcc);
         EXPECT_NEAR(same.shiftMm.x, placed.shiftMm.x, 1e-9);
+        EXPECT_NEAR(same.shiftMm.y, placed.shiftMm.y, 1e-9);
         ViewPlacement mirrored = placed;
         mirrored.rollDeg = -roll;
         EXPECT_LT(rescoreViews(image, templates, {mirrored}, 2, 1).front().ncc, same.ncc - 0.02)
@@ -67,13 +69,13 @@ TEST(ViewFinder, APlacedTemplateIsWhatItsPoseShows) {
 void findHardDraws(const Volume& volume, const char* name) {
     const char* env = std::getenv("FM_VIEW_DRAWS");
     const int draws = env ? std::atoi(env) : test::kSanitizerBuild ? 1 : 6;
+    ASSERT_GT(draws, 0) << "FM_VIEW_DRAWS must be a positive count";
     const DrrVolumePtr prepared = prepareDrrVolume(volume, {});
     const SceneSetup setup = defaultSceneSetup();
     const auto points = boneTargetPoints(volume);
     const auto targets = registrationTargets(volume);
     RegistrationSettings finish;  // `register`'s on a whole CT
-    finish.coarseVolumeRatio = 1.25;
-    finish.dropLevelsFinerThanVoxels = true;
+    useWholeCtSpeedups(finish);
     int met = 0;
     for (int seed = 1; seed <= draws; ++seed) {
         const ReferenceDraw draw =
