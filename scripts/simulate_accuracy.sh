@@ -2,8 +2,9 @@
 # Tracking accuracy against photon count on simulated trials (docs/tracking.md, "Simulated
 # trials"): for each photon count, `simulate` a trial, `track` it from its first frame's truth and
 # `compare` it with the truth; one table row per count.
-#   bash scripts/simulate_accuracy.sh [FM] [VOLUME LABELS BONE MOTION [TABLE]]
+#   [FM_SIMULATE_ARGS="--azimuth -40 ..."] bash scripts/simulate_accuracy.sh [FM] [VOLUME LABELS BONE MOTION [TABLE]]
 # Default: the knee phantom's femur flexing 0-40 deg over 20 frames, two cameras 80 deg apart.
+# FM_SIMULATE_ARGS: more `simulate` options (word-split), the same for every row.
 set -euo pipefail
 FM=${1:-build/app/fluoromatch}
 VOLUME=${2:-phantom:knee}
@@ -18,6 +19,8 @@ echo "|---|---|---|---|---|---|---|"
 for photons in 0 100000 10000 3000 1000 300 100; do
     extra=()
     [ -n "$TABLE" ] && extra=(--label-table "$TABLE")
+    # shellcheck disable=SC2206
+    extra+=(${FM_SIMULATE_ARGS:-})
     "$FM" simulate --volume "$VOLUME" --labels "$LABELS" --bone "$BONE" --motion "$MOTION" --frames 20 \
         --photons "$photons" --out "$T/s$photons" "${extra[@]}" >/dev/null 2>&1
     start=$(date +%s.%N)

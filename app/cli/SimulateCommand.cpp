@@ -24,11 +24,13 @@ struct SimulateArgs {
     std::vector<std::string> cameras;
     int cameraCount = 2;
     double separation = 80.0;
+    double azimuth = 0.0;
     double distance = 1000.0;
     std::string size = "512x512";
     std::string motion;
     int frames = 20;
     double fill = 40.0;
+    double extendScan = 200.0;
     std::string spectrum = "80";
     double photons = 1e4;
     double electronicNoise = 0.0;
@@ -42,7 +44,7 @@ struct SimulateArgs {
 
 void runSimulate(const SimulateArgs& a, const CLI::App& cmd) {
     if (!a.cameras.empty())
-        for (const char* o : {"--camera-count", "--separation", "--distance"})
+        for (const char* o : {"--camera-count", "--separation", "--azimuth", "--distance"})
             if (cmd.count(o) > 0)
                 throw CLI::ValidationError(std::string(o) + " places cameras around the bone; --cameras gives them");
     fm::TrialSimulationSpec s;
@@ -63,6 +65,8 @@ void runSimulate(const SimulateArgs& a, const CLI::App& cmd) {
     s.motion = a.motion;
     s.frames = a.frames;
     s.fillHU = a.fill;
+    s.extendScanMm = a.extendScan;
+    s.firstAzimuthDeg = a.azimuth;
     s.spectrum = fm::parseSpectrumSpec(a.spectrum);
     s.detector.photonsPerPixel = a.photons;
     s.detector.electronicNoise = a.electronicNoise;
@@ -108,6 +112,11 @@ FM_REGISTER_COMMAND("simulate", 48, [](CLI::App& app) {
     cmd->add_option("--camera-count", a->cameraCount, "Cameras placed around the bone")->check(CLI::Range(1, 8))->capture_default_str();
     cmd->add_option("--separation", a->separation, "Degrees between them about the CT's superior axis")
         ->check(CLI::Range(1.0, 179.0))->capture_default_str();
+    cmd->add_option("--azimuth", a->azimuth,
+                    "Degrees the first camera is turned from the anterior view about the superior axis (at a hip, -40: "
+                    "both cameras oblique, neither through both hips)")
+        ->check(CLI::Range(-180.0, 180.0))
+        ->capture_default_str();
     cmd->add_option("--distance", a->distance, "Source to the bone's centre, mm")->check(CLI::Range(100.0, 10000.0))->capture_default_str();
     cmd->add_option("--size", a->size, "Image size WxH in pixels")->capture_default_str();
     cmd->add_option("--motion", a->motion,
@@ -116,6 +125,11 @@ FM_REGISTER_COMMAND("simulate", 48, [](CLI::App& app) {
     cmd->add_option("--frames", a->frames, "Frames")->check(CLI::Range(1, 100000))->capture_default_str();
     cmd->add_option("--fill", a->fill, "HU of the soft tissue left where the bone was (-1000: air, a bone in air)")
         ->check(CLI::Range(-1000.0, 200.0))
+        ->capture_default_str();
+    cmd->add_option("--extend-scan", a->extendScan,
+                    "mm the rest of the CT is continued past each face where the scan cuts the body, its last slice "
+                    "repeated (a body does not end where its scan does; 0: the scan's end shows as an edge)")
+        ->check(CLI::Range(0.0, 2000.0))
         ->capture_default_str();
     cmd->add_option("--spectrum", a->spectrum, "Tube spectrum as drr --spectrum (kVp[,filter=MM][,bin=KEV])")->capture_default_str();
     cmd->add_option("--photons", a->photons, "Photons per pixel at the exposure's reference level, the anatomy's median (Poisson noise; 0 = none)")

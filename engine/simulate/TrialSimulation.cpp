@@ -19,6 +19,7 @@
 #include "track/TrialScene.h"
 #include "trial/AutoscoperConfig.h"
 #include "trial/Trial.h"
+#include "volume/ScanExtension.h"
 
 namespace fm {
 
@@ -74,13 +75,14 @@ StackedBone stackedBone(const Volume& bone) {
 }
 
 std::vector<PinholeCamera> camerasAround(const glm::dvec3& centre, double extentMm, int count, double separationDeg,
-                                         double distanceMm, glm::ivec2 imageSize) {
+                                         double distanceMm, glm::ivec2 imageSize, double firstAzimuthDeg) {
     if (count < 1 || count > 8) throw Error("cameras: 1 to 8");
     if (!(distanceMm > extentMm)) throw Error("the source must lie outside the bone (distance > its size)");
     std::vector<PinholeCamera> cameras;
     const double f = 0.8 * std::min(imageSize.x, imageSize.y) * distanceMm / std::max(extentMm, 1.0);
     for (int k = 0; k < count; ++k) {
-        const glm::dvec3 view = rotationAbout({0, 0, 1}, k * separationDeg, glm::dvec3(0.0)).rotation * glm::dvec3(0, 1, 0);
+        const double azimuth = firstAzimuthDeg + k * separationDeg;
+        const glm::dvec3 view = rotationAbout({0, 0, 1}, azimuth, glm::dvec3(0.0)).rotation * glm::dvec3(0, 1, 0);
         const glm::dvec3 down{0, 0, -1};             // image rows go inferior
         const glm::dvec3 right = glm::cross(down, view);  // x = y x z (right-handed camera)
         PinholeCamera c;
@@ -108,7 +110,10 @@ TrialSimulationResult simulateTrial(const TrialSimulationSpec& s, const std::fun
     bone.labels = s.boneLabels;
     requireVoxels(bone, s.labels, "the label map");
     const Volume boneCt = boneVolume(s.ct, s.labels, bone);
-    const Volume backgroundCt = volumeWithout(s.ct, s.labels, bone, static_cast<float>(s.fillHU));
+    // The background continued past the scan's cut faces (volume/ScanExtension.h): no cliff
+    // where the scan ends.
+    const Volume backgroundCt =
+        extendedAcrossCutFaces(volumeWithout(s.ct, s.labels, bone, static_cast<float>(s.fillHU)), s.extendScanMm);
     Volume displaced = boneMask(s.labels, bone);
     const float fill = static_cast<float>(-std::round(1000.0 * densityFromHU(s.fillHU)));
     for (float& v : displaced.values) v = v > 0.0f ? fill : 0.0f;
@@ -117,7 +122,7 @@ TrialSimulationResult simulateTrial(const TrialSimulationSpec& s, const std::fun
     std::vector<PinholeCamera> cameras = s.cameras;
     if (cameras.empty())
         cameras = camerasAround(centre, glm::length(boneCt.extent()), s.cameraCount, s.separationDeg,
-                                s.sourceDistanceMm, s.imageSize);
+                                s.sourceDistanceMm, s.imageSize, s.firstAzimuthDeg);
     const Spectrum spectrum = makeSpectrum(s.spectrum);
     validateDetectorSettings(s.detector);
 
@@ -151,6 +156,9 @@ TrialSimulationResult simulateTrial(const TrialSimulationSpec& s, const std::fun
     trialBone.name = s.boneName;
     trialBone.volume = s.out / (s.boneName + ".tif");
     trialBone.voxelSize = boneCt.spacing;
+    // The frames show the bone's attenuation in excess of the tissue it displaces; the trial
+    // says so, and `track` renders the bone that way (stored values: HU + 1000).
+    trialBone.displacedTissue = s.fillHU + 1000.0;
     io::writeFileAtomically(trialBone.volume, io::encodeTiffStack16(stacked.volume, 1000.0));
     trial.bones.push_back(trialBone);
 

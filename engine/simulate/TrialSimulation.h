@@ -2,8 +2,10 @@
 // `fluoromatch simulate`: a whole synthetic trial with its truth, as a tracking study records
 // one, from a CT and a bone of its label map moving over the rest of it:
 //   1. the cameras: the given calibrations, or two (or more) placed around the bone, `separation`
-//      degrees apart about the CT's superior axis, looking at the bone's centre
-//   2. the scene: the CT with the bone's voxels turned to soft tissue (fillHU), the bone at its
+//      degrees apart about the CT's superior axis, the first `firstAzimuthDeg` from the anterior
+//      view, looking at the bone's centre
+//   2. the scene: the CT with the bone's voxels turned to soft tissue (fillHU) and continued past
+//      the faces where the scan cuts the body (extendScanMm), the bone at its
 //      pose of each frame, and, at the same pose, the soft tissue it displaces taken away (so the
 //      bone shows its attenuation in excess of that tissue, as in a body)
 //   3. per frame and camera a realistic radiograph (spectral/: the spectrum, scatter, blur,
@@ -15,7 +17,8 @@
 //      one (BONE.tif: a 16-bit TIFF stack of HU + 1000, its voxel size in the trial), trial.json
 //      (what `track` reads) and trial.cfg (the same trial for Autoscoper), the truth
 //      (BONE_truth.tra, Autoscoper's volume frame as the trial's .tra files hold it) and the first
-//      frame's truth alone (BONE_start.tra, to start tracking from).
+//      frame's truth alone (BONE_start.tra, to start tracking from). The trial says the tissue
+//      the bone displaces (displaced_tissue), so that `track` renders what the frames show of it.
 // Deterministic for a seed, whatever the thread count.
 #include <filesystem>
 #include <functional>
@@ -38,11 +41,18 @@ struct TrialSimulationSpec {
     std::vector<PinholeCamera> cameras;  // empty: placed around the bone (below)
     int cameraCount = 2;
     double separationDeg = 80.0;
+    // The first camera's view turned this far from the anterior view about +z (superior). 0: one
+    // camera anterior, the other 80 deg on, nearly lateral; at a hip, -40 places them 40 deg
+    // either side of anterior, as hip rigs stand, so that neither looks through both hips.
+    double firstAzimuthDeg = 0.0;
     double sourceDistanceMm = 1000.0;    // source to the bone's centre
     glm::ivec2 imageSize{512, 512};
     std::string motion;               // simulate/JointMotion.h
     int frames = 20;
     double fillHU = 40.0;             // the soft tissue left where the bone was (muscle)
+    // The background continued this far past each face where the scan cuts the body (a CT ends,
+    // a body does not: volume/ScanExtension.h); 0: the scan's end as it is.
+    double extendScanMm = 200.0;
     SpectrumSpec spectrum;
     DetectorSettings detector;        // its seed is mixed with the frame and the camera
     // The detector's signal: log-compressed (60000 - 4096 (-ln I/I0), dense matter dark, as
@@ -75,10 +85,11 @@ struct StackedBone {
 };
 StackedBone stackedBone(const Volume& bone);
 
-// Cameras looking at `centre` from `distanceMm`, the first along the CT's +y (anterior to
-// posterior), the others turned `separationDeg` after each other about +z (superior), image up =
-// superior; the focal length frames `extentMm` in 80 % of the smaller image side.
+// Cameras looking at `centre` from `distanceMm`, the first turned `firstAzimuthDeg` about +z
+// (superior) from +y (anterior to posterior), the others `separationDeg` after each other, image
+// up = superior; the focal length frames `extentMm` in 80 % of the smaller image side.
 std::vector<PinholeCamera> camerasAround(const glm::dvec3& centre, double extentMm, int count,
-                                         double separationDeg, double distanceMm, glm::ivec2 imageSize);
+                                         double separationDeg, double distanceMm, glm::ivec2 imageSize,
+                                         double firstAzimuthDeg = 0.0);
 
 }  // namespace fm

@@ -61,6 +61,13 @@ TEST(TrialSimulation, CamerasAroundABoneLookAtItsCentreWithSuperiorUp) {
     }
     const glm::dvec3 a = centre - cameras[0].center(), b = centre - cameras[1].center();
     EXPECT_NEAR(glm::degrees(std::acos(glm::dot(a, b) / glm::length(a) / glm::length(b))), 80.0, 1e-9);
+    EXPECT_NEAR(glm::length(glm::normalize(a) - glm::dvec3(0, 1, 0)), 0.0, 1e-12);  // the first anterior
+    // Turned -40 deg: symmetric about the anterior view (+y), 40 deg either side of it.
+    const auto oblique = camerasAround(centre, 150.0, 2, 80.0, 1000.0, {512, 400}, -40.0);
+    const glm::dvec3 p = glm::normalize(centre - oblique[0].center()), q = glm::normalize(centre - oblique[1].center());
+    EXPECT_NEAR(glm::length(glm::normalize(p + q) - glm::dvec3(0, 1, 0)), 0.0, 1e-12);
+    EXPECT_NEAR(glm::degrees(std::acos(p.y)), 40.0, 1e-9);
+    EXPECT_NEAR(p.x, std::sin(glm::radians(40.0)), 1e-9);  // +y turned -40 deg about +z: towards +x
     EXPECT_THROW(camerasAround(centre, 2000.0, 2, 80.0, 1000.0, {512, 512}), Error);
 }
 
