@@ -147,19 +147,20 @@ TrialSimulationResult simulateTrial(const TrialSimulationSpec& s, const std::fun
         writeMayaCam2(s.out / (name + ".txt"), cameras[c]);
         trial.cameras.push_back({name, s.out / (name + ".txt"), s.out / name});
     }
-    // The bone as Autoscoper keeps one: a 16-bit TIFF stack of HU + 1000 (air 0: raw integers
-    // whose line integrals are mu's, times a constant) in its own frame, voxel (i, j, k) at
-    // (sx i, sy j, sz k) mm; the CT places that frame by worldFromStack (pages reversed first
-    // when the CT's axes are left-handed, so that it is a rotation).
+    // The bone as Autoscoper keeps one: a 16-bit TIFF stack (raw integers whose line integrals
+    // are attenuation's, times a constant) in its own frame, voxel (i, j, k) at (sx i, sy j,
+    // sz k) mm; the CT places that frame by worldFromStack (pages reversed first when the CT's
+    // axes are left-handed, so that it is a rotation). Its values are what the frames show of
+    // the bone: HU - fillHU, its attenuation in excess of the tissue it displaces, 0 at or below
+    // it (HU + 1000 for a bone in air). A stack of HU + 1000 in a body would add a slab of
+    // tissue under the bone's whole outline that no frame holds: tracked against it, example_ct's
+    // femur ended frames off by up to 30 deg (docs/tracking.md, "Simulated trials").
     const StackedBone stacked = stackedBone(boneCt);
     TrialBone trialBone;
     trialBone.name = s.boneName;
     trialBone.volume = s.out / (s.boneName + ".tif");
     trialBone.voxelSize = boneCt.spacing;
-    // The frames show the bone's attenuation in excess of the tissue it displaces; the trial
-    // says so, and `track` renders the bone that way (stored values: HU + 1000).
-    trialBone.displacedTissue = s.fillHU + 1000.0;
-    io::writeFileAtomically(trialBone.volume, io::encodeTiffStack16(stacked.volume, 1000.0));
+    io::writeFileAtomically(trialBone.volume, io::encodeTiffStack16(stacked.volume, -s.fillHU));
     trial.bones.push_back(trialBone);
 
     // 4. The frames; each camera's exposure set on frame 0 (photonsPerPixel is then the photons

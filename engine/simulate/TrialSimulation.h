@@ -14,11 +14,11 @@
 //      attenuated transmission in frame 0; the signal log-compressed (dense matter dark) or
 //      linear (the open field at 50000 counts); each camera's preparation written in the trial
 //   4. the files: each camera's MayaCam 2.0 calibration and frames, the bone as Autoscoper keeps
-//      one (BONE.tif: a 16-bit TIFF stack of HU + 1000, its voxel size in the trial), trial.json
+//      one (BONE.tif: a 16-bit TIFF stack, its voxel size in the trial) holding what the frames
+//      show of it (HU - fillHU: its attenuation in excess of the tissue it displaces), trial.json
 //      (what `track` reads) and trial.cfg (the same trial for Autoscoper), the truth
 //      (BONE_truth.tra, Autoscoper's volume frame as the trial's .tra files hold it) and the first
-//      frame's truth alone (BONE_start.tra, to start tracking from). The trial says the tissue
-//      the bone displaces (displaced_tissue), so that `track` renders what the frames show of it.
+//      frame's truth alone (BONE_start.tra, to start tracking from).
 // Deterministic for a seed, whatever the thread count.
 #include <filesystem>
 #include <functional>

@@ -1,6 +1,5 @@
 #include "track/TrialScene.h"
 
-#include <algorithm>
 #include <cmath>
 #include <memory>
 
@@ -74,22 +73,6 @@ void checkRoi(const TrialScene& t, std::size_t c) {
                     std::to_string(roi->col0) + "," + std::to_string(roi->row0) + "," + std::to_string(roi->cols) +
                     "," + std::to_string(roi->rows) + " (" + t.preparations[c].source + ") must lie inside its " +
                     std::to_string(size.x) + " x " + std::to_string(size.y) + " images");
-}
-
-// The bone as a radiograph shows it: its attenuation in excess of the tissue it displaces
-// (Trial.h, displaced_tissue), never below none. Stored values: raw, excess v - tissue, air 0; HU,
-// HU - tissue - 1000, so that its attenuation is mu_water (v - tissue) / 1000, air -1000.
-void keepExcessOver(Volume& v, double tissue, bool hounsfield, const fs::path& trial, const std::string& bone) {
-    const float shift = static_cast<float>(hounsfield ? tissue + 1000.0 : tissue);
-    const float none = hounsfield ? -1000.0f : 0.0f;
-    bool any = false;
-    for (float& x : v.values) {
-        x = std::max(none, x - shift);
-        any = any || x > none;
-    }
-    if (!any)
-        throw Error(io::quoted(trial) + ": bone \"" + bone + "\": displaced_tissue " + std::to_string(tissue) +
-                    " is at or above every voxel of its volume: nothing of the bone would show");
 }
 
 }  // namespace
@@ -179,7 +162,6 @@ TrialScene loadTrialScene(const Trial& trial, const std::vector<std::string>& bo
         // Autoscoper's crops hold raw CT integers, background 0: integrated as stored; a file in
         // HU (air -1000 around the bone) is converted to attenuation, as the CLI and app do.
         const bool hounsfield = !b.tiffStack() && guessHounsfield(v).hounsfield;
-        if (b.displacedTissue) keepExcessOver(v, *b.displacedTissue, hounsfield, t.trial.source, name);
         values.values = hounsfield ? DrrValues::Mu : DrrValues::Raw;
         values.threads = threads;
         auto model = std::make_shared<VolumeXrayModel>(prepareDrrVolume(v, values));

@@ -1,7 +1,6 @@
 #include "trial/Trial.h"
 
 #include <algorithm>
-#include <cmath>
 #include <system_error>
 
 #include <nlohmann/json.hpp>
@@ -138,13 +137,6 @@ Trial readTrialJson(const fs::path& path) {
             if (!mu.is_number() || !(mu.get<double>() > 0.0) || mu.get<double>() > 1000.0)
                 r.fail(f + ".mu", "must be a positive attenuation in 1/mm (at most 1000)");
             b.muPerMm = mu.get<double>();
-        }
-        if (bones[i].contains("displaced_tissue")) {
-            if (b.meshOnly()) r.fail(f + ".displaced_tissue", "applies to a volume (a mesh-only bone has its own mu)");
-            const Json& d = bones[i]["displaced_tissue"];
-            if (!d.is_number() || !std::isfinite(d.get<double>()) || std::abs(d.get<double>()) > 1e6)
-                r.fail(f + ".displaced_tissue", "must be a number in the volume's stored units (HU + 1000 of muscle: 1040)");
-            b.displacedTissue = d.get<double>();
         }
         if (bones[i].contains("masks")) b.masks = resolve(base, r.text(bones[i]["masks"], f + ".masks"));
         if (bones[i].contains("flip")) {
@@ -305,7 +297,6 @@ void writeTrialJson(const fs::path& path, const Trial& trial) {
         }
         if (!b.mesh.empty()) j["mesh"] = rel(b.mesh);
         if (b.muPerMm > 0.0) j["mu"] = b.muPerMm;
-        if (b.displacedTissue) j["displaced_tissue"] = *b.displacedTissue;
         if (!b.masks.empty()) j["masks"] = rel(b.masks);
         root["bones"].push_back(j);
     }

@@ -43,11 +43,6 @@ struct TrialBone {
     glm::ivec3 flip{0};            // Autoscoper VolumeFlip
     std::filesystem::path mesh;    // with a volume: for display; without: the bone's model
     double muPerMm = 0.0;          // mesh-only: attenuation (0 = cobalt-chromium, an implant)
-    // A volume's stored value of the soft tissue the bone displaces in the body (a TIFF stack of
-    // HU + 1000: 1040 for muscle): the bone is then rendered as its attenuation in excess of that
-    // tissue, which is all a radiograph shows of it (the tissue is the background's). Unset: the
-    // volume's values as they are.
-    std::optional<double> displacedTissue;
     // Optional label masks of the bone's silhouette, one per frame: a folder of images sorted by
     // name (as frames are), for the silhouette IoU of a pose. Camera 1's images.
     std::filesystem::path masks;

@@ -1,11 +1,15 @@
 // Simulated trials (simulate/): the parametric joint motion (eased angles about an axis through a
 // centre, read back from a .tra), and cameras placed around a bone (each sees the bone's centre at
-// its principal point, image up = superior, the given separation between their views).
+// its principal point, image up = superior, the given separation between their views), and the
+// bone stack a simulated trial holds.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
+#include "common/TestData.h"
 #include "core/Error.h"
+#include "io/TiffVolume.h"
 #include "pose/AutoscoperTra.h"
 #include "pose/PoseComparison.h"
 #include "simulate/JointMotion.h"
@@ -69,6 +73,46 @@ TEST(TrialSimulation, CamerasAroundABoneLookAtItsCentreWithSuperiorUp) {
     EXPECT_NEAR(glm::degrees(std::acos(p.y)), 40.0, 1e-9);
     EXPECT_NEAR(p.x, std::sin(glm::radians(40.0)), 1e-9);  // +y turned -40 deg about +z: towards +x
     EXPECT_THROW(camerasAround(centre, 2000.0, 2, 80.0, 1000.0, {512, 512}), Error);
+}
+
+// The stack `simulate` writes holds what its frames show of the bone: HU - fill (its attenuation
+// in excess of the tissue it displaces), 0 at or below it; for a bone in air (fill -1000) the
+// usual HU + 1000. Values computed here from the CT's.
+TEST(TrialSimulation, TheBoneStackHoldsWhatTheFramesShowOfIt) {
+    Volume ct = Volume::allocate({10, 10, 10}, 40.0f);  // a body of muscle, cut by every face
+    Volume labels = Volume::allocate({10, 10, 10}, 0.0f);
+    ct.spacing = labels.spacing = {2.0, 2.0, 2.0};
+    for (int k = 3; k < 7; ++k)
+        for (int j = 3; j < 7; ++j)
+            for (int i = 3; i < 7; ++i) {
+                ct.at(i, j, k) = static_cast<float>(300 + 100 * i - 20 * j + 7 * k);
+                labels.at(i, j, k) = (i + j + k) % 5 == 0 ? 0.0f : 1.0f;  // holes: tissue inside the crop
+            }
+    for (const double fill : {40.0, -1000.0}) {
+        TrialSimulationSpec s;
+        s.ct = ct;
+        s.labels = labels;
+        s.boneLabels = {1};
+        s.boneName = "block";
+        s.cameraCount = 1;
+        s.imageSize = {24, 24};
+        s.motion = "rotate:axis=x,angle=0:5";
+        s.frames = 2;
+        s.fillHU = fill;
+        s.detector.threads = 1;
+        s.out = scratchDir("simulate_stack") / (fill > 0 ? "body" : "air");
+        simulateTrial(s);
+        const Volume stack = io::readTiffVolume(s.out / "block.tif", {2.0, 2.0, 2.0});
+        // The bone's crop with its 2-voxel margin: CT voxels 1..8 (right-handed axes: pages in order).
+        ASSERT_EQ(stack.dims, glm::ivec3(8, 8, 8));
+        for (int k = 0; k < 8; ++k)
+            for (int j = 0; j < 8; ++j)
+                for (int i = 0; i < 8; ++i) {
+                    const bool bone = labels.at(i + 1, j + 1, k + 1) > 0.0f;
+                    const double hu = bone ? ct.at(i + 1, j + 1, k + 1) : -1000.0;  // air outside the bone
+                    EXPECT_EQ(stack.at(i, j, k), static_cast<float>(std::max(0.0, hu - fill))) << i << j << k << " " << fill;
+                }
+    }
 }
 
 }  // namespace

@@ -158,7 +158,6 @@ TEST(TrialJson, RoundTripWithKeyframesAndStrictReading) {
     t.cameras = {{"left", dir / "c1.txt", dir / "f1"}, {"right", dir / "c2.txt", dir / "f2"}};
     t.bones = {{"femur", dir / "fem.tif", {0.4, 0.4, 0.6}, {0, 1, 0}, {}},
                {"tibia", dir / "tib.tif", {0.4, 0.4, 0.6}, {0, 0, 0}, dir / "tib.stl"}};
-    t.bones[0].displacedTissue = 1040.0;
     fm::TrialPose k0{3, fm::rotationAbout({0, 0, 1}, 30.0, {1, 2, 3}), fm::VolumeFrame::Autoscoper};
     fm::TrialPose k1{0, fm::RigidTransform::translate({5, 6, 7}), fm::VolumeFrame::Fluoromatch};
     t.keyframes["femur"] = {k1, k0};
@@ -170,8 +169,6 @@ TEST(TrialJson, RoundTripWithKeyframesAndStrictReading) {
     EXPECT_EQ(back.cameras[1].frames, dir / "f2");
     EXPECT_EQ(back.bone("femur").flip, glm::ivec3(0, 1, 0));
     EXPECT_EQ(back.bone("tibia").mesh, dir / "tib.stl");
-    EXPECT_EQ(back.bone("femur").displacedTissue, std::optional<double>(1040.0));
-    EXPECT_FALSE(back.bone("tibia").displacedTissue.has_value());
     ASSERT_EQ(back.keyframes.at("femur").size(), 2u);
     const fm::TrialPose& b1 = back.keyframes.at("femur")[1];
     EXPECT_EQ(b1.frame, 3);
@@ -210,9 +207,6 @@ TEST(TrialJson, RoundTripWithKeyframesAndStrictReading) {
         {"{\"cameras\": [{\"calibration\": \"a\", \"frames\": \"f\"}, {\"calibration\": \"./a\", "
          "\"frames\": \"f/\"}], \"bones\": [{\"name\": \"a\", \"volume\": \"v.tif\", \"voxel_size\": [1,1,1]}]}",
          "cameras cam1 and cam2 are the same camera"},
-        {"{\"cameras\": [{\"calibration\": \"c\", \"frames\": \"f\"}], \"bones\": [{\"name\": \"a\", \"volume\": \"v.tif\", "
-         "\"voxel_size\": [1,1,1], \"displaced_tissue\": \"muscle\"}]}",
-         "bones[0].displaced_tissue\" must be a number"},
     };
     for (const Case& c : cases) {
         const fs::path p = writeText(dir, "bad.json", c.text);
