@@ -70,6 +70,8 @@ expect_error() {  # expect_error TEXT args...
 }
 common=(--labels phantom:knee --frames 2 --out "$T/x")
 expect_error "--separation places cameras" --volume phantom:knee "${common[@]}" --bone femur --motion "rotate:axis=x,angle=0:2" --cameras "$T/a/cam1.txt" --separation 50
+expect_error "--azimuth places cameras" --volume phantom:knee "${common[@]}" --bone femur --motion "rotate:axis=x,angle=0:2" --cameras "$T/a/cam1.txt" --azimuth -40
+expect_error "--extend-scan" --volume phantom:knee "${common[@]}" --bone femur --motion "rotate:axis=x,angle=0:2" --extend-scan -5
 expect_error "needs a CT in HU" --volume phantom:sphere --labels components --bone "component 1" --frames 2 --out "$T/x" --motion "rotate:axis=x,angle=0:2"
 expect_error "humerus" --volume phantom:knee "${common[@]}" --bone humerus --motion "rotate:axis=x,angle=0:2"
 expect_error "--motion" --volume phantom:knee "${common[@]}" --bone femur --motion "spin:fast"
