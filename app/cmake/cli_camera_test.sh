@@ -8,13 +8,10 @@
 #     roi outside the image and a calibration of another size.
 set -uo pipefail
 FM=$1
-DATA=${FM_DATA_DIR:-$(dirname "$0")/../../../shared/data}
+. "$(dirname "$0")/require_shared_data.sh"
+require_shared_data autoscoper-bvr/Calibration/xr_calib_wrist_cam01.txt jtml-kneel-tka-fluoro/calibration.txt
 CAM="$DATA/autoscoper-bvr/Calibration/xr_calib_wrist_cam01.txt"
 JT="$DATA/jtml-kneel-tka-fluoro/calibration.txt"
-if [ ! -f "$CAM" ] || [ ! -f "$JT" ]; then
-    [ "${CI:-}" = "true" ] && { echo "FAIL: shared data missing under CI"; exit 1; }
-    echo "shared data not found: skipped"; exit 77
-fi
 OUT=$(mktemp -d)
 trap 'rm -rf "$OUT"' EXIT
 fail() { echo "FAIL: $*"; exit 1; }

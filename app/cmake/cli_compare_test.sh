@@ -12,12 +12,9 @@
 set -uo pipefail
 FM=$1
 SRC=$(cd "$(dirname "$0")/../.." && pwd)
-DATA=${FM_DATA_DIR:-$SRC/../shared/data}
+. "$(dirname "$0")/require_shared_data.sh"
+require_shared_data jtml-kneel-tka-fluoro/fem.jts autoscoper-bvr
 D="$DATA/jtml-kneel-tka-fluoro"
-if [ ! -f "$D/fem.jts" ] || [ ! -d "$DATA/autoscoper-bvr" ]; then
-    [ "${CI:-}" = "true" ] && { echo "FAIL: shared data missing under CI"; exit 1; }
-    echo "shared data not found: skipped"; exit 77
-fi
 T=$(mktemp -d)
 trap 'rm -rf "$T"' EXIT
 fail() { echo "FAIL: $*"; exit 1; }

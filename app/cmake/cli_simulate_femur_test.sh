@@ -7,12 +7,9 @@
 set -uo pipefail
 FM=$1
 SRC=$(cd "$(dirname "$0")/../.." && pwd)
-DATA=${FM_DATA_DIR:-$SRC/../shared/data}
+. "$(dirname "$0")/require_shared_data.sh"
+require_shared_data totalseg-example-ct/example_ct.nii.gz totalseg-example-ct/example_seg_fast_force_split.nii.gz
 D="$DATA/totalseg-example-ct"
-if [ ! -f "$D/example_ct.nii.gz" ] || [ ! -f "$D/example_seg_fast_force_split.nii.gz" ]; then
-    [ "${CI:-}" = "true" ] && { echo "FAIL: shared data missing under CI"; exit 1; }
-    echo "shared data not found: skipped"; exit 77
-fi
 T=$(mktemp -d)
 trap 'rm -rf "$T"' EXIT
 fail() { echo "FAIL: $*"; exit 1; }

@@ -2,12 +2,9 @@
 # data folder), OUT (a scratch folder removed at exit), fail, CAL, FEM and TIB. Without the data it
 # exits 77 (skipped), or 1 under CI (the data must be there).
 FM=$1
-DATA=${FM_DATA_DIR:-$(dirname "${BASH_SOURCE[0]}")/../../../shared/data}
+. "$(dirname "${BASH_SOURCE[0]}")/require_shared_data.sh"
+require_shared_data jtml-kneel-tka-fluoro/fem.jts
 D="$DATA/jtml-kneel-tka-fluoro"
-if [ ! -f "$D/fem.jts" ]; then
-    [ "${CI:-}" = "true" ] && { echo "FAIL: shared data missing under CI"; exit 1; }
-    echo "shared data not found: skipped"; exit 77
-fi
 OUT=$(mktemp -d)
 trap 'rm -rf "$OUT"' EXIT
 fail() { echo "FAIL: $*"; exit 1; }
