@@ -29,17 +29,25 @@ struct DenseRay {
     std::int64_t steps = 0;
 };
 
-// Sum over the ray's voxel segments of (alpha length) * value, for the stored values of either
-// type (DrrVolume: float or int16; instantiated for both). `last` is the index of the last
-// padded value.
-template <class T>
-double walkDense(const T* values, std::int64_t last, const DenseRay& ray);
+// What a walk adds up per ray: sum = sum over its voxel segments of (alpha length) * value;
+// absSum (only when asked for) = the same of |value|, from the same segments in the same walk:
+// the positive and the negative values' integrals are then (absSum +- sum) / 2
+// (renderDrrBySign).
+struct WalkSums {
+    double sum = 0.0, absSum = 0.0;
+};
+
+// The sums of one ray, for the stored values of either type (DrrVolume: float or int16;
+// instantiated for both). `last` is the index of the last padded value. absSum stays 0 unless
+// WithAbs.
+template <class T, bool WithAbs = false>
+WalkSums walkDense(const T* values, std::int64_t last, const DenseRay& ray);
 
 // The same for `count` (1..16) rays at once; sums[i] is bit-identical to walkDense(rays[i]).
 // Uses AVX-512 when denseWalkSimdAvailable(), else the scalar walk.
-template <class T>
+template <class T, bool WithAbs = false>
 void walkDense16(const T* values, std::int64_t last, const DenseRay* rays, int count,
-                 double* sums);
+                 WalkSums* sums);
 
 // True when this CPU (and OS) runs the AVX-512 form.
 bool denseWalkSimdAvailable();

@@ -30,7 +30,7 @@ namespace fm::detail {
 namespace {
 
 struct Lanes {
-    __m512d nx, ny, nz, dx, dy, dz, alpha, aEnd, acc, value;
+    __m512d nx, ny, nz, dx, dy, dz, alpha, aEnd, acc, absAcc, value;
     // Indices in 32 bits (the caller checks that the padded values fit): half-width integer
     // work (measured 4-6 % faster than 64-bit lanes).
     __m256i linear, ox, oy, oz, steps;
@@ -187,17 +187,20 @@ FM_AVX512 inline void load(Lanes& l, const T* values, __m256i lastIndex,
         }
     }
     l.acc = _mm512_setzero_pd();
+    l.absAcc = _mm512_setzero_pd();
     l.value = gather<T, Prefetch>(values, l.linear, lastIndex, l.active, l.ahead0, l.ahead7);
 }
 
 // One step of every active lane: walkDense's loop body.
-template <class T, bool Prefetch>
+template <class T, bool Prefetch, bool WithAbs>
 FM_AVX512 inline void step(Lanes& l, const T* values, __m256i lastIndex) {
     const Crossing c = nextCrossing(l.nx, l.ny, l.nz);
     const __m512d aNext = _mm512_min_pd(c.nextMin, l.aEnd);
     // Segments never run backwards (walkDense), so no test for a positive length.
-    l.acc = _mm512_mask_add_pd(l.acc, l.active, l.acc,
-                               _mm512_mul_pd(_mm512_sub_pd(aNext, l.alpha), l.value));
+    const __m512d segment = _mm512_mul_pd(_mm512_sub_pd(aNext, l.alpha), l.value);
+    l.acc = _mm512_mask_add_pd(l.acc, l.active, l.acc, segment);
+    if constexpr (WithAbs)
+        l.absAcc = _mm512_mask_add_pd(l.absAcc, l.active, l.absAcc, _mm512_abs_pd(segment));
     l.alpha = aNext;
     // Done: the next crossing is at or beyond the end, or no step is left.
     l.active = _mm512_mask_cmp_pd_mask(l.active, c.nextMin, l.aEnd, _CMP_LT_OQ) &
@@ -211,40 +214,45 @@ FM_AVX512 inline void step(Lanes& l, const T* values, __m256i lastIndex) {
     l.value = gather<T, Prefetch>(values, l.linear, lastIndex, l.active, l.ahead0, l.ahead7);
 }
 
-FM_AVX512 inline void store(const Lanes& l, int count, double* sums) {
-    alignas(64) double out[8];
+FM_AVX512 inline void store(const Lanes& l, int count, WalkSums* sums) {
+    alignas(64) double out[8], outAbs[8];
     _mm512_store_pd(out, l.acc);
-    for (int i = 0; i < count; ++i) sums[i] = out[i];
+    _mm512_store_pd(outAbs, l.absAcc);
+    for (int i = 0; i < count; ++i) sums[i] = {out[i], outAbs[i]};
 }
 
 }  // namespace
 
-template <class T, bool Prefetch>
+template <class T, bool Prefetch, bool WithAbs>
 FM_AVX512 void walkDense16Avx512(const T* values, std::int64_t last, const DenseRay* rays,
-                                 int count, double* sums) {
+                                 int count, WalkSums* sums) {
     const __m256i lastIndex = _mm256_set1_epi32(static_cast<std::int32_t>(last));
     const int countA = count < 8 ? count : 8, countB = count - countA;
     Lanes a, b;
     load<T, Prefetch>(a, values, lastIndex, rays, countA);
     load<T, Prefetch>(b, values, lastIndex, rays + countA, countB);
     while (a.active && b.active) {
-        step<T, Prefetch>(a, values, lastIndex);
-        step<T, Prefetch>(b, values, lastIndex);
+        step<T, Prefetch, WithAbs>(a, values, lastIndex);
+        step<T, Prefetch, WithAbs>(b, values, lastIndex);
     }
-    while (a.active) step<T, Prefetch>(a, values, lastIndex);
-    while (b.active) step<T, Prefetch>(b, values, lastIndex);
+    while (a.active) step<T, Prefetch, WithAbs>(a, values, lastIndex);
+    while (b.active) step<T, Prefetch, WithAbs>(b, values, lastIndex);
     store(a, countA, sums);
     store(b, countB, sums + countA);
 }
 
-template void walkDense16Avx512<float, false>(const float*, std::int64_t, const DenseRay*, int,
-                                              double*);
-template void walkDense16Avx512<float, true>(const float*, std::int64_t, const DenseRay*, int,
-                                             double*);
-template void walkDense16Avx512<std::int16_t, false>(const std::int16_t*, std::int64_t,
-                                                     const DenseRay*, int, double*);
-template void walkDense16Avx512<std::int16_t, true>(const std::int16_t*, std::int64_t,
-                                                    const DenseRay*, int, double*);
+#define FM_WALK_DENSE16(T, PREFETCH, WITH_ABS)                                                  \
+    template void walkDense16Avx512<T, PREFETCH, WITH_ABS>(const T*, std::int64_t, const DenseRay*, int, \
+                                                           WalkSums*);
+FM_WALK_DENSE16(float, false, false)
+FM_WALK_DENSE16(float, true, false)
+FM_WALK_DENSE16(float, false, true)
+FM_WALK_DENSE16(float, true, true)
+FM_WALK_DENSE16(std::int16_t, false, false)
+FM_WALK_DENSE16(std::int16_t, true, false)
+FM_WALK_DENSE16(std::int16_t, false, true)
+FM_WALK_DENSE16(std::int16_t, true, true)
+#undef FM_WALK_DENSE16
 
 }  // namespace fm::detail
 #endif

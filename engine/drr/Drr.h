@@ -100,6 +100,17 @@ DrrVolumePtr coarsenDrrVolume(const DrrVolume& volume, int factor, int threads =
 Image renderDrr(const DrrVolume& volume, const ProjectionGeometry& geometry,
                 const DrrRenderOptions& options);
 
+// The line integrals of a volume's positive values and of its negative values (of -value, so
+// both >= 0), from one walk that adds up |value| beside value (DenseWalk.h's WalkSums): a volume
+// holding two materials, one of them negated (spectral/SpectralScene.h: a CT's soft tissue and
+// bone), costs one render instead of two. positive - negative is renderDrr's image up to
+// rounding. Output must be LineIntegral (fm::Error otherwise).
+struct DrrSignParts {
+    Image positive, negative;
+};
+DrrSignParts renderDrrBySign(const DrrVolume& volume, const ProjectionGeometry& geometry,
+                             const DrrRenderOptions& options);
+
 // Added: what preparation kept (for tests, the CLI and the benchmark).
 struct DrrVolumeInfo {
     glm::ivec3 dims{0};       // voxels after downsampling and cropping

@@ -112,10 +112,20 @@ DenseRay denseRay(const DrrVolume& v, const LocalRay& r, double aBegin, double a
     return d;
 }
 
-void walkVoxels(const DrrVolume& v, const LocalRay& r, double aBegin, double aEnd, double& acc) {
+template <bool WithAbs>
+WalkSums walkVoxels(const DrrVolume& v, const LocalRay& r, double aBegin, double aEnd) {
     const DenseRay ray = denseRay(v, r, aBegin, aEnd);
     const std::int64_t last = std::int64_t(v.valueCount()) - 1;
-    acc += v.withValues([&](const auto* values) { return walkDense(values, last, ray); });
+    return v.withValues([&]<class T>(const T* values) { return walkDense<T, WithAbs>(values, last, ray); });
+}
+
+// Adds one segment's length * value to the sums (and |length * value|, which is length * |value|
+// exactly since lengths are >= 0, when WithAbs).
+template <bool WithAbs>
+inline void addSegment(WalkSums& acc, double length, double value) {
+    const double segment = length * value;
+    acc.sum += segment;
+    if constexpr (WithAbs) acc.absSum += std::abs(segment);
 }
 
 // The fast walk: the same segments as walkVoxels, with empty-space skipping. While the ray is
@@ -126,9 +136,9 @@ void walkVoxels(const DrrVolume& v, const LocalRay& r, double aBegin, double aEn
 // floor (clamped to the brick) on the others.
 // (A branch-free variant that walks slabs of the dominant axis, at most three segments per
 // slab, was measured 35% slower on the knee phantom: mostly-one-axis rays predict well.)
-template <class T>
+template <bool WithAbs, class T>
 void walkSkipping(const DrrVolume& v, const T* values, const LocalRay& r, double aBegin,
-                  double aEnd, double& acc) {
+                  double aEnd, WalkSums& acc) {
     const int B = v.brickSize;
     int index[3], step[3], brick[3], remaining[3];
     double next[3], delta[3], nextBrick[3];
@@ -161,7 +171,7 @@ void walkSkipping(const DrrVolume& v, const T* values, const LocalRay& r, double
                 const double aNext = std::min(nextBrick[a], aEnd);
                 if (aNext > alpha) {
                     const float value = v.brickValue[brickLinear];
-                    if (value != 0.0f) acc += (aNext - alpha) * static_cast<double>(value);
+                    if (value != 0.0f) addSegment<WithAbs>(acc, aNext - alpha, static_cast<double>(value));
                     alpha = aNext;
                 }
                 if (nextBrick[a] >= aEnd) return;
@@ -204,11 +214,11 @@ void walkSkipping(const DrrVolume& v, const T* values, const LocalRay& r, double
 #define FM_DRR_CROSS(N, I, R, O, AX)                                                  \
     {                                                                                 \
         if (N >= aEnd) {                                                              \
-            acc += std::max(0.0, aEnd - alpha) * static_cast<double>(values[linear]); \
+            addSegment<WithAbs>(acc, std::max(0.0, aEnd - alpha), values[linear]);   \
             return;                                                                   \
         }                                                                             \
         /* max: a crossing re-derived by floor may precede alpha by an ulp */         \
-        acc += std::max(0.0, N - alpha) * static_cast<double>(values[linear]);        \
+        addSegment<WithAbs>(acc, std::max(0.0, N - alpha), values[linear]);          \
         alpha = std::max(alpha, N);                                                   \
         I += step[AX];                                                                \
         if (static_cast<unsigned>(I) >= static_cast<unsigned>(v.dims[AX])) return;    \
@@ -296,16 +306,16 @@ bool useDenseWalk(const DrrVolume& v, const DrrRenderOptions& options) {
     return v.preferDenseWalk && denseWalkSimdAvailable();
 }
 
-// The exact line integral of one ray (local frame), without the |P - S| factor.
-double traceExact(const DrrVolume& v, const LocalRay& ray, bool skipEmptySpace) {
+// The exact line integral of one ray (local frame), without the |P - S| factor and in stored
+// units (times valueScale: per mm).
+template <bool WithAbs>
+WalkSums traceExact(const DrrVolume& v, const LocalRay& ray, bool skipEmptySpace) {
     double aMin, aMax;
-    if (!clipRay(ray, glm::dvec3(0.0), glm::dvec3(v.dims) * v.spacing, aMin, aMax)) return 0.0;
-    double acc = 0.0;
-    if (skipEmptySpace)
-        v.withValues([&](const auto* values) { walkSkipping(v, values, ray, aMin, aMax, acc); });
-    else
-        walkVoxels(v, ray, aMin, aMax, acc);
-    return acc * v.valueScale;  // stored units -> per mm (1 for float voxels)
+    if (!clipRay(ray, glm::dvec3(0.0), glm::dvec3(v.dims) * v.spacing, aMin, aMax)) return {};
+    if (!skipEmptySpace) return walkVoxels<WithAbs>(v, ray, aMin, aMax);
+    WalkSums acc;
+    v.withValues([&](const auto* values) { walkSkipping<WithAbs>(v, values, ray, aMin, aMax, acc); });
+    return acc;
 }
 
 }  // namespace
@@ -314,7 +324,7 @@ double drrLineIntegral(const DrrVolume& v, const glm::dvec3& source, const glm::
                        bool skipEmptySpace) {
     if (v.empty) return 0.0;
     const LocalRay ray = makeRay(v.worldToLocalPoint(source), v.worldToLocalPoint(target));
-    return traceExact(v, ray, skipEmptySpace) * glm::length(target - source);
+    return traceExact<false>(v, ray, skipEmptySpace).sum * v.valueScale * glm::length(target - source);
 }
 
 std::uint64_t drrTraversalSteps(const DrrVolume& v, const ProjectionGeometry& g) {
@@ -338,18 +348,32 @@ std::uint64_t drrTraversalSteps(const DrrVolume& v, const ProjectionGeometry& g)
     return steps;
 }
 
-Image renderDrr(const DrrVolume& v, const ProjectionGeometry& g, const DrrRenderOptions& options) {
-    g.validate("DRR geometry");
+namespace {
+
+// Both renderers: `image` gets each ray's line integral (or exp(-it)); with WithAbs, `image`
+// the positive values' integral and `negative` the negative values' (of -value), each
+// (absSum +- sum) / 2 of one walk.
+template <bool WithAbs>
+void renderInto(const DrrVolume& v, const ProjectionGeometry& g, const DrrRenderOptions& options,
+                Image& image, Image* negative) {
     const bool intensity = options.output == DrrOutput::Intensity;
     const DetectorGeometry& det = g.detector;
-    Image image(det.size.x, det.size.y, intensity ? 1.0f : 0.0f);
-    image.spacing = det.spacing;
-    if (v.empty) return image;
+    // One pixel from the sums of its ray (stored units) and the ray's length (mm).
+    const auto setPixel = [&](int col, int row, const WalkSums& sums, double length) {
+        const double integral = sums.sum * v.valueScale * length;
+        if constexpr (WithAbs) {
+            const double absIntegral = sums.absSum * v.valueScale * length;
+            image.at(col, row) = static_cast<float>(0.5 * (absIntegral + integral));
+            negative->at(col, row) = static_cast<float>(0.5 * (absIntegral - integral));
+        } else {
+            image.at(col, row) = static_cast<float>(intensity ? std::exp(-integral) : integral);
+        }
+    };
 
     const glm::dvec3 boxExtent = glm::dvec3(v.dims) * v.spacing;
     const PixelRange range = options.skipEmptySpace ? projectedBox(v, g, glm::dvec3(0.0), boxExtent)
                                                     : PixelRange{0, det.size.x, 0, det.size.y};
-    if (range.col0 >= range.col1 || range.row0 >= range.row1) return image;
+    if (range.col0 >= range.col1 || range.row0 >= range.row1) return;
 
     const glm::dvec3 q0 = v.worldToLocalPoint(g.source);
     const bool dense = useDenseWalk(v, options);
@@ -363,18 +387,15 @@ Image renderDrr(const DrrVolume& v, const ProjectionGeometry& g, const DrrRender
     auto denseBody = [&](int rowBegin, int rowEnd) {
         DenseRay rays[16];
         int cols[16];
-        double lengths[16], sums[16];
+        double lengths[16];
+        WalkSums sums[16];
         for (int row = range.row0 + rowBegin; row < range.row0 + rowEnd; ++row) {
             int n = 0;
             auto flush = [&] {
-                v.withValues([&](const auto* values) {
-                    walkDense16(values, std::int64_t(v.valueCount()) - 1, rays, n, sums);
+                v.withValues([&]<class T>(const T* values) {
+                    walkDense16<T, WithAbs>(values, std::int64_t(v.valueCount()) - 1, rays, n, sums);
                 });
-                for (int i = 0; i < n; ++i) {
-                    const double integral = sums[i] * v.valueScale * lengths[i];
-                    image.at(cols[i], row) =
-                        static_cast<float>(intensity ? std::exp(-integral) : integral);
-                }
+                for (int i = 0; i < n; ++i) setPixel(cols[i], row, sums[i], lengths[i]);
                 n = 0;
             };
             // Eight pixels at a time: set up in lanes where the CPU has AVX-512
@@ -425,8 +446,7 @@ Image renderDrr(const DrrVolume& v, const ProjectionGeometry& g, const DrrRender
                 const glm::dvec3 pixel = det.pixelCenter(col, row);
                 const double length = glm::length(pixel - g.source);
                 const LocalRay ray = makeRay(q0, v.worldToLocalPoint(pixel));
-                const double integral = traceExact(v, ray, options.skipEmptySpace) * length;
-                image.at(col, row) = static_cast<float>(intensity ? std::exp(-integral) : integral);
+                setPixel(col, row, traceExact<WithAbs>(v, ray, options.skipEmptySpace), length);
             }
         }
     };
@@ -434,14 +454,41 @@ Image renderDrr(const DrrVolume& v, const ProjectionGeometry& g, const DrrRender
         parallelFor(range.row1 - range.row0, options.threads, denseBody, kChunksPerThread);
     else
         parallelFor(range.row1 - range.row0, options.threads, body, kChunksPerThread);
-    // The last guard: bounded geometry (core/WorldLimits.h) and finite voxels make this
-    // unreachable, and it stays so: no NaN or inf ever leaves the renderer as a pixel.
+}
+
+// The last guard: bounded geometry (core/WorldLimits.h) and finite voxels make this
+// unreachable, and it stays so: no NaN or inf ever leaves the renderer as a pixel.
+void requireFinite(const Image& image) {
     const std::size_t bad = static_cast<std::size_t>(std::count_if(
         image.pixels.begin(), image.pixels.end(), [](float p) { return !std::isfinite(p); }));
     if (bad > 0)
         throw Error("DRR: " + std::to_string(bad) + " of " + std::to_string(image.pixels.size()) +
                     " pixels came out non-finite (the geometry's arithmetic overflowed)");
+}
+
+}  // namespace
+
+Image renderDrr(const DrrVolume& v, const ProjectionGeometry& g, const DrrRenderOptions& options) {
+    g.validate("DRR geometry");
+    Image image(g.detector.size.x, g.detector.size.y, options.output == DrrOutput::Intensity ? 1.0f : 0.0f);
+    image.spacing = g.detector.spacing;
+    if (v.empty) return image;
+    renderInto<false>(v, g, options, image, nullptr);
+    requireFinite(image);
     return image;
+}
+
+DrrSignParts renderDrrBySign(const DrrVolume& v, const ProjectionGeometry& g, const DrrRenderOptions& options) {
+    g.validate("DRR geometry");
+    if (options.output != DrrOutput::LineIntegral)
+        throw Error("renderDrrBySign gives line integrals only (its parts have no common exp)");
+    DrrSignParts parts{Image(g.detector.size.x, g.detector.size.y, 0.0f), Image(g.detector.size.x, g.detector.size.y, 0.0f)};
+    parts.positive.spacing = parts.negative.spacing = g.detector.spacing;
+    if (v.empty) return parts;
+    renderInto<true>(v, g, options, parts.positive, &parts.negative);
+    requireFinite(parts.positive);
+    requireFinite(parts.negative);
+    return parts;
 }
 
 }  // namespace fm

@@ -30,9 +30,12 @@ void addDensityLayer(SpectralScene& scene, const Volume& mgPerCm3, const Materia
 
 void addCtLayers(SpectralScene& scene, const Volume& ctHU, const Volume* boneMask, const std::string& name,
                  const RigidTransform& worldFromObject, int threads) {
-    const MaterialVolumes m = decomposeMaterials(ctHU, boneMask);
-    addDensityLayer(scene, m.softTissue, materialTable("soft_tissue"), name + " soft tissue", worldFromObject, threads);
-    addDensityLayer(scene, m.bone, materialTable("cortical_bone"), name + " bone", worldFromObject, threads);
+    MaterialVolumes m = decomposeMaterials(ctHU, boneMask);
+    // No voxel holds both, so soft tissue - bone keeps both (exactly: whole mg/cm^3).
+    Volume& both = m.softTissue;
+    for (std::size_t i = 0; i < both.values.size(); ++i) both.values[i] -= m.bone.values[i];
+    addDensityLayer(scene, both, materialTable("soft_tissue"), name + " soft tissue and bone", worldFromObject, threads);
+    scene.layers.back().negativeMaterial = &materialTable("cortical_bone");
 }
 
 void addMeshLayer(SpectralScene& scene, MeshDrrModelPtr mesh, const MaterialTable& material, const std::string& name,
@@ -42,25 +45,52 @@ void addMeshLayer(SpectralScene& scene, MeshDrrModelPtr mesh, const MaterialTabl
 }
 
 MassImages renderMassImages(const SpectralScene& scene, const ProjectionGeometry& camera, int threads) {
-    // One scene per material (renderView sums its objects' line integrals), in first-layer order.
+    // One scene per material (renderView sums its objects' line integrals), in first-layer order;
+    // the two-material volumes apart (one walk each, added in after).
     std::vector<const MaterialTable*> materials;
     std::vector<Scene> scenes;
-    for (const MaterialLayer& layer : scene.layers) {
-        if (!layer.material) throw Error("a spectral layer without a material");
-        const auto m = std::find(materials.begin(), materials.end(), layer.material) - materials.begin();
+    const auto materialIndex = [&](const MaterialTable* material) {
+        const auto m = std::find(materials.begin(), materials.end(), material) - materials.begin();
         if (m == static_cast<std::ptrdiff_t>(materials.size())) {
-            materials.push_back(layer.material);
+            materials.push_back(material);
             scenes.emplace_back();
         }
-        scenes[static_cast<std::size_t>(m)].objects.push_back(layer.object);
+        return static_cast<std::size_t>(m);
+    };
+    std::vector<const MaterialLayer*> twoMaterial;
+    for (const MaterialLayer& layer : scene.layers) {
+        if (!layer.material) throw Error("a spectral layer without a material");
+        const std::size_t m = materialIndex(layer.material);
+        if (!layer.negativeMaterial) {
+            scenes[m].objects.push_back(layer.object);
+            continue;
+        }
+        materialIndex(layer.negativeMaterial);
+        if (!dynamic_cast<const VolumeXrayModel*>(layer.object.model.get()))
+            throw Error("spectral layer '" + layer.object.name + "': only a volume holds a second material");
+        twoMaterial.push_back(&layer);
     }
     if (materials.empty()) throw Error("a spectral scene without layers");
-    MassImages out;
-    out.materials = materials;
     XrayRenderSettings settings;
     settings.threads = threads;
-    for (const Scene& one : scenes) {
-        Image image = renderView(one, camera, settings);
+    std::vector<Image> lineIntegrals;
+    for (const Scene& one : scenes) lineIntegrals.push_back(renderView(one, camera, settings));
+    DrrRenderOptions options;
+    options.threads = threads;
+    for (const MaterialLayer* layer : twoMaterial) {
+        if (!layer->object.visible) continue;
+        const auto& model = static_cast<const VolumeXrayModel&>(*layer->object.model);
+        const DrrSignParts parts =
+            renderDrrBySign(*model.volume(), cameraInObjectFrame(layer->object, camera), options);
+        for (const auto& [part, material] : {std::pair{&parts.positive, layer->material},
+                                             std::pair{&parts.negative, layer->negativeMaterial}}) {
+            Image& sum = lineIntegrals[materialIndex(material)];
+            for (std::size_t i = 0; i < sum.pixels.size(); ++i) sum.pixels[i] += part->pixels[i];
+        }
+    }
+    MassImages out;
+    out.materials = materials;
+    for (Image& image : lineIntegrals) {
         for (float& v : image.pixels) v = static_cast<float>(v * kGramsPerCm2);
         out.mass.push_back(std::move(image));
     }

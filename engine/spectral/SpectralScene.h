@@ -7,7 +7,9 @@
 //   detector) or photons_b E_b (energy-integrating detector, every photon absorbed).
 // A layer is a scene object (scene/Scene.h) whose line integrals are its material's density
 // times length (mg/cm^3 x mm): a CT's soft tissue and bone at the CT's pose, a bone at its own,
-// an implant's metal at its. Layers of one material add.
+// an implant's metal at its. Layers of one material add. A volume layer may hold a second
+// material as negative values (negativeMaterial): a CT's two materials, whose voxels never
+// share a place, then cost one walk (renderDrrBySign) instead of one per material.
 #include <vector>
 
 #include "core/Image.h"
@@ -22,17 +24,20 @@
 namespace fm {
 
 struct MaterialLayer {
-    const MaterialTable* material = nullptr;
+    const MaterialTable* material = nullptr;  // of the object's (positive) line integrals
     SceneObject object;  // line integrals in mg/cm^3 x mm, at its pose
+    // Set: the object is a volume (VolumeXrayModel) whose negative voxels are this material's
+    // density, negated.
+    const MaterialTable* negativeMaterial = nullptr;
 };
 
 struct SpectralScene {
     std::vector<MaterialLayer> layers;
 };
 
-// A CT in HU as two layers (soft tissue, bone; spectral/MaterialDecomposition.h) of one object
-// named `name` at `worldFromObject`. `boneMask` (the CT's grid, > 0 = bone) replaces the HU
-// threshold.
+// A CT in HU as its two materials (soft tissue, bone; spectral/MaterialDecomposition.h): one
+// layer, soft tissue > 0 and bone < 0, of one object named `name` at `worldFromObject`.
+// `boneMask` (the CT's grid, > 0 = bone) replaces the HU threshold.
 void addCtLayers(SpectralScene& scene, const Volume& ctHU, const Volume* boneMask, const std::string& name,
                  const RigidTransform& worldFromObject, int threads = 0);
 // A volume of one material's density in mg/cm^3 (negative: taken away) as a layer.

@@ -2,7 +2,8 @@
 // through a box of water-like tissue is exp(-mu L) with the exact chords (sources outside and
 // inside the box); a spectrum through a wedge of bone (a mesh: exact chords) is the spectrum-
 // weighted sum of Beer-Lambert terms, and its effective attenuation falls with thickness (beam
-// hardening); bone and soft tissue of a CT are told apart by HU and density from HU.
+// hardening); bone and soft tissue of a CT are told apart by HU and density from HU, and their
+// masses (one walk for both) are their densities times their exact chords.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -71,6 +72,55 @@ TEST(SpectralScene, OneEnergyThroughTissueIsExpOfMuTimesTheExactChords) {
                 EXPECT_NEAR(t.at(c, r), std::exp(-mu * chord), 2e-6) << c << "," << r;
             }
         EXPECT_GT(longest, 10.0);
+    }
+}
+
+// A CT of a soft-tissue box (40 HU) beside a bone box (1200 HU), air elsewhere: its one layer
+// (addCtLayers: one walk for both materials) gives each material's mass as its density times its
+// box's exact chord, from sources outside and inside the CT.
+TEST(SpectralScene, ACtsTwoMaterialsMassesAreTheirDensitiesTimesTheExactChords) {
+    Volume ct = Volume::allocate({20, 12, 10}, -1000.0f);
+    ct.spacing = {2.0, 2.5, 3.0};
+    ct.origin = {-19.0, -13.75, -13.5};
+    ct.meta.units = ValueUnit::HounsfieldUnits;
+    for (int k = 1; k < 9; ++k)
+        for (int j = 2; j < 10; ++j) {
+            for (int i = 1; i < 9; ++i) ct.at(i, j, k) = 40.0f;
+            for (int i = 11; i < 19; ++i) ct.at(i, j, k) = 1200.0f;
+        }
+    // The boxes' planes in the world (identity direction): voxel i spans origin + (i -+ 0.5) s.
+    const auto boxPlanes = [&](int i0, int i1) {
+        const glm::dvec3 lo = ct.origin + (glm::dvec3(i0, 2, 1) - 0.5) * ct.spacing,
+                         hi = ct.origin + (glm::dvec3(i1, 10, 9) - 0.5) * ct.spacing;
+        return std::vector<std::pair<glm::dvec3, double>>{{{1, 0, 0}, hi.x},  {{-1, 0, 0}, -lo.x}, {{0, 1, 0}, hi.y},
+                                                          {{0, -1, 0}, -lo.y}, {{0, 0, 1}, hi.z}, {{0, 0, -1}, -lo.z}};
+    };
+    const auto softPlanes = boxPlanes(1, 9), bonePlanes = boxPlanes(11, 19);
+    SpectralScene scene;
+    addCtLayers(scene, ct, nullptr, "ct", RigidTransform::identity(), 1);
+    const double soft = std::round(1000.0 * densityFromHU(40.0)) / 1e4,  // g/cm^3 -> g/cm^2 per mm
+        bone = std::round(1000.0 * densityFromHU(1200.0)) / 1e4;
+    for (const glm::dvec3 source : {glm::dvec3(-150.0, 60.0, 35.0), glm::dvec3(0.5, 1.0, -0.7)}) {
+        const ProjectionGeometry g = lookingAt(source, glm::dvec3(2.0, -1.0, 0.5), 28, 3.0);
+        const MassImages masses = renderMassImages(scene, g, 1);
+        ASSERT_EQ(masses.materials.size(), 2u);
+        EXPECT_EQ(masses.materials[0], &materialTable("soft_tissue"));
+        EXPECT_EQ(masses.materials[1], &materialTable("cortical_bone"));
+        int softMet = 0, boneMet = 0, both = 0;
+        for (int r = 0; r < 28; ++r)
+            for (int c = 0; c < 28; ++c) {
+                const double s = convexChord(source, g.detector.pixelCenter(c, r), softPlanes),
+                             b = convexChord(source, g.detector.pixelCenter(c, r), bonePlanes);
+                softMet += s > 2.0;
+                boneMet += b > 2.0;
+                both += s > 2.0 && b > 2.0;
+                EXPECT_NEAR(masses.mass[0].at(c, r), soft * s, 1e-6 + 1e-5 * soft * s) << c << "," << r;
+                EXPECT_NEAR(masses.mass[1].at(c, r), bone * b, 1e-6 + 1e-5 * bone * b) << c << "," << r;
+            }
+        EXPECT_GT(std::min(softMet, boneMet), 10) << "rays through each box";
+        if (source.x < -100.0) {
+            EXPECT_GT(both, 10) << "rays through both boxes (the source outside)";
+        }
     }
 }
 
