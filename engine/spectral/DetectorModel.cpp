@@ -8,6 +8,7 @@
 #include "core/Error.h"
 #include "core/Parallel.h"
 #include "core/Random.h"
+#include "spectral/DetectorNoise.h"
 
 namespace fm {
 
@@ -80,18 +81,7 @@ Image gaussianBlur(const Image& image, double sigma, int threads) {
 
 double poissonDraw(Rng& rng, double mean) {
     if (mean <= 0.0) return 0.0;
-    if (mean < 30.0) {
-        // Inversion: the first k whose cumulative probability passes a uniform draw.
-        const double u = rng.uniform();
-        double p = std::exp(-mean), cumulative = p;
-        int k = 0;
-        while (u > cumulative && k < 1000) {
-            ++k;
-            p *= mean / k;
-            cumulative += p;
-        }
-        return k;
-    }
+    if (mean < kPoissonNormalFromMean) return poissonByInversion(rng.uniform(), mean);
     return std::max(0.0, std::floor(mean + std::sqrt(mean) * rng.normal() + 0.5));
 }
 
@@ -112,18 +102,13 @@ Image detectedImage(const Image& primary, const DetectorSettings& s) {
     // intensity) where asked, in the same pass over the row.
     const double floor = s.photonsPerPixel > 0.0 ? 0.5 / s.photonsPerPixel : 1e-6;
     parallelFor(image.height, s.threads, [&](int begin, int end) {
+        RowNoiseScratch scratch;
         for (int r = begin; r < end; ++r) {
             float* row = &image.at(0, r);
-            if (s.photonsPerPixel > 0.0) {
-                Rng rng(s.seed * 0x9E3779B97F4A7C15ull + static_cast<std::uint64_t>(r) + 1);
-                for (int c = 0; c < image.width; ++c) {
-                    double counts = poissonDraw(rng, s.photonsPerPixel * std::max(0.0f, row[c]));
-                    if (s.electronicNoise > 0.0) counts += s.electronicNoise * rng.normal();
-                    row[c] = static_cast<float>(counts / s.photonsPerPixel);
-                }
-            }
-            if (s.logOutput)
-                for (int c = 0; c < image.width; ++c) row[c] = static_cast<float>(-std::log(std::max(double(row[c]), floor)));
+            if (s.photonsPerPixel > 0.0)
+                noisyRow(row, image.width, s.photonsPerPixel, s.electronicNoise,
+                         s.seed * 0x9E3779B97F4A7C15ull + static_cast<std::uint64_t>(r) + 1, scratch);
+            if (s.logOutput) minusLogRow(row, image.width, floor);
         }
     });
     return image;

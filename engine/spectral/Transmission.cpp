@@ -20,7 +20,7 @@ namespace {
 // outside, pixels inside: each bin's exponentials over the row in one vector loop. Cloned for
 // AVX2 (chosen at load time where the processor has it): glibc's 8-wide vector expf instead of
 // the 4-wide SSE one the baseline x86-64 build calls (bench/spectral.cpp).
-__attribute__((target_clones("avx2", "default"))) void transmissionRow(
+__attribute__((target_clones("avx512f", "avx2", "default"))) void transmissionRow(
     const float* a, std::size_t materials, int width, const float* muRho, const float* weight, std::size_t bins,
     float* exponent, float* sum) {
     std::fill(sum, sum + width, 0.0f);

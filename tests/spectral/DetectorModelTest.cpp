@@ -12,6 +12,7 @@
 #include "core/Random.h"
 #include "core/Error.h"
 #include "spectral/DetectorModel.h"
+#include "spectral/DetectorNoise.h"
 
 namespace fm::test {
 namespace {
@@ -37,6 +38,36 @@ TEST(DetectorModel, QuantumNoiseHasThePhotonCountsMeanAndVariance) {
         const double expectedVariance = level / photons;  // (N T) / N^2
         EXPECT_NEAR(mean, level, 4.0 * std::sqrt(expectedVariance / 65536.0)) << photons;
         EXPECT_NEAR(variance, expectedVariance, 0.03 * expectedVariance) << photons;
+    }
+}
+
+// The row at once (vector lanes) draws what poissonDraw and Rng::normal give pixel by pixel:
+// zero, inverted (mean < 30) and normal-approximated counts mixed, with and without electronic
+// noise (whose normals interleave with the counts' in one stream). Equal to the vector
+// functions' last bits (4 ulp): far below one count.
+TEST(DetectorModel, ARowsNoiseIsThePixelByPixelDraws) {
+    std::vector<float> row(203);
+    for (std::size_t c = 0; c < row.size(); ++c) row[c] = c % 11 == 0 ? 0.0f : static_cast<float>(c % 37) / 37.0f;
+    for (const double electronic : {0.0, 3.5}) {
+        for (const double photons : {40.0, 1e4}) {
+            std::vector<float> lanes = row;
+            RowNoiseScratch scratch;
+            noisyRow(lanes.data(), static_cast<int>(lanes.size()), photons, electronic, 99, scratch);
+            Rng rng(99);
+            int inverted = 0, approximated = 0;
+            for (std::size_t c = 0; c < row.size(); ++c) {
+                const double mean = photons * row[c];
+                inverted += mean > 0.0 && mean < kPoissonNormalFromMean;
+                approximated += mean >= kPoissonNormalFromMean;
+                double counts = poissonDraw(rng, mean);
+                if (electronic > 0.0) counts += electronic * rng.normal();
+                EXPECT_NEAR(lanes[c], static_cast<float>(counts / photons), 1e-6 * (1.0 + std::abs(counts / photons)))
+                    << "pixel " << c << ", " << photons << " photons, electronic " << electronic;
+            }
+            if (photons == 40.0) {
+                EXPECT_GT(std::min(inverted, approximated), 30);
+            }
+        }
     }
 }
 
