@@ -2,7 +2,7 @@
 // of the shared data (FM_DATA_DIR, default ../shared/data) and the knee phantom:
 //   fm_bench_spectral [--pixels=512] [--threads=2] [--rounds=7]
 // For each CT and view: the one-material DRR (renderDrr of the mu volume) and the realistic
-// radiograph (two material walks, an 80 kVp spectrum in 3 keV bins, then the detector with
+// radiograph (the materials' masses from one walk, an 80 kVp spectrum in 3 keV bins, then the detector with
 // blur and noise) timed alternately, rounds times each after a warm-up, medians and their ratio.
 // Preparation (volume conversion, material split) is timed once per CT.
 #include <algorithm>
