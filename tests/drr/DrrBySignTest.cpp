@@ -1,12 +1,16 @@
 // renderDrrBySign: the positive and the negative values' line integrals from one walk, against
 // exact chords (two disjoint boxes of opposite sign, sources outside and inside the volume) and
 // against each part prepared and rendered alone, for every walk and both voxel types.
+#include <cmath>
+#include <cstdint>
 #include <random>
+#include <vector>
 
 #include <gtest/gtest.h>
 
 #include "DrrTestUtil.h"
 #include "core/Error.h"
+#include "drr/DenseWalk.h"
 #include "drr/Drr.h"
 
 namespace {
@@ -141,6 +145,47 @@ TEST(DrrBySign, EachPartEqualsThatPartRenderedAlone) {
                 }
                 EXPECT_GT(largest, 1000.0 / (whole ? 1.0 : 7.0)) << "rays meet much of both signs";
             }
+        }
+    }
+}
+
+// The walks themselves against arithmetic: rays built by hand along a row of signed values (one
+// axis, then a staircase over two), scalar and 16 at once, sum and |value| sum as written out.
+TEST(DrrBySign, TheWalksAddUpValueAndItsMagnitude) {
+    // A padded row of 12 int16 values (index 0 and 11 are the zero padding).
+    const std::vector<std::int16_t> values{0, 5, -3, 7, 0, -11, 2, -2, 9, -4, 1, 0};
+    fm::DenseRay along;  // voxels 1..10, each 0.1 of alpha
+    along.aBegin = 0.0;
+    along.aEnd = 1.0;
+    along.next[0] = 0.1;
+    along.next[1] = along.next[2] = INFINITY;
+    along.delta[0] = 0.1;
+    along.offset[0] = 1;
+    along.linear = 1;
+    along.steps = 10;
+    double sum = 0.0, absSum = 0.0;
+    for (int i = 1; i <= 10; ++i) {
+        sum += 0.1 * values[i];
+        absSum += 0.1 * std::abs(values[i]);
+    }
+    // The same row read as a staircase: steps of +1 along x every 0.1 and "y" crossings (offset 0)
+    // in between, which split segments without moving.
+    fm::DenseRay stairs = along;
+    stairs.next[1] = 0.05;
+    stairs.delta[1] = 0.1;
+    stairs.offset[1] = 0;
+    stairs.steps = 20;
+    for (const fm::DenseRay& ray : {along, stairs}) {
+        const fm::WalkSums one = fm::walkDense<std::int16_t, true>(values.data(), 11, ray);
+        EXPECT_NEAR(one.sum, sum, 1e-12);
+        EXPECT_NEAR(one.absSum, absSum, 1e-12);
+        EXPECT_EQ((fm::walkDense<std::int16_t, false>(values.data(), 11, ray).sum), one.sum);
+        std::vector<fm::DenseRay> rays(13, ray);
+        std::vector<fm::WalkSums> sums(13);
+        fm::walkDense16<std::int16_t, true>(values.data(), 11, rays.data(), 13, sums.data());
+        for (const fm::WalkSums& s : sums) {
+            EXPECT_EQ(s.sum, one.sum);
+            EXPECT_EQ(s.absSum, one.absSum);
         }
     }
 }
