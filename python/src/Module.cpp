@@ -20,6 +20,7 @@ PYBIND11_MODULE(_fluoromatch, m) {
     fm::py::bindPoses(m);
     fm::py::bindMesh(m);
     fm::py::bindDrr(m);
+    fm::py::bindRadiograph(m);
     fm::py::bindImages(m);
     fm::py::bindRegister(m);
     fm::py::bindTrack(m);
