@@ -12,6 +12,7 @@
 #include "core/Error.h"
 #include "pose/AutoscoperTra.h"
 #include "pose/JointTrackPoses.h"
+#include "pose/PoseComparison.h"
 
 namespace fm::py {
 
@@ -66,9 +67,83 @@ TraFile traFromArray(const pb::handle& value, const std::string& form, const std
     return tra;
 }
 
+// One statistic as {"bias", "sd", "rms", "worst"}; six as {"x": ..., ..., "rz": ...}.
+pb::dict statsDict(const ErrorStats& s) {
+    pb::dict d;
+    d["bias"] = s.bias;
+    d["sd"] = s.sd;
+    d["rms"] = s.rms;
+    d["worst"] = s.worst;
+    return d;
+}
+pb::dict sixStats(const std::array<ErrorStats, 6>& stats) {
+    pb::dict d;
+    for (std::size_t i = 0; i < 6; ++i) d[kPoseErrorNames[i]] = statsDict(stats[i]);
+    return d;
+}
+
+// (frames, 4, 4) or (frames, 1, 4, 4) poses, NaN where a frame holds none.
+std::vector<std::optional<RigidTransform>> framePoses(const pb::handle& value, const std::string& what) {
+    const pb::array a = pb::array::ensure(value);
+    if (!a || (a.ndim() != 3 && !(a.ndim() == 4 && a.shape(1) == 1)))
+        throw Error(what + ": expected (frames, 4, 4) poses (or read_tra's (frames, 1, 4, 4))");
+    return poseStack(value, what, a.ndim() == 4 ? 2 : 1, true);
+}
+
 }  // namespace
 
 void bindPoses(pb::module_& m) {
+    m.def(
+        "compare_poses",
+        [](const pb::handle& truth, const pb::handle& result, const pb::handle& centre, const pb::object& cameraFromWorld) {
+            const std::optional<RigidTransform> camera =
+                cameraFromWorld.is_none() ? std::nullopt : std::optional(toTransform(cameraFromWorld, "camera_from_world"));
+            const PoseComparison c =
+                comparePoses(framePoses(truth, "truth"), framePoses(result, "result"), toVec3(centre, "centre"), camera);
+            const pb::ssize_t n = static_cast<pb::ssize_t>(c.frames.size());
+            pb::array_t<int> frames(n);
+            pb::array_t<double> centreMm(n), rotationDeg(n), bone(std::vector<pb::ssize_t>{n, 6}),
+                cameraColumns(std::vector<pb::ssize_t>{n, 6});
+            for (pb::ssize_t i = 0; i < n; ++i) {
+                const FramePoseError& f = c.frames[static_cast<std::size_t>(i)];
+                frames.mutable_at(i) = f.frame;
+                centreMm.mutable_at(i) = f.centreMm;
+                rotationDeg.mutable_at(i) = f.rotationDeg;
+                for (pb::ssize_t k = 0; k < 6; ++k) {
+                    bone.mutable_at(i, k) = f.bone[static_cast<std::size_t>(k)];
+                    cameraColumns.mutable_at(i, k) = f.camera[static_cast<std::size_t>(k)];
+                }
+            }
+            pb::dict d;
+            d["frames"] = frames;
+            d["centre_mm"] = centreMm;
+            d["rotation_deg"] = rotationDeg;
+            d["bone"] = bone;
+            d["missing_in_result"] = c.missingInResult;
+            d["missing_in_truth"] = c.missingInTruth;
+            d["centre"] = statsDict(c.centre);
+            d["rotation"] = statsDict(c.rotation);
+            d["bone_stats"] = sixStats(c.bone);
+            if (c.hasCamera) {
+                d["camera"] = cameraColumns;
+                d["camera_stats"] = sixStats(c.camera);
+            }
+            d["within_1mm_2deg"] = c.within1mm2deg;
+            d["within_05mm_05deg"] = c.within05mm05deg;
+            return d;
+        },
+        pb::arg("truth"), pb::arg("result"), pb::arg("centre"), pb::arg("camera_from_world") = pb::none(), R"doc(
+A tracking result scored against a truth, as `fluoromatch compare` scores it (docs/tracking.md):
+truth and result are (frames, 4, 4) worldFromObject poses (read_tra's (frames, 1, 4, 4) too), NaN
+where a frame holds none; centre is the bone's centre in the object frame (mm). Returns a dict:
+"frames" (those both hold), per frame "centre_mm" (|error of the centre|), "rotation_deg" (angle of
+the relative rotation), "bone" ((frames, 6): x, y, z mm and rx, ry, rz deg in the truth's axes) and,
+with camera_from_world, "camera" (the same in the camera's axes); "missing_in_result" and
+"missing_in_truth" (frames one side lacks, never dropped silently); "centre", "rotation",
+"bone_stats", "camera_stats" ({"bias", "sd", "rms", "worst"}); "within_1mm_2deg" and
+"within_05mm_05deg" (shares of the compared frames). fluoromatch.Error when no frame holds both.)doc");
+
+
     m.def("read_tra",
           [](const std::filesystem::path& path, const std::string& form, int objects) {
               const TraForm f = form == "auto" ? TraForm::Auto : parseTraForm(form, "form");

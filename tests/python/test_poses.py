@@ -1,6 +1,7 @@
 """Pose files and parameterizations: .jts rows and Autoscoper xyzypr against rotation matrices
 computed here, the JTML .jts files read, .tra and .jts written and read back (NaN frames too),
-files the CLI wrote read, and bad files refused by name and line."""
+files the CLI wrote read, and bad files refused by name and line; compare_poses scores known
+errors as `fluoromatch compare` does."""
 import numpy as np
 import pytest
 
@@ -83,3 +84,57 @@ def test_the_2011_parameters_as_an_object_pose_give_the_same_image():
     np.testing.assert_allclose(fm.pose_from_2011([0] * 6, knee.center), np.eye(4), atol=1e-12)
     with pytest.raises(fm.Error, match="elevation"):
         fm.pose_from_2011([0, 0, 0, 0, 95, 0], knee.center)
+
+
+def axis_rotation(axis, deg):
+    """Rodrigues: the rotation by deg about a unit axis (independent of the engine)."""
+    a = np.asarray(axis, float) / np.linalg.norm(axis)
+    k = np.array([[0, -a[2], a[1]], [a[2], 0, -a[0]], [-a[1], a[0], 0]])
+    t = np.radians(deg)
+    return np.eye(3) + np.sin(t) * k + (1 - np.cos(t)) * k @ k
+
+
+def test_compare_poses_scores_known_errors_and_names_missing_frames(cli, tmp_path):
+    rng = np.random.default_rng(4)
+    centre = np.array([12.0, -5.0, 30.0])
+    truth, result, shifts, angles = [], [], [], []
+    for f in range(8):
+        t = pose(axis_rotation(rng.normal(size=3), rng.uniform(0, 90)), rng.normal(size=3) * 50)
+        shift = rng.normal(size=3) * 0.4
+        angle = rng.uniform(0.05, 1.5)
+        # The result: the truth turned by `angle` about an axis through its centre, then shifted.
+        c = t[:3, :3] @ centre + t[:3, 3]
+        turn = pose(axis_rotation(rng.normal(size=3), angle))
+        turn[:3, 3] = c - turn[:3, :3] @ c
+        truth.append(t)
+        result.append(pose(np.eye(3), shift) @ turn @ t)
+        shifts.append(np.linalg.norm(shift))
+        angles.append(angle)
+    truth, result = np.array(truth), np.array(result)
+    truth[6] = np.nan   # the truth lacks frame 6
+    result[3] = np.nan  # the result lacks frame 3
+    c = fm.compare_poses(truth, result, centre)
+    compared = [0, 1, 2, 4, 5, 7]
+    assert list(c["frames"]) == compared
+    assert c["missing_in_result"] == [3] and c["missing_in_truth"] == [6]
+    np.testing.assert_allclose(c["centre_mm"], [shifts[f] for f in compared], atol=1e-9)
+    np.testing.assert_allclose(c["rotation_deg"], [angles[f] for f in compared], atol=1e-7)
+    np.testing.assert_allclose(c["centre"]["rms"], np.sqrt(np.mean(np.square([shifts[f] for f in compared]))), atol=1e-9)
+    np.testing.assert_allclose(c["rotation"]["worst"], max(angles[f] for f in compared), atol=1e-7)
+    within = np.mean([shifts[f] <= 0.5 and angles[f] <= 0.5 for f in compared])
+    assert c["within_05mm_05deg"] == pytest.approx(within)
+    assert c["bone"].shape == (6, 6) and "camera" not in c
+    # The CLI's per-frame CSV says the same.
+    fm.write_tra(tmp_path / "t.tra", truth)
+    fm.write_tra(tmp_path / "r.tra", result)
+    cli("compare", "--truth", tmp_path / "t.tra", "--tra", tmp_path / "r.tra", "--center", "12,-5,30",
+        "--csv", tmp_path / "c.csv")
+    rows = [line.split(",") for line in (tmp_path / "c.csv").read_text().splitlines()[1:]]
+    cli_rows = {int(r[0]): (float(r[2]), float(r[3])) for r in rows if r[1] == "compared"}
+    assert sorted(cli_rows) == compared
+    for i, f in enumerate(compared):
+        assert cli_rows[f] == pytest.approx((c["centre_mm"][i], c["rotation_deg"][i]), abs=2e-6)
+    with pytest.raises(fm.Error, match="truth"):
+        fm.compare_poses(truth[:, :3], result, centre)  # not 4x4 poses
+    with pytest.raises(fm.Error):
+        fm.compare_poses(truth[6:7], result[3:4], centre)  # no frame holds both
