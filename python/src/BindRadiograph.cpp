@@ -1,7 +1,6 @@
 // Realistic radiographs from Python (`fluoromatch drr --spectrum`): a CT's soft tissue and bone by
 // HU (or a bone mask), a tube spectrum through them, then scatter, blur and noise
 // (engine/spectral/). Images are (rows, cols) float32 arrays.
-#include <optional>
 #include <string>
 
 #include <pybind11/stl.h>
@@ -34,7 +33,7 @@ void bindRadiograph(pb::module_& m) {
     m.def(
         "radiograph",
         [](const Volume& ct, const ProjectionGeometry& g, const std::string& spectrumText, const pb::object& pose,
-           std::optional<Volume> boneMask, const std::string& detector, double photons, double electronicNoise,
+           const Volume* boneMask, const std::string& detector, double photons, double electronicNoise,
            double blur, double scatter, double scatterSigma, const std::string& output, std::uint64_t seed,
            int threads) {
             const UnitGuess hu = guessHounsfield(ct);
@@ -57,7 +56,7 @@ void bindRadiograph(pb::module_& m) {
             {
                 pb::gil_scoped_release unlock;
                 SpectralScene scene;
-                addCtLayers(scene, ct, boneMask ? &*boneMask : nullptr, "ct", worldFromCt, threads);
+                addCtLayers(scene, ct, boneMask, "ct", worldFromCt, threads);
                 image = detectedImage(transmissionImage(renderMassImages(scene, g, threads), spectrum, response, threads),
                                       settings);
             }

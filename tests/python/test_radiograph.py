@@ -29,17 +29,22 @@ def tissue_box():
     return ct, lower, upper
 
 
-@pytest.mark.parametrize("source", [(-300.0, 20.0, 10.0), (2.0, 1.0, 1.0)], ids=["outside", "inside"])
-def test_one_energy_through_tissue_is_exp_of_mu_rho_times_the_exact_chords(source):
-    ct, lower, upper = tissue_box()
-    n = (lower + upper) / 2 - np.array(source)
+def facing(source, target, cols=40, rows=32, pitch=2.0):
+    """A detector 400 mm beyond the source, facing `target`."""
+    n = np.asarray(target) - np.array(source)
     n /= np.linalg.norm(n)
     u = np.cross(n, [0.0, 0.0, 1.0])
     u /= np.linalg.norm(u)
     v = np.cross(n, u)
-    cols, rows, pitch = 40, 32, 2.0
     centre = np.array(source) + 400 * n
-    g = fm.Geometry(source, (cols, rows), (pitch, pitch), centre - pitch * ((cols - 1) / 2 * u + (rows - 1) / 2 * v), u, v)
+    return fm.Geometry(source, (cols, rows), (pitch, pitch), centre - pitch * ((cols - 1) / 2 * u + (rows - 1) / 2 * v), u, v)
+
+
+@pytest.mark.parametrize("source", [(-300.0, 20.0, 10.0), (2.0, 1.0, 1.0)], ids=["outside", "inside"])
+def test_one_energy_through_tissue_is_exp_of_mu_rho_times_the_exact_chords(source):
+    ct, lower, upper = tissue_box()
+    g = facing(source, (lower + upper) / 2)
+    rows, cols = 32, 40
     image = fm.radiograph(ct, g, spectrum="mono=60")
     chords = box_chords(np.array(source), pixel_centres(g), lower, upper)
     assert image.shape == (rows, cols) and image.dtype == np.float32
@@ -84,3 +89,18 @@ def test_refuses_what_it_cannot_use():
         fm.radiograph(ct, g, spectrum="80,flter=2")
     with pytest.raises(fm.Error, match="photons"):
         fm.radiograph(ct, g, photons=-1)
+
+
+def test_a_bone_mask_says_which_voxels_are_bone():
+    ct, lower, upper = tissue_box()
+    g = facing((-300.0, 20.0, 10.0), (lower + upper) / 2)
+    soft = fm.radiograph(ct, g, spectrum="mono=60")
+    everything = fm.Volume(np.ones(ct.array.shape, np.float32), spacing=ct.spacing, origin=ct.origin)
+    bone = fm.radiograph(ct, g, spectrum="mono=60", bone_mask=everything)
+    # The same density, attenuating as cortical bone: the ratio of the two is NIST's.
+    inside = soft > 0.05
+    assert inside.sum() > 50
+    np.testing.assert_allclose(bone[inside] / soft[inside], nist_mu_rho("cortical_bone", 60.0) / nist_mu_rho("soft_tissue", 60.0),
+                               rtol=2e-5)
+    with pytest.raises(fm.Error, match="grid"):
+        fm.radiograph(ct, g, bone_mask=fm.Volume(np.ones((3, 3, 3), np.float32)))
