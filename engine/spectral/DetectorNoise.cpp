@@ -55,8 +55,9 @@ __attribute__((target_clones("avx512f", "avx2", "default"))) void minusLogLanes(
 void noisyRow(float* row, int width, double photons, double electronicNoise, std::uint64_t seed,
               RowNoiseScratch& s) {
     const auto n = static_cast<std::size_t>(width);
-    s.u1.resize(2 * n + 2);
-    s.u2.resize(2 * n + 2);
+    // At most two normals per pixel (its count's and its electronic noise's): n pairs.
+    s.u1.resize(n + 1);
+    s.u2.resize(n + 1);
     s.drawn.assign(n, 0.0);
     s.normalOf.assign(n, -1);
     s.electronicOf.assign(n, -1);
@@ -90,9 +91,9 @@ void noisyRow(float* row, int width, double photons, double electronicNoise, std
     boxMuller(s.u1.data(), s.u2.data(), pairs, s.cosNormal.data(), s.sinNormal.data());
     const auto normal = [&](int k) { return k % 2 == 0 ? s.cosNormal[k / 2] : s.sinNormal[k / 2]; };
     // 3. The counts: the normal approximation in lanes (each pixel's normal gathered first).
-    std::vector<double>& perPixel = s.u2;  // the uniforms are spent
-    for (std::size_t c = 0; c < n; ++c) perPixel[c] = s.normalOf[c] >= 0 ? normal(s.normalOf[c]) : 0.0;
-    normalCounts(row, width, photons, perPixel.data(), s.drawn.data());
+    s.pixelNormal.resize(n);
+    for (std::size_t c = 0; c < n; ++c) s.pixelNormal[c] = s.normalOf[c] >= 0 ? normal(s.normalOf[c]) : 0.0;
+    normalCounts(row, width, photons, s.pixelNormal.data(), s.drawn.data());
     for (std::size_t c = 0; c < n; ++c) {
         double counts = s.drawn[c];
         if (s.electronicOf[c] >= 0) counts += electronicNoise * normal(s.electronicOf[c]);

@@ -18,7 +18,7 @@ inline constexpr double kPoissonNormalFromMean = 30.0;
 
 // Working memory of noisyRow, reused from row to row.
 struct RowNoiseScratch {
-    std::vector<double> u1, u2, cosNormal, sinNormal, drawn;
+    std::vector<double> u1, u2, cosNormal, sinNormal, pixelNormal, drawn;
     std::vector<std::int32_t> normalOf, electronicOf;
 };
 

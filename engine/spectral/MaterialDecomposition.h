@@ -1,9 +1,10 @@
 #pragma once
 // A CT as materials: each voxel's material (soft tissue or cortical bone; air, below -900 HU,
 // weighs nothing) from its HU, or from a label map (labelled voxels are bone), and its density
-// from its HU. The result is one volume per material holding density in mg/cm^3 (whole numbers:
-// the DRR walk stores them as int16), so that the exact Siddon walk of each gives that material's
-// mass along every ray (mg/cm^3 x mm).
+// from its HU. The result is one volume of density in mg/cm^3, positive where the voxel is soft
+// tissue and negative where it is bone (no voxel is both; whole numbers: the DRR walk stores them
+// as int16), so that one exact Siddon walk gives both materials' mass along every ray
+// (renderDrrBySign: mg/cm^3 x mm).
 //
 // Density from HU: the piecewise-linear map DeepDRR uses (deepdrr/vol/volume.py):
 //   rho = max(min(0.001029 HU + 1.030, 0.0005886 HU + 1.030), 0) g/cm^3
@@ -24,14 +25,9 @@ inline constexpr double kBoneThresholdHU = 350.0;
 
 double densityFromHU(double hu);  // g/cm^3
 
-struct MaterialVolumes {
-    Volume softTissue;  // mg/cm^3 where the voxel is soft tissue (or air), else 0
-    Volume bone;        // mg/cm^3 where it is bone, else 0
-};
-
 // `boneMask` (same grid, > 0 = bone) replaces the HU threshold when given. NaN voxels hold
 // nothing. Throws fm::Error for a mask of another grid.
-MaterialVolumes decomposeMaterials(const Volume& ctHU, const Volume* boneMask = nullptr,
-                                   double boneThresholdHU = kBoneThresholdHU);
+Volume signedMaterialDensity(const Volume& ctHU, const Volume* boneMask = nullptr,
+                             double boneThresholdHU = kBoneThresholdHU);
 
 }  // namespace fm

@@ -30,11 +30,8 @@ void addDensityLayer(SpectralScene& scene, const Volume& mgPerCm3, const Materia
 
 void addCtLayers(SpectralScene& scene, const Volume& ctHU, const Volume* boneMask, const std::string& name,
                  const RigidTransform& worldFromObject, int threads) {
-    MaterialVolumes m = decomposeMaterials(ctHU, boneMask);
-    // No voxel holds both, so soft tissue - bone keeps both (exactly: whole mg/cm^3).
-    Volume& both = m.softTissue;
-    for (std::size_t i = 0; i < both.values.size(); ++i) both.values[i] -= m.bone.values[i];
-    addDensityLayer(scene, both, materialTable("soft_tissue"), name + " soft tissue and bone", worldFromObject, threads);
+    addDensityLayer(scene, signedMaterialDensity(ctHU, boneMask), materialTable("soft_tissue"),
+                    name + " soft tissue and bone", worldFromObject, threads);
     scene.layers.back().negativeMaterial = &materialTable("cortical_bone");
 }
 
@@ -57,7 +54,7 @@ MassImages renderMassImages(const SpectralScene& scene, const ProjectionGeometry
         }
         return static_cast<std::size_t>(m);
     };
-    std::vector<const MaterialLayer*> twoMaterial;
+    std::vector<std::pair<const MaterialLayer*, const VolumeXrayModel*>> twoMaterial;
     for (const MaterialLayer& layer : scene.layers) {
         if (!layer.material) throw Error("a spectral layer without a material");
         const std::size_t m = materialIndex(layer.material);
@@ -66,9 +63,9 @@ MassImages renderMassImages(const SpectralScene& scene, const ProjectionGeometry
             continue;
         }
         materialIndex(layer.negativeMaterial);
-        if (!dynamic_cast<const VolumeXrayModel*>(layer.object.model.get()))
-            throw Error("spectral layer '" + layer.object.name + "': only a volume holds a second material");
-        twoMaterial.push_back(&layer);
+        const auto* volume = dynamic_cast<const VolumeXrayModel*>(layer.object.model.get());
+        if (!volume) throw Error("spectral layer '" + layer.object.name + "': only a volume holds a second material");
+        twoMaterial.emplace_back(&layer, volume);
     }
     if (materials.empty()) throw Error("a spectral scene without layers");
     XrayRenderSettings settings;
@@ -77,11 +74,10 @@ MassImages renderMassImages(const SpectralScene& scene, const ProjectionGeometry
     for (const Scene& one : scenes) lineIntegrals.push_back(renderView(one, camera, settings));
     DrrRenderOptions options;
     options.threads = threads;
-    for (const MaterialLayer* layer : twoMaterial) {
+    for (const auto& [layer, volume] : twoMaterial) {
         if (!layer->object.visible) continue;
-        const auto& model = static_cast<const VolumeXrayModel&>(*layer->object.model);
         const DrrSignParts parts =
-            renderDrrBySign(*model.volume(), cameraInObjectFrame(layer->object, camera), options);
+            renderDrrBySign(*volume->volume(), cameraInObjectFrame(layer->object, camera), options);
         for (const auto& [part, material] : {std::pair{&parts.positive, layer->material},
                                              std::pair{&parts.negative, layer->negativeMaterial}}) {
             Image& sum = lineIntegrals[materialIndex(material)];

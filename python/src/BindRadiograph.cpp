@@ -57,8 +57,7 @@ void bindRadiograph(pb::module_& m) {
                 pb::gil_scoped_release unlock;
                 SpectralScene scene;
                 addCtLayers(scene, ct, boneMask, "ct", worldFromCt, threads);
-                image = detectedImage(transmissionImage(renderMassImages(scene, g, threads), spectrum, response, threads),
-                                      settings);
+                image = simulateRadiograph(scene, g, spectrum, response, settings);
             }
             return imageToArray(std::move(image));
         },

@@ -167,20 +167,22 @@ TEST(SpectralScene, ASpectrumThroughAWedgeOfBoneIsTheWeightedSumAndHardens) {
 }
 
 TEST(SpectralScene, BoneAndSoftTissueByHUWithDensityFromHU) {
-    EXPECT_NEAR(densityFromHU(-1000.0), 0.001, 1e-12);  // the formula; decomposeMaterials leaves air out
+    EXPECT_NEAR(densityFromHU(-1000.0), 0.001, 1e-12);  // the formula; signedMaterialDensity leaves air out
     EXPECT_NEAR(densityFromHU(0.0), 1.030, 1e-12);
     EXPECT_NEAR(densityFromHU(1500.0), 0.0005886 * 1500 + 1.030, 1e-12);
     EXPECT_EQ(densityFromHU(-2000.0), 0.0);
     Volume ct = Volume::allocate({3, 1, 1}, 0.0f);
     ct.values = {-1000.0f, 40.0f, 1200.0f};
-    const MaterialVolumes m = decomposeMaterials(ct);
-    EXPECT_EQ(m.softTissue.values, (std::vector<float>{0.0f, std::round(1000.0f * float(densityFromHU(40.0))), 0.0f}));
-    EXPECT_EQ(m.bone.values, (std::vector<float>{0.0f, 0.0f, std::round(1000.0f * float(densityFromHU(1200.0)))}));
+    // Soft tissue positive, bone negative.
+    const float soft40 = std::round(1000.0f * float(densityFromHU(40.0))),
+                bone1200 = std::round(1000.0f * float(densityFromHU(1200.0)));
+    EXPECT_EQ(signedMaterialDensity(ct).values, (std::vector<float>{0.0f, soft40, -bone1200}));
     Volume mask = Volume::allocate({3, 1, 1}, 0.0f);
     mask.values = {0.0f, 1.0f, 0.0f};  // a label map: the middle voxel is the bone
-    const MaterialVolumes byLabel = decomposeMaterials(ct, &mask);
-    EXPECT_GT(byLabel.bone.values[1], 0.0f);
-    EXPECT_EQ(byLabel.bone.values[2], 0.0f);
+    const Volume byLabel = signedMaterialDensity(ct, &mask);
+    EXPECT_EQ(byLabel.values, (std::vector<float>{0.0f, -soft40, bone1200}));
+    const Volume otherGrid = Volume::allocate({2, 1, 1}, 1.0f);
+    EXPECT_THROW(signedMaterialDensity(ct, &otherGrid), Error);
 }
 
 }  // namespace
