@@ -1,0 +1,167 @@
+#include "find/GradientCorrelation.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/Error.h"
+
+namespace fm {
+
+CorrelationReference::CorrelationReference(const Image& reference, const Mask* valid, int erodePixels)
+    : width_(reference.width), height_(reference.height) {
+    if (width_ < 3 || height_ < 3) throw Error("correlation reference: the image is smaller than 3 x 3");
+    if (valid && (valid->width != width_ || valid->height != height_))
+        throw Error("correlation reference: the valid mask's size differs from the image's");
+    const GradientImages g = sobel(reference);
+    // Usable: an interior pixel (Sobel's border is 0 and never compared) that is valid, and no
+    // invalid pixel within erodePixels.
+    Mask usable = interiorMask(width_, height_, nullptr);
+    if (valid) {
+        Mask invalid(width_, height_, false);
+        for (std::size_t i = 0; i < invalid.inside.size(); ++i) invalid.inside[i] = valid->inside[i] ? 0 : 1;
+        const Mask grown = dilate(invalid, erodePixels);
+        for (std::size_t i = 0; i < usable.inside.size(); ++i)
+            if (grown.inside[i]) usable.inside[i] = 0;
+    }
+    paddedWidth_ = 3 * width_;
+    paddedHeight_ = 3 * height_;
+    const std::size_t padded = static_cast<std::size_t>(paddedWidth_) * paddedHeight_;
+    gx_.assign(padded, 0.0f);
+    gy_.assign(padded, 0.0f);
+    std::vector<float> ok(padded, 0.0f);
+    for (int y = 0; y < height_; ++y)
+        for (int x = 0; x < width_; ++x) {
+            if (!usable.at(x, y)) continue;
+            const std::size_t p = static_cast<std::size_t>(y + height_) * paddedWidth_ + x + width_;
+            gx_[p] = g.gx.at(x, y);
+            gy_[p] = g.gy.at(x, y);
+            ok[p] = 1.0f;
+        }
+    const std::size_t prefixWidth = static_cast<std::size_t>(paddedWidth_) + 1;
+    for (auto& plane : prefix_) plane.assign(prefixWidth * paddedHeight_, 0.0);
+    for (int y = 0; y < paddedHeight_; ++y) {
+        const std::size_t row = static_cast<std::size_t>(y) * paddedWidth_;
+        double* q[5];
+        for (int k = 0; k < 5; ++k) q[k] = &prefix_[k][static_cast<std::size_t>(y) * prefixWidth];
+        for (int x = 0; x < paddedWidth_; ++x) {
+            const double a = gx_[row + x], b = gy_[row + x];
+            q[0][x + 1] = q[0][x] + a;
+            q[1][x + 1] = q[1][x] + b;
+            q[2][x + 1] = q[2][x] + a * a;
+            q[3][x + 1] = q[3][x] + b * b;
+            q[4][x + 1] = q[4][x] + ok[row + x];
+        }
+    }
+}
+
+GradientTemplate gradientTemplate(const Image& render, glm::dvec2 anchorPixel, glm::ivec2 maxSize) {
+    int x0 = render.width, y0 = render.height, x1 = -1, y1 = -1;
+    for (int y = 0; y < render.height; ++y)
+        for (int x = 0; x < render.width; ++x)
+            if (render.at(x, y) > 0.0f) {
+                x0 = std::min(x0, x);
+                x1 = std::max(x1, x);
+                y0 = std::min(y0, y);
+                y1 = std::max(y1, y);
+            }
+    GradientTemplate t;
+    if (x1 < 0) return t;
+    // Two pixels around the footprint: the mask reaches one beyond it and Sobel one more. The
+    // anchor inside the box keeps every placement's template within the padded reference.
+    const glm::ivec2 anchor(static_cast<int>(std::lround(anchorPixel.x)), static_cast<int>(std::lround(anchorPixel.y)));
+    x0 = std::min(x0 - 2, anchor.x), y0 = std::min(y0 - 2, anchor.y);
+    x1 = std::max(x1 + 2, anchor.x), y1 = std::max(y1 + 2, anchor.y);
+    const int w = x1 - x0 + 1, h = y1 - y0 + 1;
+    if (w > maxSize.x || h > maxSize.y) return t;
+    Image crop(w, h);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const int sx = x + x0, sy = y + y0;
+            if (sx >= 0 && sy >= 0 && sx < render.width && sy < render.height) crop.at(x, y) = render.at(sx, sy);
+        }
+    t.gradients = sobel(crop);
+    t.mask = interiorMask(w, h, nullptr);
+    const Mask footprint = dilate(footprintMask(crop), 1);
+    for (std::size_t i = 0; i < t.mask.inside.size(); ++i) t.mask.inside[i] &= footprint.inside[i];
+    t.anchor = anchor - glm::ivec2(x0, y0);
+    return t;
+}
+
+std::vector<float> gradientNccMap(const CorrelationReference& r, const GradientTemplate& t, double minCoverage) {
+    const int W = r.width_, H = r.height_;
+    std::vector<float> out(static_cast<std::size_t>(W) * H, kNoPlacement);
+    if (t.empty()) return out;
+    const int tw = t.mask.width, th = t.mask.height;
+    if (tw > W || th > H) throw Error("gradient correlation: the template is larger than the reference");
+    // The template's own sums (mask pixels), and its mask's runs along rows.
+    double n = 0.0, sT[2] = {0.0, 0.0}, sTT[2] = {0.0, 0.0};
+    struct Run {
+        int row, begin, end;
+    };
+    std::vector<Run> runs;
+    for (int j = 0; j < th; ++j)
+        for (int i = 0; i < tw; ++i) {
+            if (!t.mask.at(i, j)) continue;
+            if (runs.empty() || runs.back().row != j || runs.back().end != i) runs.push_back({j, i, i});
+            ++runs.back().end;
+            const double a = t.gradients.gx.at(i, j), b = t.gradients.gy.at(i, j);
+            n += 1.0;
+            sT[0] += a, sT[1] += b, sTT[0] += a * a, sTT[1] += b * b;
+        }
+    if (n < 2.0) return out;
+    // Placement (X, Y) puts template pixel (i, j) on padded pixel (X - ax + i + W, Y - ay + j + H).
+    const int offX = W - t.anchor.x, offY = H - t.anchor.y;
+    const std::size_t PW = static_cast<std::size_t>(r.paddedWidth_);
+    const std::size_t prefixWidth = PW + 1;
+    std::vector<double> sums[5], cross[2];
+    for (auto& s : sums) s.assign(static_cast<std::size_t>(W) * H, 0.0);
+    for (auto& s : cross) s.assign(static_cast<std::size_t>(W) * H, 0.0);
+    for (int Y = 0; Y < H; ++Y) {
+        const std::size_t outRow = static_cast<std::size_t>(Y) * W;
+        for (const Run& run : runs) {
+            const int py = Y + offY + run.row;
+            if (py < 0 || py >= r.paddedHeight_) continue;
+            for (int k = 0; k < 5; ++k) {
+                const double* q = &r.prefix_[k][static_cast<std::size_t>(py) * prefixWidth + offX];
+                double* s = &sums[k][outRow];
+                const int b = run.begin, e = run.end;
+                for (int X = 0; X < W; ++X) s[X] += q[X + e] - q[X + b];
+            }
+        }
+        for (int j = 0; j < th; ++j) {
+            const int py = Y + offY + j;
+            if (py < 0 || py >= r.paddedHeight_) continue;
+            const float* gxRow = &r.gx_[static_cast<std::size_t>(py) * PW + offX];
+            const float* gyRow = &r.gy_[static_cast<std::size_t>(py) * PW + offX];
+            double* cx = &cross[0][outRow];
+            double* cy = &cross[1][outRow];
+            for (int i = 0; i < tw; ++i) {
+                if (!t.mask.at(i, j)) continue;
+                const double a = t.gradients.gx.at(i, j), b = t.gradients.gy.at(i, j);
+                const float* gx = gxRow + i;
+                const float* gy = gyRow + i;
+                for (int X = 0; X < W; ++X) {
+                    cx[X] += a * gx[X];
+                    cy[X] += b * gy[X];
+                }
+            }
+        }
+    }
+    const double varT[2] = {sTT[0] - sT[0] * sT[0] / n, sTT[1] - sT[1] * sT[1] / n};
+    for (std::size_t k = 0; k < out.size(); ++k) {
+        if (sums[4][k] < minCoverage * n) continue;
+        double score = 0.0;
+        for (int c = 0; c < 2; ++c) {
+            const double sG = sums[c][k], sGG = sums[2 + c][k];
+            const double varG = sGG - sG * sG / n;
+            const double cov = cross[c][k] - sT[c] * sG / n;
+            // As nccValues: no variance on either side correlates nothing.
+            if (varT[c] > 1e-12 * sTT[c] && varG > 1e-12 * sGG && varT[c] > 0.0 && varG > 0.0)
+                score += cov / std::sqrt(varT[c] * varG);
+        }
+        out[k] = static_cast<float>(0.5 * score);
+    }
+    return out;
+}
+
+}  // namespace fm
