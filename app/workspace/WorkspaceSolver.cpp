@@ -68,6 +68,8 @@ void WorkspaceSolver::start(std::shared_ptr<const WorkspaceModel> model, int obj
             scene.objects[0].worldFromObject = start;
             FindSettings findSettings;
             findSettings.threads = model->threads();
+            BiplaneFindSettings biplaneSettings;
+            biplaneSettings.threads = model->threads();
             if (find) publish([&](WorkspaceSolveSnapshot& s) { s.stage = "finding: templates, scan, refine, finish"; });
             if (model->cameraCount() == 1) {
                 RegistrationSettings settings =
@@ -119,17 +121,18 @@ void WorkspaceSolver::start(std::shared_ptr<const WorkspaceModel> model, int obj
                 settings.registration.threads = model->threads();
                 const std::string name = scene.objects[0].name;
                 RigidTransform from = start;
+                std::string foundHow;
                 if (find) {
-                    // As track with no keyframe: found in each camera, the cameras must agree.
+                    // As track with no keyframe (track/FoundKeyframe.h).
                     RegistrationSettings finish = realXraySettings(defaultSimilarityFor(*scene.objects[0].model));
                     finish.threads = model->threads();
                     const FoundKeyframe k = findKeyframe(scene, name, [model](int f) { return model->prepared(f); }, frame,
-                                                         finish, findSettings, ConfirmationSettings{}, &stop_);
+                                                         finish, findSettings, biplaneSettings, ConfirmationSettings{}, &stop_);
                     if (k.verdict == AnswerVerdict::Lost)
-                        throw Error("Find: " + name + "'s answers in the cameras disagree (no two within " +
-                                    std::to_string(static_cast<int>(kCamerasAgreeDeg)) + " deg and " +
-                                    std::to_string(static_cast<int>(kCamerasAgreeMm)) + " mm): set a pose and Solve");
+                        throw Error("Find: " + name + "'s pose found is " + k.verdictText + ": set a pose and Solve");
                     from = k.pose;
+                    foundHow = k.biplane ? "found with no start in all cameras at once (" + k.verdictText + "), "
+                                         : "found with no start in each camera, ";
                     publish([&](WorkspaceSolveSnapshot& s) { s.stage = "found; biplane registration (register --trial)"; });
                 }
                 // As register --trial: searches from independent starts confirm the answer (the
@@ -152,7 +155,7 @@ void WorkspaceSolver::start(std::shared_ptr<const WorkspaceModel> model, int obj
                     s.similarity = r.similarity();
                     s.evaluations = r.evaluations;
                     s.evidence = confirmed.evidence;
-                    s.note = std::string(find ? "found with no start in each camera, " : "") + r.note + ", " +
+                    s.note = foundHow + r.note + ", " +
                              std::to_string(confirmed.runs.size()) + " searches from independent starts";
                     if (find && r.worldFromBone) {
                         s.candidates = {*r.worldFromBone};

@@ -393,8 +393,9 @@ void WorkspaceUi::solvePane(WorkspaceState& state, const Pane& pane) {
     record("button:find");
     if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
         tooltip(state.cameraNames.size() > 1
-                    ? "Find the selected object in this frame with no start: in each camera, the cameras must "
-                      "agree, then registered in all of them (track with no keyframe). Undo rejects it"
+                    ? "Find the selected object in this frame with no start (track with no keyframe: a bone volume "
+                      "in all cameras at once, a mesh in each camera, which must agree), then registered in all of "
+                      "them. Undo rejects it"
                     : "Find the selected object in this frame with no start (register with no --start): the "
                       "answer is shown; Next candidate steps through the others, Undo rejects it");
     ImGui::SameLine();

@@ -21,8 +21,8 @@ void forEachKeyValue(const std::string& text, const std::string& option, const s
     }
 }
 
-FindSpace parseFindSpace(const std::string& text, const std::string& option) {
-    FindSpace space;
+FindSpace parseFindSpace(const std::string& text, const std::string& option, const FindSpace& base) {
+    FindSpace space = base;
     const std::string keys = " (tilt=DEG, roll=DEG, depth=NEAR:FAR as fractions of the source-to-detector distance)";
     forEachKeyValue(text, option, keys, [&](const std::string& key, const std::string& value) {
         if (key == "tilt") {

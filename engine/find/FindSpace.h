@@ -38,11 +38,12 @@ struct FindSpace {
 void forEachKeyValue(const std::string& text, const std::string& option, const std::string& keysHelp,
                      const std::function<void(const std::string& key, const std::string& value)>& each);
 
-// "tilt=35,roll=180,depth=0.25:0.92" (any subset, any order) over the defaults; depth in mm as
+// "tilt=35,roll=180,depth=0.25:0.92" (any subset, any order) over `base`; depth in mm as
 // "depth=600mm:1400mm". Throws fm::Error naming `option` and the key for an unknown key, a value
 // that is not a number or out of range (tilt 0-90, roll 0-180, 0 < near < far < 1, or
 // 0 < near mm < far mm).
-FindSpace parseFindSpace(const std::string& text, const std::string& option = "--find-space");
+FindSpace parseFindSpace(const std::string& text, const std::string& option = "--find-space",
+                         const FindSpace& base = {});
 
 // "tilt +-35 deg, roll +-180 deg, depth 0.25-0.92 of the source-to-detector distance" (or
 // "depth 600-1400 mm from the source")

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "core/Error.h"
 #include "find/SharedView.h"
@@ -32,7 +33,8 @@ double distanceToRay(const glm::dvec3& p, const glm::dvec3& source, const glm::d
 
 FoundKeyframe findKeyframe(const Scene& scene, const std::string& bone, const FrameViews& frames, int frame,
                            const RegistrationSettings& settings, const FindSettings& find,
-                           const ConfirmationSettings& confirmation, const std::atomic<bool>* stop) {
+                           const BiplaneFindSettings& biplane, const ConfirmationSettings& confirmation,
+                           const std::atomic<bool>* stop) {
     const std::optional<std::size_t> object = scene.find(bone);
     if (!object) throw Error("find: no bone '" + bone + "' in the scene");
     const std::vector<RegistrationView> views = frames(frame);
@@ -44,6 +46,15 @@ FoundKeyframe findKeyframe(const Scene& scene, const std::string& bone, const Fr
     alone.cameras = scene.cameras;
     alone.objects = {scene.objects[*object]};
     alone.objects[0].visible = true;
+    if (views.size() >= 2 && defaultSimilarityFor(*alone.objects[0].model) == SimilarityMeasure::GradientNcc) {
+        RegistrationSettings finish = settings;
+        finish.similarity = SimilarityMeasure::GradientNcc;
+        out.biplane = findBiplanePose(alone, views, finish, biplane, stop);
+        if (!out.biplane->candidates.empty()) out.pose = out.biplane->candidates[0].worldFromObject;
+        out.verdict = out.biplane->verdict;
+        out.verdictText = out.biplane->verdictText;
+        return out;
+    }
     const std::vector<bool> findPose{true};
     for (const RegistrationView& view : views) {
         CameraFind c;
@@ -76,6 +87,7 @@ FoundKeyframe findKeyframe(const Scene& scene, const std::string& bone, const Fr
         if (better(out.cameras[k], out.cameras[out.best])) out.best = k;
     out.pose = out.cameras[out.best].result.registration.objects[0].answer.worldFromObject;
     out.verdict = out.cameras[out.best].check.verdict;
+    out.verdictText = out.cameras[out.best].check.text;
     if (out.cameras.size() < 2) return out;
     // Several cameras: each camera's answers (its confirmed one, then the finder's others), found
     // independently, must agree in 3D - the same orientation (within kCamerasAgreeDeg) and centres on
@@ -114,6 +126,14 @@ FoundKeyframe findKeyframe(const Scene& scene, const std::string& bone, const Fr
                     out.camerasAgreeDeg = angle;
                 }
     out.verdict = out.rayMissMm ? AnswerVerdict::Ok : AnswerVerdict::Lost;
+    char text[160];
+    if (out.rayMissMm)
+        std::snprintf(text, sizeof text, "ok: the cameras agree (orientations %.1f deg apart, centres on rays within %.2f mm of one point)",
+                      out.camerasAgreeDeg, *out.rayMissMm);
+    else
+        std::snprintf(text, sizeof text, "lost: the cameras' answers disagree (no two within %.0f deg and %.0f mm)",
+                      kCamerasAgreeDeg, kCamerasAgreeMm);
+    out.verdictText = text;
     return out;
 }
 

@@ -1,17 +1,22 @@
 #pragma once
 // A bone with no keyframe (issue 29): its pose in one frame found with no start, so that tracking
-// starts there as from a keyframe. In each camera with an image of the frame the bone is found
-// alone (find/FoundRegistration: found, confirmed, judged, in that camera's frame), its depth
-// searched where the other cameras' views cross this one's (find/SharedView.h) unless the search
-// space gives a band in mm. With two or more cameras the answers found independently must agree
-// in 3D (orientation within kCamerasAgreeDeg, centres on rays passing within kCamerasAgreeMm of
-// one point: what confirms a find where no outline ratio can); the bone's centre is then where
-// the rays meet, its orientation the better answer's. The tracker then registers the frame in
-// every camera from that pose.
+// starts there as from a keyframe. The tracker then registers the frame in every camera from it.
+//   - A bone volume in two or more cameras: found in all of them at once (find/BiplaneFinder.h:
+//     orientations x 3D positions scored by every camera's gradient correlation, the best
+//     polished, the verdict from the best rival basin). A bone among other bones is told apart by
+//     what the cameras see of it together; its outline in one camera is lost among theirs.
+//   - Otherwise (one camera, or a mesh, tracked by its outline) in each camera alone
+//     (find/FoundRegistration: found, confirmed, judged, in that camera's frame), its depth
+//     searched where the other cameras' views cross this one's (find/SharedView.h) unless the
+//     search space gives a band in mm. With two or more cameras the answers found independently
+//     must agree in 3D (orientation within kCamerasAgreeDeg, centres on rays passing within
+//     kCamerasAgreeMm of one point: what confirms a find where no outline ratio can); the
+//     bone's centre is then where the rays meet, its orientation the better answer's.
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "find/BiplaneFinder.h"
 #include "find/FoundRegistration.h"
 #include "track/Tracker.h"
 #include "xray/AnswerCheck.h"
@@ -34,20 +39,25 @@ struct CameraFind {
 struct FoundKeyframe {
     int frame = 0;
     RigidTransform pose;             // the bone's worldFromObject
-    std::vector<CameraFind> cameras;  // per camera that had an image
+    std::optional<FoundBiplane> biplane;  // found in all the cameras at once (then `cameras` is empty)
+    std::vector<CameraFind> cameras;  // per camera that had an image, each found alone
     std::size_t best = 0;            // index into cameras of the one whose orientation is used
     // With several cameras: the agreeing pair's largest distance (mm) from the centre to its rays,
     // and the angle between their orientations; unset when no pair agrees.
     std::optional<double> rayMissMm;
     double camerasAgreeDeg = 0.0;
-    // One camera: its verdict. Several: ok when two cameras' answers agree, else lost.
+    // Found at once: the finder's verdict. One camera: its verdict. Several found alone: ok when
+    // two cameras' answers agree, else lost.
     AnswerVerdict verdict = AnswerVerdict::Lost;
+    std::string verdictText;  // why, in one line
 };
 
-// `scene`: the bone alone (sceneOfBoneAlone). Throws fm::Error when the frame has no image or
-// as findObjectPose.
+// `scene`: the bone alone (sceneOfBoneAlone). `find` is for cameras found alone, `biplane` for
+// all at once (a band in mm in its space replaces the depths the cameras share). Throws
+// fm::Error when the frame has no image, or as findObjectPose and findBiplanePose.
 FoundKeyframe findKeyframe(const Scene& scene, const std::string& bone, const FrameViews& frames, int frame,
                            const RegistrationSettings& settings, const FindSettings& find,
-                           const ConfirmationSettings& confirmation = {}, const std::atomic<bool>* stop = nullptr);
+                           const BiplaneFindSettings& biplane = {}, const ConfirmationSettings& confirmation = {},
+                           const std::atomic<bool>* stop = nullptr);
 
 }  // namespace fm

@@ -1,0 +1,166 @@
+#include "find/BiplaneFinder.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "core/Error.h"
+#include "find/RefineHypotheses.h"
+#include "find/SeenPose.h"
+#include "find/SharedView.h"
+#include "scene/ObjectPoseParameterization.h"
+
+namespace fm {
+
+namespace {
+
+// The coarsest power of two (up to maxScanFactor) at which the bone's bounding-box diagonal,
+// at the middle of the band on the first camera's axis, spans minScanSpanPixels.
+int scanFactorFor(const XrayModel& model, const ProjectionGeometry& first, double depth, const BiplaneFindSettings& s) {
+    const CameraAxes axes = cameraAxes(first);
+    const Box3 box = model.bounds();
+    const double diagonalMm = box.empty() ? 0.0 : glm::length(box.upper - box.lower);
+    const double spanPixels = diagonalMm * axes.distance / depth / axes.spacing.x;
+    int factor = 1;
+    while (factor * 2 <= s.maxScanFactor && spanPixels / (factor * 2) >= s.minScanSpanPixels) factor *= 2;
+    return factor;
+}
+
+bool sameAnswer(const RigidTransform& a, const RigidTransform& b, const glm::dvec3& pivot) {
+    return glm::length(a.applyToPoint(pivot) - b.applyToPoint(pivot)) <= kBiplaneSameMm &&
+           rotationBetweenDeg(a.rotation, b.rotation) <= kBiplaneSameDeg;
+}
+
+// The registration of `scene` in `views` in the first camera's frame from `start` (angles 0 there).
+Registration registrationFrom(const Scene& scene, const std::vector<RegistrationView>& views,
+                              const RegistrationSettings& settings, const RigidTransform& start, const glm::dvec3& pivot,
+                              std::shared_ptr<ObjectPoseParameterization>& parameterization) {
+    parameterization = std::make_shared<ObjectPoseParameterization>(scene.objects[0].name, scene.cameras.at(views[0].camera),
+                                                                     start, pivot);
+    return Registration(scene, parameterization, views, settings);
+}
+
+}  // namespace
+
+FoundBiplane findBiplanePose(const Scene& scene, const std::vector<RegistrationView>& views,
+                             const RegistrationSettings& finish, const BiplaneFindSettings& settings,
+                             const std::atomic<bool>* stop) {
+    if (views.size() < 2) throw Error("biplane find: needs two or more cameras");
+    if (scene.objects.empty()) throw Error("biplane find: no object");
+    if (settings.refined < 1 || settings.finalists < 1 || settings.refineEvaluations < 1 || settings.finishEvaluations < 2)
+        throw Error("biplane find: hypotheses and evaluations must be positive");
+    FoundBiplane out;
+    const ProjectionGeometry& first = scene.cameras.at(views[0].camera);
+    std::vector<ProjectionGeometry> others;
+    for (std::size_t k = 1; k < views.size(); ++k) others.push_back(scene.cameras.at(views[k].camera));
+    // The depths the cameras share, unless the search space gives a band in mm.
+    const auto band = settings.space.nearMm > 0.0
+                          ? std::optional<std::pair<double, double>>({settings.space.nearMm, settings.space.farMm})
+                          : sharedViewDepths(first, others);
+    if (!band) throw Error("biplane find: the cameras share no view (no depth of the first camera's rays is seen by another)");
+    out.band = *band;
+    const XrayModel& model = *scene.objects[0].model;
+    const glm::dvec3 pivot = defaultPivot(model);
+
+    // 1. scan
+    auto clock = FindClock::now();
+    BiplaneScanSettings scanSettings = settings.scan;
+    scanSettings.factor = scanFactorFor(model, first, 0.5 * (band->first + band->second), settings);
+    scanSettings.threads = settings.threads;
+    out.scanFactor = scanSettings.factor;
+    const BiplaneScan scan = scanBiplane(scene, pivot, views, settings.space, *band, scanSettings, stop);
+    out.orientations = scan.orientations;
+    const int refined = std::min<int>(settings.refined, static_cast<int>(scan.hypotheses.size()));
+    out.stages.push_back({"scan", secondsSince(clock), scan.placements, refined});
+    if ((stop && stop->load()) || refined == 0) {
+        out.stopped = stop && stop->load();
+        out.verdictText = refined == 0 ? "no pose of the search space is seen by every camera" : "stopped";
+        return out;
+    }
+
+    // 2. refine at the scan's pixel: Nelder-Mead from each hypothesis within half a grid step and
+    // a scan pixel and a half.
+    clock = FindClock::now();
+    const CameraAxes axes = cameraAxes(first);
+    const double pixelMm = axes.spacing.x * scanSettings.factor * 0.5 * (band->first + band->second) / axes.distance;
+    const double halfStep = 0.5 * scanSettings.angleStepDeg, reach = 1.5 * pixelMm;
+    RegistrationSettings refine = refinementSettings(finish, {scanSettings.factor}, settings.refineEvaluations,
+                                                     {reach, reach, reach, halfStep, halfStep, halfStep});
+    refine.depthRounds = 0;  // the other cameras see depth
+    const RigidTransform origin = scan.hypotheses[0].worldFromObject(pivot);
+    std::shared_ptr<ObjectPoseParameterization> frame;
+    const Registration coarse = registrationFrom(scene, views, refine, origin, pivot, frame);
+    std::vector<SceneParams> starts;
+    for (int k = 0; k < refined; ++k) starts.push_back(frame->paramsOf(scan.hypotheses[k].worldFromObject(pivot)));
+    const std::vector<RefinedHypothesis> polished = refineHypotheses(coarse, starts, settings.threads, stop);
+    long long evaluations = 0;
+    for (const RefinedHypothesis& r : polished) evaluations += r.evaluations;
+    // The best distinct ones go on.
+    std::vector<RefinedHypothesis> finalists;
+    for (const RefinedHypothesis& r : polished) {
+        if (static_cast<int>(finalists.size()) == settings.finalists) break;
+        const RigidTransform pose = frame->worldFromObject(r.params);
+        if (std::none_of(finalists.begin(), finalists.end(), [&](const RefinedHypothesis& f) {
+                return sameAnswer(frame->worldFromObject(f.params), pose, pivot);
+            }))
+            finalists.push_back(r);
+    }
+    out.stages.push_back({"refine", secondsSince(clock), evaluations, static_cast<int>(finalists.size())});
+    if (stop && stop->load()) {
+        out.stopped = true;
+        for (const RefinedHypothesis& f : finalists)
+            out.candidates.push_back({frame->worldFromObject(f.params), -f.cost, f.hypothesis});
+        out.verdict = AnswerVerdict::Doubtful;
+        out.verdictText = "stopped before the finish: the scan's pixel's best, unconfirmed";
+        return out;
+    }
+
+    // 3. finish at 1/2 and 1/4 of the scan's pixel.
+    clock = FindClock::now();
+    std::vector<int> finishLevels{std::max(1, scanSettings.factor / 2)};
+    if (scanSettings.factor / 4 >= 1) finishLevels.push_back(scanSettings.factor / 4);
+    RegistrationSettings fine = refinementSettings(finish, finishLevels, settings.finishEvaluations,
+                                                   {pixelMm, pixelMm, pixelMm, 0.2 * halfStep, 0.2 * halfStep, 0.2 * halfStep});
+    fine.depthRounds = 0;
+    const Registration finer = registrationFrom(scene, views, fine, origin, pivot, frame);
+    starts.clear();
+    for (const RefinedHypothesis& f : finalists) starts.push_back(f.params);
+    const std::vector<RefinedHypothesis> done = refineHypotheses(finer, starts, settings.threads, stop);
+    evaluations = 0;
+    for (const RefinedHypothesis& r : done) {
+        evaluations += r.evaluations;
+        const RigidTransform pose = frame->worldFromObject(r.params);
+        if (std::none_of(out.candidates.begin(), out.candidates.end(),
+                         [&](const BiplaneCandidate& c) { return sameAnswer(c.worldFromObject, pose, pivot); }))
+            out.candidates.push_back({pose, -r.cost, finalists[static_cast<std::size_t>(r.hypothesis)].hypothesis});
+    }
+    out.stages.push_back({"finish", secondsSince(clock), evaluations, static_cast<int>(out.candidates.size())});
+    out.stopped = stop && stop->load();
+
+    // How sure: the best against its best rival (the best answer of another basin).
+    if (out.candidates.empty()) {
+        out.verdictText = "lost: no answer";
+        return out;
+    }
+    const BiplaneCandidate& best = out.candidates[0];
+    const auto rival = std::find_if(out.candidates.begin() + 1, out.candidates.end(), [&](const BiplaneCandidate& c) {
+        return glm::length(c.worldFromObject.applyToPoint(pivot) - best.worldFromObject.applyToPoint(pivot)) > kBiplaneRivalMm ||
+               rotationBetweenDeg(c.worldFromObject.rotation, best.worldFromObject.rotation) > kBiplaneRivalDeg;
+    });
+    char text[200];
+    if (rival != out.candidates.end()) {
+        const double ratio = rival->similarity / best.similarity;
+        out.verdict = ratio < kBiplaneRivalRatio ? AnswerVerdict::Ok : AnswerVerdict::Doubtful;
+        std::snprintf(text, sizeof text, "%s: the best answer of another basin scores %.2f of it (%s %.2f)",
+                      toString(out.verdict), ratio, ratio < kBiplaneRivalRatio ? "below" : "at least", kBiplaneRivalRatio);
+    } else {
+        // No other basin left: every finalist, each from its own hypothesis, ended at this answer.
+        out.verdict = finalists.size() >= 2 ? AnswerVerdict::Ok : AnswerVerdict::Doubtful;
+        std::snprintf(text, sizeof text, "%s: all %zu finalists ended at it (no other basin left to compare it with)",
+                      toString(out.verdict), finalists.size());
+    }
+    out.verdictText = text;
+    return out;
+}
+
+}  // namespace fm

@@ -1,0 +1,78 @@
+#pragma once
+// A bone volume's pose in two or more calibrated cameras with no start (issue 29), on a CPU, with no
+// training. Measured on a simulated example_ct femur trial (docs/find.md, "Biplane"):
+//   1. scan: orientations x 3D positions scored by every camera's gradient correlation at once
+//      (find/BiplaneScan.h) at the coarsest power of two at which the bone spans minScanSpanPixels;
+//   2. refine: the best `refined` hypotheses each polished by the registration's own search at the
+//      scan's pixel (Nelder-Mead from the hypothesis, both cameras, exact renders; side by side,
+//      one per core): the scan ranks a 10 deg-off truth a few hundred places down, its polish lifts it;
+//   3. finish: the best `finalists` polished at 1/2 and 1/4 of the scan's pixel, where the bone's
+//      inner edges tell it from the other bones' (femur: the truth 1.10 against 0.79 next, where
+//      the scan's pixel had them 1.02 against 0.99); answers that agree merged, best first.
+// How sure: the best answer against the next distinct one (kBiplaneRivalRatio); the tracker's
+// registration and verdict follow, as from a keyframe. Deterministic whatever the thread count.
+#include <atomic>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "find/BiplaneScan.h"
+#include "find/FindStage.h"
+#include "search/AnswerVerdict.h"
+#include "search/Registration.h"
+
+namespace fm {
+
+// An answer further than kBiplaneRivalMm or kBiplaneRivalDeg from the best one (another basin)
+// scoring above kBiplaneRivalRatio of it is a rival the cameras cannot rule out: the find is
+// doubtful. (The femur's best other basin scored 0.50 of the truth's; docs/find.md.)
+inline constexpr double kBiplaneRivalRatio = 0.9;
+inline constexpr double kBiplaneRivalMm = 5.0;
+inline constexpr double kBiplaneRivalDeg = 5.0;
+// Two answers within these are one (merged).
+inline constexpr double kBiplaneSameMm = 2.0;
+inline constexpr double kBiplaneSameDeg = 2.0;
+
+struct BiplaneFindSettings {
+    // A CT bone's frame says nothing of how a camera sees it: any orientation. Depths: where the
+    // cameras' views cross, unless a band in mm is given (fractions of the film distance are not
+    // used: a pinhole calibration's film is a virtual plane).
+    FindSpace space{90.0, 180.0};
+    int maxScanFactor = 16;
+    double minScanSpanPixels = 40.0;  // the bone's bounding-box diagonal at the scan's pixel
+    BiplaneScanSettings scan;         // its factor is chosen as above
+    int refined = 400;
+    int refineEvaluations = 80;
+    int finalists = 8;
+    int finishEvaluations = 80;  // at 1/2 of the scan's pixel (half of it at 1/4)
+    int threads = 0;
+};
+
+struct BiplaneCandidate {
+    RigidTransform worldFromObject;
+    double similarity = 0.0;  // summed over the cameras, at the finish's finest level
+    int hypothesis = 0;       // its rank in the scan
+};
+
+struct FoundBiplane {
+    std::vector<BiplaneCandidate> candidates;  // distinct, best first
+    std::vector<FindStage> stages;
+    int scanFactor = 0;
+    int orientations = 0;
+    std::pair<double, double> band{0.0, 0.0};  // depths searched along the first camera
+    bool stopped = false;
+    // Ok when the best rival (kBiplaneRivalMm / kBiplaneRivalDeg away) scores below
+    // kBiplaneRivalRatio of the best, or when there is none and two or more finalists ended at the
+    // best; else doubtful; lost when there is no candidate.
+    AnswerVerdict verdict = AnswerVerdict::Lost;
+    std::string verdictText;
+};
+
+// Object 0 of `scene` (the bone alone) in `views` (two or more cameras). `finish` gives the
+// similarity and render settings (gradient NCC; cropToModel for real radiographs). Throws
+// fm::Error for fewer than two views, cameras that share no depths, settings out of range.
+FoundBiplane findBiplanePose(const Scene& scene, const std::vector<RegistrationView>& views,
+                             const RegistrationSettings& finish, const BiplaneFindSettings& settings,
+                             const std::atomic<bool>* stop = nullptr);
+
+}  // namespace fm

@@ -1,0 +1,197 @@
+#include "find/BiplaneScan.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/Error.h"
+#include "core/Parallel.h"
+#include "find/GradientCorrelation.h"
+#include "find/SeenPose.h"
+#include "geometry/DetectorCrop.h"
+#include "similarity/ImagePyramid.h"
+
+namespace fm {
+
+namespace {
+
+// One camera at the scan's pixel: its geometry, prepared reference and where the nominal point lies.
+struct ScanView {
+    ProjectionGeometry camera;
+    CorrelationReference reference;
+};
+
+// The view cropped to a multiple of `factor` from its first pixel (as the registration's levels)
+// and downsampled.
+ScanView scanView(const Scene& scene, const RegistrationView& view, int factor, const BiplaneScanSettings& settings) {
+    const ProjectionGeometry& full = scene.cameras.at(view.camera);
+    const int w = view.reference.width / factor * factor, h = view.reference.height / factor * factor;
+    if (w / factor < 8 || h / factor < 8)
+        throw Error("biplane scan: camera " + std::to_string(view.camera + 1) + "'s image is smaller than 8 x 8 pixels at 1/" +
+                    std::to_string(factor));
+    Image cropped(w, h);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) cropped.at(x, y) = view.reference.at(x, y);
+    std::optional<Mask> valid;
+    if (view.valid) valid = downsampleMaskBy(cropMask(*view.valid, {0, 0, w, h}), factor);
+    return {cropDetector(full, 0, 0, w, h).downsampled(factor),
+            CorrelationReference(downsampleBy(cropped, factor), valid ? &*valid : nullptr, settings.erodePixels)};
+}
+
+// Bilinear value of a map at continuous pixel (x, y); kNoPlacement when any corner has none or
+// the point is off the map.
+float mapAt(const std::vector<float>& map, int w, int h, float x, float y) {
+    if (!(x >= 0.0f && y >= 0.0f && x <= float(w - 1) && y <= float(h - 1))) return kNoPlacement;
+    const int x0 = std::min(static_cast<int>(x), w - 2), y0 = std::min(static_cast<int>(y), h - 2);
+    const float fx = x - float(x0), fy = y - float(y0);
+    const float* p = &map[static_cast<std::size_t>(y0) * w + x0];
+    if (p[0] == kNoPlacement || p[1] == kNoPlacement || p[w] == kNoPlacement || p[w + 1] == kNoPlacement)
+        return kNoPlacement;
+    return (1 - fy) * ((1 - fx) * p[0] + fx * p[1]) + fy * ((1 - fx) * p[w] + fx * p[w + 1]);
+}
+
+}  // namespace
+
+std::vector<glm::dmat3> orientationGrid(const ProjectionGeometry& firstCamera, const FindSpace& space,
+                                        double angleStepDeg) {
+    if (!(angleStepDeg > 0.0)) throw Error("orientation grid: the step must be positive");
+    const CameraAxes axes = cameraAxes(firstCamera);
+    // Inclusive steps over [-range, range], or a full turn without repeating its end.
+    const auto steps = [](double range, double step) {
+        std::vector<double> v;
+        if (range >= 180.0) {
+            const int n = std::max(1, static_cast<int>(std::ceil(360.0 / step - 1e-9)));
+            for (int k = 0; k < n; ++k) v.push_back(-180.0 + 360.0 * k / n);
+        } else {
+            const int n = static_cast<int>(std::ceil(2.0 * range / step - 1e-9));
+            for (int k = 0; k <= n; ++k) v.push_back(n == 0 ? 0.0 : -range + 2.0 * range * k / n);
+        }
+        return v;
+    };
+    const bool anyTilt = space.tiltDeg >= 90.0;
+    std::vector<glm::dmat3> grid;
+    for (double tiltU : steps(std::min(space.tiltDeg, 90.0), angleStepDeg)) {
+        // About v the circle shrinks by cos(tiltU): fewer steps near the poles.
+        const double c = std::max(std::cos(tiltU * M_PI / 180.0), angleStepDeg / 360.0);
+        for (double tiltV : steps(anyTilt ? 180.0 : space.tiltDeg, angleStepDeg / c))
+            for (double roll : steps(space.rollDeg, angleStepDeg)) {
+                SeenPose seen;
+                seen.pixel = axes.principalPixel;
+                seen.depth = axes.distance;
+                seen.rollDeg = roll, seen.tiltUDeg = tiltU, seen.tiltVDeg = tiltV;
+                grid.push_back(worldFromSeen(axes, seen, glm::dvec3(0.0)).rotation);
+            }
+    }
+    return grid;
+}
+
+BiplaneScan scanBiplane(const Scene& scene, const glm::dvec3& pivotInObject, const std::vector<RegistrationView>& views,
+                        const FindSpace& space, std::pair<double, double> band, const BiplaneScanSettings& settings,
+                        const std::atomic<bool>* stop) {
+    if (views.size() < 2) throw Error("biplane scan: needs two or more cameras");
+    if (scene.objects.empty()) throw Error("biplane scan: no object");
+    std::vector<ScanView> cams;
+    for (const RegistrationView& v : views) cams.push_back(scanView(scene, v, settings.factor, settings));
+    const ProjectionGeometry& first = cams[0].camera;
+    const CameraAxes axes = cameraAxes(first);
+    const glm::ivec2 size = first.detector.size;
+    // The 3D grid: the first camera's scan pixels times depths one scan pixel apart.
+    const double middle = 0.5 * (band.first + band.second);
+    const double pixelMm = first.detector.spacing.x * middle / axes.distance;
+    std::vector<double> depths;
+    for (double d = band.first; d <= band.second + 1e-9; d += pixelMm) depths.push_back(d);
+    const auto pointAt = [&](int x, int y, double depth) {
+        const glm::dvec3 ray = first.detector.pixelCenter(x, y) - first.source;
+        return first.source + (depth / glm::dot(ray, axes.view)) * ray;
+    };
+    // Where every grid point lands in the other cameras (the same for every orientation).
+    const std::size_t pointCount = static_cast<std::size_t>(size.x) * size.y * depths.size();
+    std::vector<std::vector<glm::vec2>> landing(cams.size());
+    for (std::size_t c = 1; c < cams.size(); ++c) {
+        landing[c].assign(pointCount, glm::vec2(-1e9f));
+        std::size_t k = 0;
+        for (int y = 0; y < size.y; ++y)
+            for (int x = 0; x < size.x; ++x)
+                for (double d : depths) {
+                    if (const auto p = cams[c].camera.projectToPixel(pointAt(x, y, d))) landing[c][k] = glm::vec2(*p);
+                    ++k;
+                }
+    }
+    const glm::dvec3 nominal = axes.source + middle * axes.view;
+    std::vector<glm::dvec2> nominalPixel;
+    for (const ScanView& c : cams) nominalPixel.push_back(c.camera.projectToPixel(nominal).value_or(glm::dvec2(-1e9)));
+
+    const std::vector<glm::dmat3> grid = orientationGrid(scene.cameras.at(views[0].camera), space, settings.angleStepDeg);
+    std::vector<std::vector<BiplaneHypothesis>> kept(grid.size());
+    const double cameraCount = static_cast<double>(cams.size());
+    parallelFor(static_cast<int>(grid.size()), settings.threads, [&](int begin, int end) {
+        for (int k = begin; k < end; ++k) {
+            if (stop && stop->load()) return;
+            Scene at = scene;
+            at.objects[0].worldFromObject = {grid[k], nominal - grid[k] * pivotInObject};
+            XrayRenderSettings render;
+            render.threads = 1;
+            std::vector<std::vector<float>> maps;
+            for (std::size_t c = 0; c < cams.size(); ++c) {
+                const GradientTemplate t = gradientTemplate(renderView(at, cams[c].camera, render), nominalPixel[c],
+                                                            cams[c].camera.detector.size);
+                maps.push_back(gradientNccMap(cams[c].reference, t, settings.minCoverage));
+            }
+            // The most the other cameras can add: a point of the first camera's pixel that cannot
+            // beat the worst kept even with their best is not looked at along its depths.
+            double othersBest = 0.0;
+            for (std::size_t c = 1; c < cams.size(); ++c)
+                othersBest += *std::max_element(maps[c].begin(), maps[c].end());
+            std::vector<BiplaneHypothesis>& best = kept[k];
+            const auto full = [&] { return static_cast<int>(best.size()) == settings.perOrientation; };
+            // The first camera's pixels best first: once one cannot beat the worst kept even with
+            // the other cameras' best, no later one can.
+            std::vector<std::pair<float, int>> order;
+            for (int i = 0; i < size.x * size.y; ++i)
+                if (maps[0][static_cast<std::size_t>(i)] != kNoPlacement) order.push_back({maps[0][static_cast<std::size_t>(i)], i});
+            std::sort(order.begin(), order.end(), [](const auto& a, const auto& b) {
+                return a.first != b.first ? a.first > b.first : a.second < b.second;
+            });
+            for (const auto& [here, pixel] : order) {
+                if (full() && (here + othersBest) / cameraCount <= best.back().score) break;
+                const std::size_t point = static_cast<std::size_t>(pixel) * depths.size();
+                for (std::size_t d = 0; d < depths.size(); ++d) {
+                    double sum = here;
+                    bool seen = true;
+                    for (std::size_t c = 1; c < cams.size() && seen; ++c) {
+                        const glm::vec2 p = landing[c][point + d];
+                        const glm::ivec2 s = cams[c].camera.detector.size;
+                        const float v = mapAt(maps[c], s.x, s.y, p.x, p.y);
+                        seen = v != kNoPlacement;
+                        sum += v;
+                    }
+                    const double score = sum / cameraCount;
+                    if (!seen || (full() && score <= best.back().score)) continue;
+                    // One basin, one entry: a better point replaces a kept one within distinctMm.
+                    const glm::dvec3 p = pointAt(pixel % size.x, pixel / size.x, depths[d]);
+                    const auto near = std::find_if(best.begin(), best.end(), [&](const BiplaneHypothesis& h) {
+                        return glm::length(h.pivot - p) < settings.distinctMm;
+                    });
+                    if (near != best.end()) {
+                        if (score <= near->score) continue;
+                        best.erase(near);
+                    }
+                    best.push_back({grid[k], p, score, k});
+                    std::sort(best.begin(), best.end(),
+                              [](const BiplaneHypothesis& a, const BiplaneHypothesis& b) { return a.score > b.score; });
+                    if (static_cast<int>(best.size()) > settings.perOrientation) best.pop_back();
+                }
+            }
+        }
+    }, 1);
+    BiplaneScan out;
+    out.orientations = static_cast<int>(grid.size());
+    out.points = static_cast<long long>(pointCount);
+    for (const ScanView& c : cams)
+        out.placements += static_cast<long long>(grid.size()) * c.camera.detector.size.x * c.camera.detector.size.y;
+    for (const auto& k : kept) out.hypotheses.insert(out.hypotheses.end(), k.begin(), k.end());
+    std::stable_sort(out.hypotheses.begin(), out.hypotheses.end(),
+                     [](const BiplaneHypothesis& a, const BiplaneHypothesis& b) { return a.score > b.score; });
+    return out;
+}
+
+}  // namespace fm
