@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/ElapsedTime.h"
 #include "cli/BoneOptions.h"
 #include "cli/CommandRegistry.h"
 #include "cli/SceneOptions.h"
@@ -90,10 +91,7 @@ double processCpuMs() {
     return t.tv_sec * 1e3 + t.tv_nsec * 1e-6;
 }
 
-double msSince(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-        .count();
-}
+using fm::cli::msSince;
 
 // Display window: the 1st..99.5th percentile of the pixels the volume covers (non-zero), so that
 // a few extreme rays do not wash out the picture and the empty background stays black.

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "bones/BoneVolume.h"
+#include "cli/ElapsedTime.h"
 #include "cli/BoneOptions.h"
 #include "cli/CommandRegistry.h"
 #include "cli/NumberChecks.h"
@@ -35,10 +36,7 @@ struct MeshArgs {
     bool check = false;
 };
 
-double msSince(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-        .count();
-}
+using fm::cli::msSince;
 
 void runMesh(const MeshArgs& a) {
     fm::MarchingCubesOptions o;

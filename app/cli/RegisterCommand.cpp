@@ -185,7 +185,7 @@ const std::vector<fm::cli::CommandMode>& registerModes() {
         fm::cli::RadiographOptions scratchPrep;
         const std::vector<std::string> trialOptions = fm::cli::optionNames(
             [&](CLI::App* c) { fm::cli::addRadiographOptions(c, scratchPrep); },
-            {"trial", "bone", "frame", "cameras", "start", "out", "seed", "threads", "runs", "max-runs"});
+            {"trial", "bone", "frame", "cameras", "start", "out", "seed", "threads", "runs", "max-runs", "find-space"});
         return std::vector<fm::cli::CommandMode>{
             // The tracker's search, seeded; the radiograph flags over the trial's preparation.
             {"register --trial", "one bone in one frame of a trial, in its cameras", trialOptions},
@@ -463,6 +463,7 @@ FM_REGISTER_COMMAND("register", 40, [](CLI::App& app) {
             trial->threads = a->search.threads;
             trial->confirmation = fm::cli::confirmationFrom(a->xray);
             trial->prep = a->xray.prep;
+            trial->findSpace = a->xray.findSpace;
             fm::cli::runTrialRegister(*trial);
         } else {
             // --frame is shared: the trial's frame, or the row of --start/--out pose files.

@@ -17,6 +17,7 @@
 #include <string>
 
 #include "cli/CameraList.h"
+#include "cli/BoneWithNoStart.h"
 #include "cli/CommandRegistry.h"
 #include "cli/NumberChecks.h"
 #include "cli/TrackCsv.h"
@@ -132,55 +133,6 @@ void checkTrackOutputs(const TrackArgs& a) {
     fm::io::checkOutputPath(a.csv, "--csv");
 }
 
-// A bone with no keyframe (no trial keyframe, nothing in --start): its pose found in `frame`
-// with no start (track/FoundKeyframe.h); a lost answer is refused.
-fm::RigidTransform foundKeyframe(const fm::TrialScene& scene, const std::string& bone,
-                                 const std::vector<std::size_t>& cameras, int frame, const TrackArgs& a,
-                                 bool writer) {
-    fm::FindSettings find;
-    fm::BiplaneFindSettings biplane;
-    if (!a.findSpace.empty()) {
-        find.space = fm::parseFindSpace(a.findSpace, "--find-space");
-        biplane.space = fm::parseFindSpace(a.findSpace, "--find-space", biplane.space);
-    }
-    find.threads = a.threads;
-    biplane.threads = a.threads;
-    const fm::Scene alone = fm::sceneOfBoneAlone(scene, bone);
-    const fm::SceneObject& object = alone.object(bone);
-    fm::RegistrationSettings settings = fm::realXraySettings(fm::defaultSimilarityFor(*object.model));
-    settings.seed = a.seed;
-    settings.threads = a.threads;
-    const fm::FoundKeyframe k =
-        fm::findKeyframe(alone, bone, fm::trialFrameViews(scene, cameras), frame, settings, find, biplane);
-    if (writer) {
-        if (const auto& b = k.biplane) {
-            std::printf("find      %s has no keyframe: found in frame %d in its cameras at once (tilt +-%.0f deg, roll +-%.0f "
-                        "deg; depths %.0f-%.0f mm from the first camera's source)\n", bone.c_str(), frame,
-                        biplane.space.tiltDeg, biplane.space.rollDeg, b->band.first, b->band.second);
-            std::printf("          %d orientations, scan at 1/%d\n", b->orientations, b->scanFactor);
-            for (const std::string& line : fm::describeFindStages(b->stages)) std::printf("          %s\n", line.c_str());
-            for (std::size_t c = 0; c < b->candidates.size() && c < 3; ++c)
-                std::printf("          answer %zu: similarity %.3f (scan hypothesis %d)\n", c + 1, b->candidates[c].similarity,
-                            b->candidates[c].hypothesis + 1);
-        } else {
-            std::printf("find      %s has no keyframe: found in frame %d (%s)\n", bone.c_str(), frame,
-                        fm::describeFindSpace(find.space).c_str());
-            for (const fm::CameraFind& c : k.cameras) {
-                const fm::FoundPose& f = *c.result.found[0];
-                std::printf("          camera %zu: %s; %.2f s, scan at 1/%d, %s\n", c.camera + 1,
-                            fm::describeFindSpace(c.space).c_str(), f.seconds(), f.scanFactor, c.check.text.c_str());
-            }
-        }
-        std::printf("          %s\n", k.verdictText.c_str());
-    }
-    if (k.verdict == fm::AnswerVerdict::Lost)
-        throw fm::Error(bone + " has no keyframe and the pose found in frame " + std::to_string(frame) + " is " +
-                        k.verdictText + ": give a keyframe (--start) or a --find-space that holds it");
-    if (k.verdict == fm::AnswerVerdict::Doubtful && writer)
-        std::fprintf(stderr, "warning: %s: the pose found in frame %d is doubtful; its frame's verdict says more\n",
-                     bone.c_str(), frame);
-    return k.pose;
-}
 
 void runTrack(const TrackArgs& a) {
     checkTrackOutputs(a);
@@ -238,7 +190,8 @@ void runTrack(const TrackArgs& a) {
         }
         std::map<int, fm::RigidTransform> keyframes = fm::boneKeyframes(scene, b.name, startTra, a.start);
         if (keyframes.empty()) {
-            keyframes[frames.front()] = foundKeyframe(scene, b.name, cameras, frames.front(), a, writer);
+            keyframes[frames.front()] =
+                fm::cli::findBoneWithNoStart(scene, b.name, cameras, frames.front(), a.findSpace, a.seed, a.threads, writer);
             anyFound = true;
         }
         b.segments = fm::splitAtKeyframes(frames, keyframes);

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "cli/BoneWithNoStart.h"
 #include "cli/CameraList.h"
 #include "cli/TrialPreparationOptions.h"
 #include "core/Error.h"
@@ -58,16 +59,20 @@ void runTrialRegister(const TrialRegisterArgs& a) {
                 start = p.volumeFrame == VolumeFrame::Autoscoper ? objectPoseFromTra(scene, a.bone, p.worldFromVolume)
                                                                  : p.worldFromVolume;
     }
-    if (!start) throw Error("no start pose for " + a.bone + " at frame " + std::to_string(a.frame) +
-                            ": give --start S.tra or a keyframe in the trial");
     const std::vector<std::size_t> cameras = parseCameraList(a.cameras, scene.cameras.size());
+    // Neither: the pose found with no start, as track finds a bone with no keyframe.
+    const bool found = !start;
+    if (!found && !a.findSpace.empty())
+        throw Error("--find-space applies to a bone with no start; " + a.bone + " has one at frame " + std::to_string(a.frame) +
+                    (a.start.empty() ? " (the trial's keyframe)" : " (" + a.start + ")"));
+    if (found) start = findBoneWithNoStart(scene, a.bone, cameras, a.frame, a.findSpace, a.seed, a.threads, true);
     TrackSettings settings;
     settings.registration.seed = a.seed;
     settings.registration.threads = a.threads;
     const FrameViews views = trialFrameViews(scene, cameras);
     // A keyframe at this frame is the user's pose: its similarity is what the answer must reach.
     FrameContext context;
-    context.startIsKeyframe = a.start.empty();
+    context.startIsKeyframe = a.start.empty() && !found;
     // Searches from independent starts, as register --model confirms a model.
     const ConfirmedFrame confirmed =
         registerFrameConfirmed(scene.scene, a.bone, views, settings, a.frame, *start, context, a.confirmation);
@@ -78,8 +83,9 @@ void runTrialRegister(const TrialRegisterArgs& a) {
     const RigidTransform tra = traPoseFromObject(scene, a.bone, *r.worldFromBone);
     const auto m = tra.toRowMajor4x4();
     std::printf("bone        %s, frame %d, %s\n", a.bone.c_str(), a.frame, r.note.c_str());
-    std::printf("start       %s\n", a.start.empty() ? "the trial's keyframe at this frame"
-                                                    : (a.start + " at this frame").c_str());
+    std::printf("start       %s\n", found              ? "found with no start (above)"
+                                    : a.start.empty() ? "the trial's keyframe at this frame"
+                                                      : (a.start + " at this frame").c_str());
     std::printf("pose (.tra, Autoscoper volume frame, row-major):\n");
     for (int row = 0; row < 4; ++row)
         std::printf("  %12.6f %12.6f %12.6f %12.6f\n", m[4 * row], m[4 * row + 1], m[4 * row + 2], m[4 * row + 3]);

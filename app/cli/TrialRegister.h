@@ -17,6 +17,7 @@ struct TrialRegisterArgs {
     std::string cameras;  // "1" or "1,2"; empty = all
     std::string start;    // .tra holding the start pose at --frame (else the trial's keyframes)
     std::string out;      // .tra with the result at --frame
+    std::string findSpace;  // --find-space: where a bone with no start is looked for
     std::uint64_t seed = 1;
     int threads = 0;
     ConfirmationSettings confirmation;  // register's --runs, --max-runs

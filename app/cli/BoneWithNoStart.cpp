@@ -1,0 +1,61 @@
+#include "cli/BoneWithNoStart.h"
+
+#include <cstdio>
+
+#include "core/Error.h"
+#include "find/FindSpace.h"
+#include "track/FoundKeyframe.h"
+#include "xray/ObjectRegistration.h"
+
+namespace fm::cli {
+
+RigidTransform findBoneWithNoStart(const TrialScene& scene, const std::string& bone,
+                                   const std::vector<std::size_t>& cameras, int frame, const std::string& findSpace,
+                                   std::uint64_t seed, int threads, bool print) {
+    FindSettings find;
+    BiplaneFindSettings biplane;
+    if (!findSpace.empty()) {
+        find.space = parseFindSpace(findSpace, "--find-space");
+        biplane.space = parseFindSpace(findSpace, "--find-space", biplane.space);
+    }
+    find.threads = threads;
+    biplane.threads = threads;
+    const Scene alone = sceneOfBoneAlone(scene, bone);
+    const SceneObject& object = alone.object(bone);
+    RegistrationSettings settings = realXraySettings(defaultSimilarityFor(*object.model));
+    settings.seed = seed;
+    settings.threads = threads;
+    const FoundKeyframe k =
+        findKeyframe(alone, bone, trialFrameViews(scene, cameras), frame, settings, find, biplane);
+    if (print) {
+        if (const auto& b = k.biplane) {
+            std::printf("find      %s has no keyframe: found in frame %d in its cameras at once (tilt +-%.0f deg, roll +-%.0f "
+                        "deg; depths %.0f-%.0f mm from the first camera's source)\n", bone.c_str(), frame,
+                        biplane.space.tiltDeg, biplane.space.rollDeg, b->band.first, b->band.second);
+            std::printf("          %d orientation%s, scan at 1/%d\n", b->orientations, b->orientations == 1 ? "" : "s",
+                        b->scanFactor);
+            for (const std::string& line : describeFindStages(b->stages)) std::printf("          %s\n", line.c_str());
+            for (std::size_t c = 0; c < b->candidates.size() && c < 3; ++c)
+                std::printf("          answer %zu: similarity %.3f (scan hypothesis %d)\n", c + 1, b->candidates[c].similarity,
+                            b->candidates[c].hypothesis + 1);
+        } else {
+            std::printf("find      %s has no keyframe: found in frame %d (%s)\n", bone.c_str(), frame,
+                        describeFindSpace(find.space).c_str());
+            for (const CameraFind& c : k.cameras) {
+                const FoundPose& f = *c.result.found[0];
+                std::printf("          camera %zu: %s; %.2f s, scan at 1/%d, %s\n", c.camera + 1,
+                            describeFindSpace(c.space).c_str(), f.seconds(), f.scanFactor, c.check.text.c_str());
+            }
+        }
+        std::printf("          %s\n", k.verdictText.c_str());
+    }
+    // A pose that may be wrong is no start: the frames tracked from it would be judged against it
+    // and called ok (a doubtful biplane find on the default simulated femur trial, whose cameras see
+    // the two femurs overlap: 10 frames tracked from it, none within 1 mm of the truth, each "ok").
+    if (k.verdict != AnswerVerdict::Ok)
+        throw Error(bone + " has no keyframe and the pose found in frame " + std::to_string(frame) + " is " +
+                        k.verdictText + ": give a keyframe (--start) or a --find-space that holds it");
+    return k.pose;
+}
+
+}  // namespace fm::cli
