@@ -74,7 +74,7 @@ FoundBiplane findBiplanePose(const Scene& scene, const std::vector<RegistrationV
     out.stages.push_back({"scan", secondsSince(clock), scan.placements, refined});
     if ((stop && stop->load()) || refined == 0) {
         out.stopped = stop && stop->load();
-        out.verdictText = refined == 0 ? "no pose of the search space is seen by every camera" : "stopped";
+        out.verdictText = refined == 0 ? "lost: no pose of the search space is seen by every camera" : "lost: stopped in the scan";
         return out;
     }
 

@@ -185,7 +185,6 @@ BiplaneScan scanBiplane(const Scene& scene, const glm::dvec3& pivotInObject, con
     }, 1);
     BiplaneScan out;
     out.orientations = static_cast<int>(grid.size());
-    out.points = static_cast<long long>(pointCount);
     for (const ScanView& c : cams)
         out.placements += static_cast<long long>(grid.size()) * c.camera.detector.size.x * c.camera.detector.size.y;
     for (const auto& k : kept) out.hypotheses.insert(out.hypotheses.end(), k.begin(), k.end());

@@ -51,7 +51,6 @@ struct BiplaneScan {
     std::vector<BiplaneHypothesis> hypotheses;  // best first
     int orientations = 0;
     long long placements = 0;  // template placements scored (orientations x cameras x pixels)
-    long long points = 0;      // 3D points scored per orientation
 };
 
 // The world rotations of the grid (R = R_ray R_view(roll) R_u(tiltU) R_v(tiltV) base of
