@@ -32,8 +32,8 @@ RigidTransform findBoneWithNoStart(const TrialScene& scene, const std::string& b
             std::printf("find      %s has no keyframe: found in frame %d in its cameras at once (tilt +-%.0f deg, roll +-%.0f "
                         "deg; depths %.0f-%.0f mm from the first camera's source)\n", bone.c_str(), frame,
                         biplane.space.tiltDeg, biplane.space.rollDeg, b->band.first, b->band.second);
-            std::printf("          %d orientation%s, scan at 1/%d\n", b->orientations, b->orientations == 1 ? "" : "s",
-                        b->scanFactor);
+            std::printf("          %d orientation%s, scan at 1/%d, placements %d scan pixel%s apart\n", b->orientations,
+                        b->orientations == 1 ? "" : "s", b->scanFactor, b->placementStride, b->placementStride == 1 ? "" : "s");
             for (const std::string& line : describeFindStages(b->stages)) std::printf("          %s\n", line.c_str());
             for (std::size_t c = 0; c < b->candidates.size() && c < 3; ++c)
                 std::printf("          answer %zu: similarity %.3f (scan hypothesis %d)\n", c + 1, b->candidates[c].similarity,

@@ -67,7 +67,15 @@ FoundBiplane findBiplanePose(const Scene& scene, const std::vector<RegistrationV
     BiplaneScanSettings scanSettings = settings.scan;
     scanSettings.factor = scanFactorFor(model, first, 0.5 * (band->first + band->second), settings);
     scanSettings.threads = settings.threads;
+    // Placements at most maxPlacementsPerSide per side of the scan image (the wrist's 256 at 1/2: 2
+    // apart, the radius still found; docs/find.md).
+    int side = 0;
+    for (const RegistrationView& v : views) side = std::max({side, v.reference.width, v.reference.height});
+    scanSettings.placementStride = 1;
+    while (side / (scanSettings.factor * scanSettings.placementStride) > settings.maxPlacementsPerSide)
+        scanSettings.placementStride *= 2;
     out.scanFactor = scanSettings.factor;
+    out.placementStride = scanSettings.placementStride;
     const BiplaneScan scan = scanBiplane(scene, pivot, views, settings.space, *band, scanSettings, stop);
     out.orientations = scan.orientations;
     const int refined = std::min<int>(settings.refined, static_cast<int>(scan.hypotheses.size()));
@@ -111,7 +119,7 @@ FoundBiplane findBiplanePose(const Scene& scene, const std::vector<RegistrationV
         for (const RefinedHypothesis& f : finalists)
             out.candidates.push_back({frame->worldFromObject(f.params), -f.cost, f.hypothesis});
         out.verdict = AnswerVerdict::Doubtful;
-        out.verdictText = "stopped before the finish: the scan's pixel's best, unconfirmed";
+        out.verdictText = "doubtful: stopped before the finish (the best at the scan's pixel, unconfirmed)";
         return out;
     }
 

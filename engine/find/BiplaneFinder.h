@@ -2,7 +2,8 @@
 // A bone volume's pose in two or more calibrated cameras with no start (issue 29), on a CPU, with no
 // training. Measured on a simulated example_ct femur trial (docs/find.md, "Biplane"):
 //   1. scan: orientations x 3D positions scored by every camera's gradient correlation at once
-//      (find/BiplaneScan.h) at the coarsest power of two at which the bone spans minScanSpanPixels;
+//      (find/BiplaneScan.h) at the coarsest power of two at which the bone spans minScanSpanPixels,
+//      placements at most maxPlacementsPerSide per side;
 //   2. refine: the best `refined` hypotheses each polished by the registration's own search at the
 //      scan's pixel (Nelder-Mead from the hypothesis, both cameras, exact renders; side by side,
 //      one per core): the scan ranks a 10 deg-off truth a few hundred places down, its polish lifts it;
@@ -40,6 +41,7 @@ struct BiplaneFindSettings {
     FindSpace space{90.0, 180.0};
     int maxScanFactor = 16;
     double minScanSpanPixels = 40.0;  // the bone's bounding-box diagonal at the scan's pixel
+    int maxPlacementsPerSide = 128;   // placements 2, 4, ... scan pixels apart beyond
     BiplaneScanSettings scan;         // its factor is chosen as above
     int refined = 400;
     int refineEvaluations = 80;
@@ -58,6 +60,7 @@ struct FoundBiplane {
     std::vector<BiplaneCandidate> candidates;  // distinct, best first
     std::vector<FindStage> stages;
     int scanFactor = 0;
+    int placementStride = 1;  // scan pixels between placements
     int orientations = 0;
     std::pair<double, double> band{0.0, 0.0};  // depths searched along the first camera
     bool stopped = false;

@@ -34,7 +34,8 @@ ScanView scanView(const Scene& scene, const RegistrationView& view, int factor, 
     std::optional<Mask> valid;
     if (view.valid) valid = downsampleMaskBy(cropMask(*view.valid, {0, 0, w, h}), factor);
     return {cropDetector(full, 0, 0, w, h).downsampled(factor),
-            CorrelationReference(downsampleBy(cropped, factor), valid ? &*valid : nullptr, settings.erodePixels)};
+            CorrelationReference(downsampleBy(cropped, factor), valid ? &*valid : nullptr, settings.erodePixels,
+                                 settings.placementStride)};
 }
 
 // Bilinear value of a map at continuous pixel (x, y); kNoPlacement when any corner has none or
@@ -93,8 +94,11 @@ BiplaneScan scanBiplane(const Scene& scene, const glm::dvec3& pivotInObject, con
     for (const RegistrationView& v : views) cams.push_back(scanView(scene, v, settings.factor, settings));
     const ProjectionGeometry& first = cams[0].camera;
     const CameraAxes axes = cameraAxes(first);
+    // The 3D grid: the first camera's scan pixels times depths one scan pixel apart (with
+    // placements further apart, every camera's map is read between them: a grid as coarse as the
+    // placements lost the wrist's radius).
+    const float stride = static_cast<float>(settings.placementStride);
     const glm::ivec2 size = first.detector.size;
-    // The 3D grid: the first camera's scan pixels times depths one scan pixel apart.
     const double middle = 0.5 * (band.first + band.second);
     const double pixelMm = first.detector.spacing.x * middle / axes.distance;
     std::vector<double> depths;
@@ -103,7 +107,7 @@ BiplaneScan scanBiplane(const Scene& scene, const glm::dvec3& pivotInObject, con
         const glm::dvec3 ray = first.detector.pixelCenter(x, y) - first.source;
         return first.source + (depth / glm::dot(ray, axes.view)) * ray;
     };
-    // Where every grid point lands in the other cameras (the same for every orientation).
+    // Where every grid point lands on the other cameras' maps (the same for every orientation).
     const std::size_t pointCount = static_cast<std::size_t>(size.x) * size.y * depths.size();
     std::vector<std::vector<glm::vec2>> landing(cams.size());
     for (std::size_t c = 1; c < cams.size(); ++c) {
@@ -112,7 +116,8 @@ BiplaneScan scanBiplane(const Scene& scene, const glm::dvec3& pivotInObject, con
         for (int y = 0; y < size.y; ++y)
             for (int x = 0; x < size.x; ++x)
                 for (double d : depths) {
-                    if (const auto p = cams[c].camera.projectToPixel(pointAt(x, y, d))) landing[c][k] = glm::vec2(*p);
+                    if (const auto p = cams[c].camera.projectToPixel(pointAt(x, y, d)))
+                        landing[c][k] = glm::vec2(*p) / stride;
                     ++k;
                 }
     }
@@ -146,8 +151,11 @@ BiplaneScan scanBiplane(const Scene& scene, const glm::dvec3& pivotInObject, con
             // The first camera's pixels best first: once one cannot beat the worst kept even with
             // the other cameras' best, no later one can.
             std::vector<std::pair<float, int>> order;
-            for (int i = 0; i < size.x * size.y; ++i)
-                if (maps[0][static_cast<std::size_t>(i)] != kNoPlacement) order.push_back({maps[0][static_cast<std::size_t>(i)], i});
+            for (int i = 0; i < size.x * size.y; ++i) {
+                const float here = mapAt(maps[0], cams[0].reference.mapWidth(), cams[0].reference.mapHeight(),
+                                         float(i % size.x) / stride, float(i / size.x) / stride);
+                if (here != kNoPlacement) order.push_back({here, i});
+            }
             std::sort(order.begin(), order.end(), [](const auto& a, const auto& b) {
                 return a.first != b.first ? a.first > b.first : a.second < b.second;
             });
@@ -159,8 +167,7 @@ BiplaneScan scanBiplane(const Scene& scene, const glm::dvec3& pivotInObject, con
                     bool seen = true;
                     for (std::size_t c = 1; c < cams.size() && seen; ++c) {
                         const glm::vec2 p = landing[c][point + d];
-                        const glm::ivec2 s = cams[c].camera.detector.size;
-                        const float v = mapAt(maps[c], s.x, s.y, p.x, p.y);
+                        const float v = mapAt(maps[c], cams[c].reference.mapWidth(), cams[c].reference.mapHeight(), p.x, p.y);
                         seen = v != kNoPlacement;
                         sum += v;
                     }
@@ -186,7 +193,7 @@ BiplaneScan scanBiplane(const Scene& scene, const glm::dvec3& pivotInObject, con
     BiplaneScan out;
     out.orientations = static_cast<int>(grid.size());
     for (const ScanView& c : cams)
-        out.placements += static_cast<long long>(grid.size()) * c.camera.detector.size.x * c.camera.detector.size.y;
+        out.placements += static_cast<long long>(grid.size()) * c.reference.mapWidth() * c.reference.mapHeight();
     for (const auto& k : kept) out.hypotheses.insert(out.hypotheses.end(), k.begin(), k.end());
     std::stable_sort(out.hypotheses.begin(), out.hypotheses.end(),
                      [](const BiplaneHypothesis& a, const BiplaneHypothesis& b) { return a.score > b.score; });

@@ -11,7 +11,7 @@
 //      (find/GradientCorrelation.h: the registration's own gradient NCC);
 //   3. positions: a 3D grid, the first camera's scan pixels times depths one scan pixel apart over
 //      the shared band; a point scores the mean over the cameras of their maps where it projects
-//      (bilinear). The template's shift stands for the bone's move: the turn of the rays (parallax)
+//      (bilinear between placements). The template's shift stands for the bone's move: the turn of the rays (parallax)
 //      and the scale over the band are left to the refinement (a few degrees, a few per cent);
 //   4. kept: per orientation the best `perOrientation` points at least `distinctMm` apart.
 // Deterministic for a given input, whatever the thread count.
@@ -29,6 +29,7 @@ namespace fm {
 
 struct BiplaneScanSettings {
     int factor = 8;              // detector downsampling of the scan
+    int placementStride = 1;     // scan pixels between the placements correlated (GradientCorrelation.h)
     double angleStepDeg = 20.0;  // orientation grid
     int perOrientation = 4;      // positions kept per orientation
     double distinctMm = 10.0;    // between the positions kept for one orientation

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 #include "core/Error.h"
 
@@ -13,9 +14,9 @@ namespace {
 // has. Element by element, no contraction (the file is built with -ffp-contract=off): every clone
 // gives the same bits.
 __attribute__((target_clones("avx512f", "avx2", "default"))) void addRunSums(double* __restrict acc,
-                                                                             const double* __restrict prefix,
-                                                                             int begin, int end, int n) {
-    for (int x = 0; x < n; ++x) acc[x] += prefix[x + end] - prefix[x + begin];
+                                                                             const double* __restrict end,
+                                                                             const double* __restrict begin, int n) {
+    for (int x = 0; x < n; ++x) acc[x] += end[x] - begin[x];
 }
 
 __attribute__((target_clones("avx512f", "avx2", "default"))) void addScaledRow(float* __restrict acc,
@@ -26,9 +27,10 @@ __attribute__((target_clones("avx512f", "avx2", "default"))) void addScaledRow(f
 
 }  // namespace
 
-CorrelationReference::CorrelationReference(const Image& reference, const Mask* valid, int erodePixels)
-    : width_(reference.width), height_(reference.height) {
+CorrelationReference::CorrelationReference(const Image& reference, const Mask* valid, int erodePixels, int stride)
+    : width_(reference.width), height_(reference.height), stride_(stride) {
     if (width_ < 3 || height_ < 3) throw Error("correlation reference: the image is smaller than 3 x 3");
+    if (stride < 1) throw Error("correlation reference: the placements' stride must be at least 1");
     if (valid && (valid->width != width_ || valid->height != height_))
         throw Error("correlation reference: the valid mask's size differs from the image's");
     const GradientImages g = sobel(reference);
@@ -42,28 +44,27 @@ CorrelationReference::CorrelationReference(const Image& reference, const Mask* v
         for (std::size_t i = 0; i < usable.inside.size(); ++i)
             if (grown.inside[i]) usable.inside[i] = 0;
     }
-    paddedWidth_ = 3 * width_;
+    const int paddedWidth = 3 * width_;
     paddedHeight_ = 3 * height_;
-    const std::size_t padded = static_cast<std::size_t>(paddedWidth_) * paddedHeight_;
-    gx_.assign(padded, 0.0f);
-    gy_.assign(padded, 0.0f);
-    std::vector<float> ok(padded, 0.0f);
+    const std::size_t padded = static_cast<std::size_t>(paddedWidth) * paddedHeight_;
+    std::vector<float> gx(padded, 0.0f), gy(padded, 0.0f), ok(padded, 0.0f);
     for (int y = 0; y < height_; ++y)
         for (int x = 0; x < width_; ++x) {
             if (!usable.at(x, y)) continue;
-            const std::size_t p = static_cast<std::size_t>(y + height_) * paddedWidth_ + x + width_;
-            gx_[p] = g.gx.at(x, y);
-            gy_[p] = g.gy.at(x, y);
+            const std::size_t p = static_cast<std::size_t>(y + height_) * paddedWidth + x + width_;
+            gx[p] = g.gx.at(x, y);
+            gy[p] = g.gy.at(x, y);
             ok[p] = 1.0f;
         }
-    const std::size_t prefixWidth = static_cast<std::size_t>(paddedWidth_) + 1;
-    for (auto& plane : prefix_) plane.assign(prefixWidth * paddedHeight_, 0.0);
+    const int prefixWidth = paddedWidth + 1;
+    std::vector<double> prefix[5];
+    for (auto& plane : prefix) plane.assign(static_cast<std::size_t>(prefixWidth) * paddedHeight_, 0.0);
     for (int y = 0; y < paddedHeight_; ++y) {
-        const std::size_t row = static_cast<std::size_t>(y) * paddedWidth_;
+        const std::size_t row = static_cast<std::size_t>(y) * paddedWidth;
         double* q[5];
-        for (int k = 0; k < 5; ++k) q[k] = &prefix_[k][static_cast<std::size_t>(y) * prefixWidth];
-        for (int x = 0; x < paddedWidth_; ++x) {
-            const double a = gx_[row + x], b = gy_[row + x];
+        for (int k = 0; k < 5; ++k) q[k] = &prefix[k][static_cast<std::size_t>(y) * prefixWidth];
+        for (int x = 0; x < paddedWidth; ++x) {
+            const double a = gx[row + x], b = gy[row + x];
             q[0][x + 1] = q[0][x] + a;
             q[1][x + 1] = q[1][x] + b;
             q[2][x + 1] = q[2][x] + a * a;
@@ -71,6 +72,23 @@ CorrelationReference::CorrelationReference(const Image& reference, const Mask* v
             q[4][x + 1] = q[4][x] + ok[row + x];
         }
     }
+    // Every stride-th column of each, per phase (beyond the last column: 0, never read).
+    phaseWidth_ = (paddedWidth + stride_ - 1) / stride_;
+    phasePrefixWidth_ = (prefixWidth + stride_ - 1) / stride_;
+    const auto phases = [&](const auto& plane, int width, int phaseWidth) {
+        using T = typename std::decay_t<decltype(plane)>::value_type;
+        std::vector<std::vector<T>> out(static_cast<std::size_t>(stride_),
+                                        std::vector<T>(static_cast<std::size_t>(phaseWidth) * paddedHeight_, T(0)));
+        for (int p = 0; p < stride_; ++p)
+            for (int y = 0; y < paddedHeight_; ++y)
+                for (int m = 0; m * stride_ + p < width; ++m)
+                    out[p][static_cast<std::size_t>(y) * phaseWidth + m] =
+                        plane[static_cast<std::size_t>(y) * width + m * stride_ + p];
+        return out;
+    };
+    gx_ = phases(gx, paddedWidth, phaseWidth_);
+    gy_ = phases(gy, paddedWidth, phaseWidth_);
+    for (int k = 0; k < 5; ++k) prefix_[k] = phases(prefix[k], prefixWidth, phasePrefixWidth_);
 }
 
 GradientTemplate gradientTemplate(const Image& render, glm::dvec2 anchorPixel, glm::ivec2 maxSize) {
@@ -107,11 +125,10 @@ GradientTemplate gradientTemplate(const Image& render, glm::dvec2 anchorPixel, g
 }
 
 std::vector<float> gradientNccMap(const CorrelationReference& r, const GradientTemplate& t, double minCoverage) {
-    const int W = r.width_, H = r.height_;
-    std::vector<float> out(static_cast<std::size_t>(W) * H, kNoPlacement);
+    std::vector<float> out(static_cast<std::size_t>(r.mapWidth()) * r.mapHeight(), kNoPlacement);
     if (t.empty()) return out;
     const int tw = t.mask.width, th = t.mask.height;
-    if (tw > W || th > H) throw Error("gradient correlation: the template is larger than the reference");
+    if (tw > r.width_ || th > r.height_) throw Error("gradient correlation: the template is larger than the reference");
     // The template's own sums (mask pixels), and its mask's runs along rows.
     double n = 0.0, sT[2] = {0.0, 0.0}, sTT[2] = {0.0, 0.0};
     struct Run {
@@ -128,34 +145,34 @@ std::vector<float> gradientNccMap(const CorrelationReference& r, const GradientT
             sT[0] += a, sT[1] += b, sTT[0] += a * a, sTT[1] += b * b;
         }
     if (n < 2.0) return out;
-    // Placement (X, Y) puts template pixel (i, j) on padded pixel (X - ax + i + W, Y - ay + j + H).
+    // Placement (X, Y) puts template pixel (i, j) on padded pixel (X - ax + i + W, Y - ay + j + H);
+    // with X = stride x, column c = offX + i is phase c % stride, column c / stride of it, plus x.
+    const int W = r.width_, H = r.height_, s = r.stride_, MW = r.mapWidth(), MH = r.mapHeight();
     const int offX = W - t.anchor.x, offY = H - t.anchor.y;
-    const std::size_t PW = static_cast<std::size_t>(r.paddedWidth_);
-    const std::size_t prefixWidth = PW + 1;
+    const auto at = [s](const auto& phases, int width, int row, int column) {
+        return &phases[static_cast<std::size_t>(column % s)][static_cast<std::size_t>(row) * width + column / s];
+    };
     // The sums of G and G^2 in double (their variance is a difference of them); the cross sums,
     // a few thousand products each, in float (relative error ~1e-6 of the score).
+    const std::size_t placements = static_cast<std::size_t>(MW) * MH;
     std::vector<double> sums[5];
     std::vector<float> cross[2];
-    for (auto& s : sums) s.assign(static_cast<std::size_t>(W) * H, 0.0);
-    for (auto& s : cross) s.assign(static_cast<std::size_t>(W) * H, 0.0f);
-    for (int Y = 0; Y < H; ++Y) {
-        const std::size_t outRow = static_cast<std::size_t>(Y) * W;
+    for (auto& v : sums) v.assign(placements, 0.0);
+    for (auto& v : cross) v.assign(placements, 0.0f);
+    for (int y = 0; y < MH; ++y) {
+        const std::size_t outRow = static_cast<std::size_t>(y) * MW;
         for (const Run& run : runs) {
-            const int py = Y + offY + run.row;
-            if (py < 0 || py >= r.paddedHeight_) continue;
+            const int py = s * y + offY + run.row;
             for (int k = 0; k < 5; ++k)
-                addRunSums(&sums[k][outRow], &r.prefix_[k][static_cast<std::size_t>(py) * prefixWidth + offX], run.begin,
-                           run.end, W);
+                addRunSums(&sums[k][outRow], at(r.prefix_[k], r.phasePrefixWidth_, py, offX + run.end),
+                           at(r.prefix_[k], r.phasePrefixWidth_, py, offX + run.begin), MW);
         }
         for (int j = 0; j < th; ++j) {
-            const int py = Y + offY + j;
-            if (py < 0 || py >= r.paddedHeight_) continue;
-            const float* gxRow = &r.gx_[static_cast<std::size_t>(py) * PW + offX];
-            const float* gyRow = &r.gy_[static_cast<std::size_t>(py) * PW + offX];
+            const int py = s * y + offY + j;
             for (int i = 0; i < tw; ++i) {
                 if (!t.mask.at(i, j)) continue;
-                addScaledRow(&cross[0][outRow], gxRow + i, t.gradients.gx.at(i, j), W);
-                addScaledRow(&cross[1][outRow], gyRow + i, t.gradients.gy.at(i, j), W);
+                addScaledRow(&cross[0][outRow], at(r.gx_, r.phaseWidth_, py, offX + i), t.gradients.gx.at(i, j), MW);
+                addScaledRow(&cross[1][outRow], at(r.gy_, r.phaseWidth_, py, offX + i), t.gradients.gy.at(i, j), MW);
             }
         }
     }

@@ -7,7 +7,9 @@
 // rows; the sums of T * G one term per mask pixel, a shifted row added across all placements
 // (vectorised). Pixels the reference cannot use (outside the image or its valid mask, or next to
 // its edge) count with gradient 0; a placement that puts less than `minCoverage` of the mask on
-// usable pixels scores kNoPlacement.
+// usable pixels scores kNoPlacement. Placements may be `stride` pixels apart (a 256-pixel scan
+// image at 2: a quarter of the work, the same values at the placements kept): each plane is
+// then stored as `stride` copies of every stride-th column, so the rows stay contiguous.
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -23,23 +25,30 @@ inline constexpr float kNoPlacement = -2.0f;
 struct GradientTemplate;
 
 // A reference made ready: padded by its own size on every side (a template no larger than the
-// reference fits at every anchor on it), with row prefix sums of each plane.
+// reference fits at every anchor on it), with row prefix sums of each plane, for placements
+// `stride` pixels apart.
 class CorrelationReference {
   public:
     // `valid` (nullptr = all) at the reference's size; pixels within `erodePixels` of an invalid one
-    // (the bright rim undistortion leaves) are unusable too.
-    CorrelationReference(const Image& reference, const Mask* valid, int erodePixels);
+    // (the bright rim undistortion leaves) are unusable too. Throws fm::Error for a stride below 1.
+    CorrelationReference(const Image& reference, const Mask* valid, int erodePixels, int stride = 1);
     int width() const { return width_; }
     int height() const { return height_; }
+    int stride() const { return stride_; }
+    // The map's size: placements (stride x, stride y) on the reference.
+    int mapWidth() const { return (width_ + stride_ - 1) / stride_; }
+    int mapHeight() const { return (height_ + stride_ - 1) / stride_; }
 
   private:
     friend std::vector<float> gradientNccMap(const CorrelationReference&, const GradientTemplate&, double);
-    int width_ = 0, height_ = 0;
-    int paddedWidth_ = 0, paddedHeight_ = 0;
-    // Padded planes, row-major paddedWidth_ x paddedHeight_: gradients (0 where unusable) and usable.
-    std::vector<float> gx_, gy_;
-    // Row prefix sums (paddedWidth_ + 1 per row) of gx, gy, gx^2, gy^2 and usable.
-    std::vector<double> prefix_[5];
+    int width_ = 0, height_ = 0, stride_ = 1;
+    int paddedHeight_ = 0;
+    // Per column phase p (columns p, p + stride, ...), row-major, phaseWidth_ per row: the padded
+    // gradients (0 where unusable), and phasePrefixWidth_ per row: the row prefix sums of gx, gy,
+    // gx^2, gy^2 and usable.
+    int phaseWidth_ = 0, phasePrefixWidth_ = 0;
+    std::vector<std::vector<float>> gx_, gy_;
+    std::vector<std::vector<double>> prefix_[5];
 };
 
 // A model's rendered image (the model alone, zero outside it) as a template: its Sobel gradients
@@ -56,8 +65,8 @@ struct GradientTemplate {
 // `maxSize` (it would not fit the padded reference).
 GradientTemplate gradientTemplate(const Image& render, glm::dvec2 anchorPixel, glm::ivec2 maxSize);
 
-// Row-major width() x height() of the reference: at (x, y) the gradient NCC of the template placed
-// with its anchor on reference pixel (x, y), in [-1, 1], or kNoPlacement.
+// Row-major mapWidth() x mapHeight() of the reference: at (x, y) the gradient NCC of the template
+// placed with its anchor on reference pixel (stride x, stride y), in [-1, 1], or kNoPlacement.
 std::vector<float> gradientNccMap(const CorrelationReference& reference, const GradientTemplate& t,
                                   double minCoverage);
 

@@ -108,7 +108,7 @@ TEST(BiplaneFinder, ABoneWhoseHalfTurnLooksTheSameIsDoubtful) {
     EXPECT_GT(std::abs(glm::dot(axis, truthAxis)), std::cos(glm::radians(2.0)));
 }
 
-TEST(BiplaneScan, TheSameHypothesesWhateverTheThreadCount) {
+TEST(BiplaneScan, TheSameHypothesesWhateverTheThreadCountWithPlacementsOneOrTwoApart) {
     Scene scene;
     const Volume rod = voxelize(CylinderShape{{0, 0, 0}, 9.0, 30.0}, centeredGrid({24, 24, 48}, {1.5, 1.5, 1.5}), 0.02f);
     scene.objects.push_back({"rod", std::make_shared<VolumeXrayModel>(prepareDrrVolume(rod, {})),
@@ -117,17 +117,20 @@ TEST(BiplaneScan, TheSameHypothesesWhateverTheThreadCount) {
     const std::vector<RegistrationView> views = biplaneTestViews(scene);
     BiplaneScanSettings settings;
     settings.factor = 4;
-    std::vector<BiplaneHypothesis> first;
-    for (int threads : {1, 2, 3}) {
-        settings.threads = threads;
-        const BiplaneScan scan = scanBiplane(scene, glm::dvec3(0.0), views, FindSpace{35.0, 180.0}, {700.0, 900.0}, settings);
-        ASSERT_FALSE(scan.hypotheses.empty());
-        if (first.empty()) first = scan.hypotheses;
-        ASSERT_EQ(scan.hypotheses.size(), first.size()) << threads;
-        for (std::size_t k = 0; k < first.size(); ++k) {
-            EXPECT_EQ(scan.hypotheses[k].score, first[k].score) << threads << " " << k;
-            EXPECT_EQ(scan.hypotheses[k].pivot, first[k].pivot) << threads << " " << k;
-            EXPECT_EQ(scan.hypotheses[k].orientation, first[k].orientation) << threads << " " << k;
+    for (int stride : {1, 2}) {
+        settings.placementStride = stride;
+        std::vector<BiplaneHypothesis> first;
+        for (int threads : {1, 2, 3}) {
+            settings.threads = threads;
+            const BiplaneScan scan = scanBiplane(scene, glm::dvec3(0.0), views, FindSpace{35.0, 180.0}, {700.0, 900.0}, settings);
+            ASSERT_FALSE(scan.hypotheses.empty());
+            if (first.empty()) first = scan.hypotheses;
+            ASSERT_EQ(scan.hypotheses.size(), first.size()) << threads;
+            for (std::size_t k = 0; k < first.size(); ++k) {
+                EXPECT_EQ(scan.hypotheses[k].score, first[k].score) << threads << " " << k;
+                EXPECT_EQ(scan.hypotheses[k].pivot, first[k].pivot) << threads << " " << k;
+                EXPECT_EQ(scan.hypotheses[k].orientation, first[k].orientation) << threads << " " << k;
+            }
         }
     }
 }

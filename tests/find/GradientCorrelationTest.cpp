@@ -7,6 +7,7 @@
 
 #include <cmath>
 
+#include "core/Error.h"
 #include "core/Random.h"
 #include "find/GradientCorrelation.h"
 #include "similarity/GradientNcc.h"
@@ -103,6 +104,30 @@ TEST(GradientCorrelation, EveryPlacementScoresTheRegistrationsGradientNccThere) 
     // Both kinds of placement were checked (the template is a third of the reference wide).
     EXPECT_GT(scored, W * H / 3);
     EXPECT_GT(refused, W * H / 10);
+}
+
+TEST(GradientCorrelation, PlacementsApartScoreWhatEveryPlacementScoresThere) {
+    // The same reference and template at strides 1, 2 and 3: the same bits at the placements kept
+    // (the same sums, added in the same order).
+    const int W = 47, H = 38;
+    const Image reference = correlationTestImage(W, H, 11);
+    const GradientTemplate t = gradientTemplate(correlationTestRender(40, 30), {20.0, 10.0}, {W, H});
+    const std::vector<float> all = gradientNccMap(CorrelationReference(reference, nullptr, 0), t, 0.5);
+    for (int stride : {2, 3}) {
+        const CorrelationReference apart(reference, nullptr, 0, stride);
+        ASSERT_EQ(apart.mapWidth(), (W + stride - 1) / stride);
+        ASSERT_EQ(apart.mapHeight(), (H + stride - 1) / stride);
+        const std::vector<float> map = gradientNccMap(apart, t, 0.5);
+        int scored = 0;
+        for (int y = 0; y < apart.mapHeight(); ++y)
+            for (int x = 0; x < apart.mapWidth(); ++x) {
+                const float want = all[static_cast<std::size_t>(stride * y) * W + stride * x];
+                EXPECT_EQ(map[static_cast<std::size_t>(y) * apart.mapWidth() + x], want) << stride << ": " << x << "," << y;
+                scored += want != kNoPlacement;
+            }
+        EXPECT_GT(scored, apart.mapWidth() * apart.mapHeight() / 3);
+    }
+    EXPECT_THROW(CorrelationReference(reference, nullptr, 0, 0), Error);
 }
 
 TEST(GradientCorrelation, ATemplateScoresOneWhereItWasCutFrom) {
