@@ -67,8 +67,7 @@ FoundBiplane findBiplanePose(const Scene& scene, const std::vector<RegistrationV
     BiplaneScanSettings scanSettings = settings.scan;
     scanSettings.factor = scanFactorFor(model, first, 0.5 * (band->first + band->second), settings);
     scanSettings.threads = settings.threads;
-    // Placements at most maxPlacementsPerSide per side of the scan image (the wrist's 256 at 1/2: 2
-    // apart, the radius still found; docs/find.md).
+    // Placements at most maxPlacementsPerSide per side of the scan image.
     int side = 0;
     for (const RegistrationView& v : views) side = std::max({side, v.reference.width, v.reference.height});
     scanSettings.placementStride = 1;

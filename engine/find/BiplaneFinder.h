@@ -41,7 +41,10 @@ struct BiplaneFindSettings {
     FindSpace space{90.0, 180.0};
     int maxScanFactor = 16;
     double minScanSpanPixels = 40.0;  // the bone's bounding-box diagonal at the scan's pixel
-    int maxPlacementsPerSide = 128;   // placements 2, 4, ... scan pixels apart beyond
+    // Placements 2, 4, ... scan pixels apart beyond this many per side of the scan image. At 128 the
+    // wrist (256 at 1/2) was scanned 2 apart: the radius and the ulna found in 90 and 57 s instead of
+    // 3-3.5 minutes, but mc3 lost (doubtful, 0.95; found ok at 1 apart): not yet the default.
+    int maxPlacementsPerSide = 256;
     BiplaneScanSettings scan;         // its factor is chosen as above
     int refined = 400;
     int refineEvaluations = 80;
