@@ -38,16 +38,22 @@ ScanView scanView(const Scene& scene, const RegistrationView& view, int factor, 
                                  settings.placementStride)};
 }
 
-// Bilinear value of a map at continuous pixel (x, y); kNoPlacement when any corner has none or
-// the point is off the map.
+// Bilinear value of a map at continuous pixel (x, y); kNoPlacement when a corner that weighs
+// has none, or the point is off the map. At whole pixels: the map's own value.
 float mapAt(const std::vector<float>& map, int w, int h, float x, float y) {
     if (!(x >= 0.0f && y >= 0.0f && x <= float(w - 1) && y <= float(h - 1))) return kNoPlacement;
     const int x0 = std::min(static_cast<int>(x), w - 2), y0 = std::min(static_cast<int>(y), h - 2);
     const float fx = x - float(x0), fy = y - float(y0);
     const float* p = &map[static_cast<std::size_t>(y0) * w + x0];
-    if (p[0] == kNoPlacement || p[1] == kNoPlacement || p[w] == kNoPlacement || p[w + 1] == kNoPlacement)
-        return kNoPlacement;
-    return (1 - fy) * ((1 - fx) * p[0] + fx * p[1]) + fy * ((1 - fx) * p[w] + fx * p[w + 1]);
+    const float weight[4] = {(1 - fx) * (1 - fy), fx * (1 - fy), (1 - fx) * fy, fx * fy};
+    const float value[4] = {p[0], p[1], p[w], p[w + 1]};
+    float sum = 0.0f;
+    for (int k = 0; k < 4; ++k) {
+        if (weight[k] == 0.0f) continue;
+        if (value[k] == kNoPlacement) return kNoPlacement;
+        sum += weight[k] * value[k];
+    }
+    return sum;
 }
 
 }  // namespace
