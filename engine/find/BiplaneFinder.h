@@ -42,8 +42,8 @@ struct BiplaneFindSettings {
     int maxScanFactor = 16;
     double minScanSpanPixels = 40.0;  // the bone's bounding-box diagonal at the scan's pixel
     // Placements 2, 4, ... scan pixels apart beyond this many per side of the scan image. At 128 the
-    // wrist (256 at 1/2) was scanned 2 apart: the radius and the ulna found in 90 and 57 s instead of
-    // 3-3.5 minutes, but mc3 lost (doubtful, 0.95; found ok at 1 apart): not yet the default.
+    // wrist (256 at 1/2) was scanned 2 apart: the radius and the ulna found in 91 and 57 s (1 apart:
+    // 149 and 92 s, the machine shared), but mc3 lost (doubtful, 0.95; found ok at 1 apart): not yet the default.
     int maxPlacementsPerSide = 256;
     BiplaneScanSettings scan;         // its factor is chosen as above
     int refined = 400;
