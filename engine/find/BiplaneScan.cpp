@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "core/Error.h"
 #include "core/Parallel.h"
@@ -36,6 +37,36 @@ ScanView scanView(const Scene& scene, const RegistrationView& view, int factor, 
     return {cropDetector(full, 0, 0, w, h).downsampled(factor),
             CorrelationReference(downsampleBy(cropped, factor), valid ? &*valid : nullptr, settings.erodePixels,
                                  settings.placementStride)};
+}
+
+// Where a ray's points source + depth * step (depth along the ray's camera's axis) land on another
+// camera's map (pixels / stride): projectToPixel's ratio, whose numerators and denominator are
+// affine in depth, kept as those six numbers (the wrist's 256 x 256 x 368 points would be 190 MB).
+struct RayLanding {
+    double along0 = 0.0, along1 = 0.0;  // the point's distance along the camera's film normal
+    glm::dvec2 numerator0{0.0}, numerator1{0.0};
+    double toPlane = 0.0;
+    std::optional<glm::vec2> at(double depth) const {
+        const double along = along0 + along1 * depth;
+        if (!(along * toPlane > 0.0)) return std::nullopt;  // behind the camera's source
+        return glm::vec2((numerator0 + numerator1 * depth) / along);
+    }
+};
+
+RayLanding rayLanding(const ProjectionGeometry& camera, const glm::dvec3& source, const glm::dvec3& step, float stride) {
+    const DetectorGeometry& d = camera.detector;
+    const glm::dvec3 n = d.normal();
+    RayLanding l;
+    l.toPlane = glm::dot(d.origin - camera.source, n);
+    const glm::dvec3 q0 = source - camera.source;  // the point minus the camera's source: q0 + depth * step
+    l.along0 = glm::dot(q0, n);
+    l.along1 = glm::dot(step, n);
+    // pixel = (dot(S - O, u) along + toPlane dot(q, u)) / (along du), and likewise for v.
+    const glm::dvec2 offset(glm::dot(camera.source - d.origin, d.u), glm::dot(camera.source - d.origin, d.v));
+    const glm::dvec2 scale = 1.0 / (glm::dvec2(d.spacing) * static_cast<double>(stride));
+    l.numerator0 = (offset * l.along0 + l.toPlane * glm::dvec2(glm::dot(q0, d.u), glm::dot(q0, d.v))) * scale;
+    l.numerator1 = (offset * l.along1 + l.toPlane * glm::dvec2(glm::dot(step, d.u), glm::dot(step, d.v))) * scale;
+    return l;
 }
 
 // Bilinear value of a map at continuous pixel (x, y); kNoPlacement when a corner that weighs
@@ -113,20 +144,15 @@ BiplaneScan scanBiplane(const Scene& scene, const glm::dvec3& pivotInObject, con
         const glm::dvec3 ray = first.detector.pixelCenter(x, y) - first.source;
         return first.source + (depth / glm::dot(ray, axes.view)) * ray;
     };
-    // Where every grid point lands on the other cameras' maps (the same for every orientation).
-    const std::size_t pointCount = static_cast<std::size_t>(size.x) * size.y * depths.size();
-    std::vector<std::vector<glm::vec2>> landing(cams.size());
-    for (std::size_t c = 1; c < cams.size(); ++c) {
-        landing[c].assign(pointCount, glm::vec2(-1e9f));
-        std::size_t k = 0;
+    // Where the first camera's rays land on the other cameras' maps (the same for every orientation),
+    // per pixel of it: along one ray the projection is a ratio of two affine functions of depth.
+    std::vector<std::vector<RayLanding>> landing(cams.size());
+    for (std::size_t c = 1; c < cams.size(); ++c)
         for (int y = 0; y < size.y; ++y)
-            for (int x = 0; x < size.x; ++x)
-                for (double d : depths) {
-                    if (const auto p = cams[c].camera.projectToPixel(pointAt(x, y, d)))
-                        landing[c][k] = glm::vec2(*p) / stride;
-                    ++k;
-                }
-    }
+            for (int x = 0; x < size.x; ++x) {
+                const glm::dvec3 ray = first.detector.pixelCenter(x, y) - first.source;
+                landing[c].push_back(rayLanding(cams[c].camera, first.source, ray / glm::dot(ray, axes.view), stride));
+            }
     const glm::dvec3 nominal = axes.source + middle * axes.view;
     std::vector<glm::dvec2> nominalPixel;
     for (const ScanView& c : cams) nominalPixel.push_back(c.camera.projectToPixel(nominal).value_or(glm::dvec2(-1e9)));
@@ -167,13 +193,13 @@ BiplaneScan scanBiplane(const Scene& scene, const glm::dvec3& pivotInObject, con
             });
             for (const auto& [here, pixel] : order) {
                 if (full() && (here + othersBest) / cameraCount <= best.back().score) break;
-                const std::size_t point = static_cast<std::size_t>(pixel) * depths.size();
                 for (std::size_t d = 0; d < depths.size(); ++d) {
                     double sum = here;
                     bool seen = true;
                     for (std::size_t c = 1; c < cams.size() && seen; ++c) {
-                        const glm::vec2 p = landing[c][point + d];
-                        const float v = mapAt(maps[c], cams[c].reference.mapWidth(), cams[c].reference.mapHeight(), p.x, p.y);
+                        const std::optional<glm::vec2> p = landing[c][static_cast<std::size_t>(pixel)].at(depths[d]);
+                        const float v = p ? mapAt(maps[c], cams[c].reference.mapWidth(), cams[c].reference.mapHeight(), p->x, p->y)
+                                          : kNoPlacement;
                         seen = v != kNoPlacement;
                         sum += v;
                     }
