@@ -7,17 +7,8 @@
 # without it, fails under CI=true).
 set -uo pipefail
 FM=$1
-SRC=$(cd "$(dirname "$0")/../.." && pwd)
-. "$(dirname "$0")/require_shared_data.sh"
-require_shared_data totalseg-example-ct/example_ct.nii.gz totalseg-example-ct/example_seg_fast_force_split.nii.gz
-D="$DATA/totalseg-example-ct"
-T=$(mktemp -d)
-trap 'rm -rf "$T"' EXIT
-fail() { echo "FAIL: $*"; exit 1; }
-
-out=$("$FM" simulate --volume "$D/example_ct.nii.gz" --labels "$D/example_seg_fast_force_split.nii.gz" \
-    --label-table "$SRC/data/totalseg_bones.json" --bone femur_right --motion "rotate:axis=x,angle=0:30" \
-    --frames 10 --azimuth -40 --out "$T/s" 2>&1) || fail "simulate exited $?: $out"
+. "$(dirname "$0")/simulated_femur.sh"
+simulate_femur "$T/s" --azimuth -40
 out=$("$FM" track --trial "$T/s/trial.json" --bone femur_right --out "$T/found.tra" 2>&1) ||
     fail "track with no keyframe exited $?: $out"
 grep -q "^find      femur_right has no keyframe: found in frame 0 in its cameras at once" <<<"$out" || fail "no find line: $out"

@@ -6,17 +6,8 @@
 # (~10 s there); shared data (skips without it, fails under CI=true).
 set -uo pipefail
 FM=$1
-SRC=$(cd "$(dirname "$0")/../.." && pwd)
-. "$(dirname "$0")/require_shared_data.sh"
-require_shared_data totalseg-example-ct/example_ct.nii.gz totalseg-example-ct/example_seg_fast_force_split.nii.gz
-D="$DATA/totalseg-example-ct"
-T=$(mktemp -d)
-trap 'rm -rf "$T"' EXIT
-fail() { echo "FAIL: $*"; exit 1; }
-
-out=$("$FM" simulate --volume "$D/example_ct.nii.gz" --labels "$D/example_seg_fast_force_split.nii.gz" \
-    --label-table "$SRC/data/totalseg_bones.json" --bone femur_right --motion "rotate:axis=x,angle=0:30" \
-    --frames 10 --out "$T/s" 2>&1) || fail "simulate exited $?: $out"
+. "$(dirname "$0")/simulated_femur.sh"
+simulate_femur "$T/s"
 out=$("$FM" track --trial "$T/s/trial.json" --bone femur_right --start "$T/s/femur_right_start.tra" \
     --out "$T/t.tra" 2>&1) || fail "track exited $?: $out"
 out=$("$FM" compare --truth "$T/s/femur_right_truth.tra" --tra "$T/t.tra" --trial "$T/s/trial.json" \
