@@ -164,9 +164,11 @@ TEST_F(SolveUi, StopEndsTheRunPromptlyAndKeepsTheBestSoFar) {
     app->state().userPose = start;
     solve();
     // Wait until the global search is over (level 2 of 3 started): its best is already better.
+    // At least one frame after the press: the Stop button is drawn by a frame that saw the run
+    // (the frame of the press drew Solve, and the worker may have reported before it ended).
     int frames = 0;
-    while (app->state().solve.running && app->state().solve.level < 1 && frames++ < kMaxSolveFrames)
-        step();
+    do step();
+    while (app->state().solve.running && app->state().solve.level < 1 && frames++ < kMaxSolveFrames);
     ASSERT_TRUE(app->state().solve.running) << "finished before Stop could be pressed";
     script->clickWidget("button:stop-solve");
     // Stop waits for the current batch only: the run is over once the click's frames are.
@@ -228,10 +230,10 @@ TEST_F(SolveUi, StopEndsAFindAndKeepsTheBestOfItsLastStage) {
     script->clickWidget("tab:solve");
     script->idle(1);
     script->clickWidget("button:find");
-    int frames = 0;
+    int frames = 0;  // at least one frame after the press, as above
+    do step();
     while (app->state().solve.running && app->state().solve.stage.rfind("find: ", 0) != 0 &&
-           frames++ < kMaxSolveFrames)
-        step();
+           frames++ < kMaxSolveFrames);
     ASSERT_TRUE(app->state().solve.running) << "finished before Stop could be pressed";
     script->clickWidget("button:stop-solve");
     const app::SolveStatus& solve = app->state().solve;
