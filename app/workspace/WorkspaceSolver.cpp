@@ -115,22 +115,29 @@ void WorkspaceSolver::start(std::shared_ptr<const WorkspaceModel> model, int obj
                              " searches from independent starts";
                 });
             } else {
-                publish([&](WorkspaceSolveSnapshot& s) { s.stage = "biplane registration (register --trial)"; });
+                if (!find) publish([&](WorkspaceSolveSnapshot& s) { s.stage = "biplane registration (register --trial)"; });
                 TrackSettings settings;
                 settings.registration.seed = 1;
                 settings.registration.threads = model->threads();
                 const std::string name = scene.objects[0].name;
                 RigidTransform from = start;
                 std::string foundHow;
+                std::vector<BiplaneCandidate> foundAnswers;  // the biplane find's, best first
                 if (find) {
                     // As track with no keyframe (track/FoundKeyframe.h).
                     RegistrationSettings finish = realXraySettings(defaultSimilarityFor(*scene.objects[0].model));
                     finish.threads = model->threads();
-                    const FoundKeyframe k = findKeyframe(scene, name, [model](int f) { return model->prepared(f); }, frame,
-                                                         finish, findSettings, biplaneSettings, ConfirmationSettings{}, &stop_);
+                    const FoundKeyframe k = findKeyframe(
+                        scene, name, [model](int f) { return model->prepared(f); }, frame, finish, findSettings,
+                        biplaneSettings, ConfirmationSettings{}, &stop_, [&](const char* stage) {
+                            publish([&](WorkspaceSolveSnapshot& s) {
+                                s.stage = std::string("finding in all cameras at once: ") + stage;
+                            });
+                        });
                     if (k.verdict == AnswerVerdict::Lost)
                         throw Error("Find: " + name + "'s pose found is " + k.verdictText + ": set a pose and Solve");
                     from = k.pose;
+                    if (k.biplane) foundAnswers = k.biplane->candidates;
                     foundHow = k.biplane ? "found with no start in all cameras at once (" + k.verdictText + "), "
                                          : "found with no start in each camera, ";
                     publish([&](WorkspaceSolveSnapshot& s) { s.stage = "found; biplane registration (register --trial)"; });
@@ -160,6 +167,13 @@ void WorkspaceSolver::start(std::shared_ptr<const WorkspaceModel> model, int obj
                     if (find && r.worldFromBone) {
                         s.candidates = {*r.worldFromBone};
                         s.candidateSimilarity = {r.similarity()};
+                        // The find's other distinct answers, all with the find's similarity (its
+                        // finest level) so that they compare with one another and with its best.
+                        if (!foundAnswers.empty()) s.candidateSimilarity = {foundAnswers[0].similarity};
+                        for (std::size_t c = 1; c < foundAnswers.size(); ++c) {
+                            s.candidates.push_back(foundAnswers[c].worldFromObject);
+                            s.candidateSimilarity.push_back(foundAnswers[c].similarity);
+                        }
                     }
                 });
             }

@@ -44,7 +44,7 @@ Registration registrationFrom(const Scene& scene, const std::vector<Registration
 
 FoundBiplane findBiplanePose(const Scene& scene, const std::vector<RegistrationView>& views,
                              const RegistrationSettings& finish, const BiplaneFindSettings& settings,
-                             const std::atomic<bool>* stop) {
+                             const std::atomic<bool>* stop, const FindStageCallback& onStage) {
     if (views.size() < 2) throw Error("biplane find: needs two or more cameras");
     if (scene.objects.empty()) throw Error("biplane find: no object");
     if (settings.refined < 1 || settings.finalists < 1 || settings.refineEvaluations < 1 || settings.finishEvaluations < 2)
@@ -62,7 +62,12 @@ FoundBiplane findBiplanePose(const Scene& scene, const std::vector<RegistrationV
     const XrayModel& model = *scene.objects[0].model;
     const glm::dvec3 pivot = defaultPivot(model);
 
+    const auto starting = [&](const char* stage) {
+        if (onStage) onStage(stage);
+    };
+
     // 1. scan
+    starting("scan");
     auto clock = FindClock::now();
     BiplaneScanSettings scanSettings = settings.scan;
     scanSettings.factor = scanFactorFor(model, first, 0.5 * (band->first + band->second), settings);
@@ -87,6 +92,7 @@ FoundBiplane findBiplanePose(const Scene& scene, const std::vector<RegistrationV
 
     // 2. refine at the scan's pixel: Nelder-Mead from each hypothesis within half a grid step and
     // a scan pixel and a half.
+    starting("refine");
     clock = FindClock::now();
     const CameraAxes axes = cameraAxes(first);
     const double pixelMm = axes.spacing.x * scanSettings.factor * 0.5 * (band->first + band->second) / axes.distance;
@@ -123,6 +129,7 @@ FoundBiplane findBiplanePose(const Scene& scene, const std::vector<RegistrationV
     }
 
     // 3. finish at 1/2 and 1/4 of the scan's pixel.
+    starting("finish");
     clock = FindClock::now();
     std::vector<int> finishLevels{std::max(1, scanSettings.factor / 2)};
     if (scanSettings.factor / 4 >= 1) finishLevels.push_back(scanSettings.factor / 4);

@@ -75,10 +75,11 @@ struct FoundBiplane {
 };
 
 // Object 0 of `scene` (the bone alone) in `views` (two or more cameras). `finish` gives the
-// similarity and render settings (gradient NCC; cropToModel for real radiographs). Throws
+// similarity and render settings (gradient NCC; cropToModel for real radiographs); `onStage` is
+// told "scan", "refine", "finish" as each starts. Throws
 // fm::Error for fewer than two views, cameras that share no depths, settings out of range.
 FoundBiplane findBiplanePose(const Scene& scene, const std::vector<RegistrationView>& views,
                              const RegistrationSettings& finish, const BiplaneFindSettings& settings,
-                             const std::atomic<bool>* stop = nullptr);
+                             const std::atomic<bool>* stop = nullptr, const FindStageCallback& onStage = {});
 
 }  // namespace fm

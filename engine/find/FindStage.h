@@ -2,6 +2,7 @@
 // One stage of a search with no start (find/PoseFinder.h, find/ViewFinder.h): its name, wall
 // time, work and what it hands on, printed one line each.
 #include <chrono>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,10 @@ struct FindStage {
     long long evaluations = 0;  // renders (templates), template placements (scan), searches' evaluations
     int kept = 0;         // what goes on to the next stage
 };
+
+// Told the name of each stage as it starts ("templates", "scan", "refine", "finish"), on the
+// calling thread: what a progress display shows.
+using FindStageCallback = std::function<void(const char* stage)>;
 
 using FindClock = std::chrono::steady_clock;
 // Wall seconds from `start` to now: a stage's time.

@@ -53,10 +53,6 @@ struct FoundView {
     bool stopped = false;
 };
 
-// Told the name of each stage as it starts ("templates", "scan", "refine", "finish"), on the
-// calling thread: what a progress display shows.
-using FindStageCallback = std::function<void(const char* stage)>;
-
 // The CT `volume` (centre `volumeCenter`) in the 2011 scene of `setup`; `reference` has the film's
 // size. `finish` is the registration of stage 4 (`register`'s). Setting *stop ends it after the
 // current stage's searches (the candidates so far, `stopped` set). Throws fm::Error for a

@@ -34,7 +34,7 @@ double distanceToRay(const glm::dvec3& p, const glm::dvec3& source, const glm::d
 FoundKeyframe findKeyframe(const Scene& scene, const std::string& bone, const FrameViews& frames, int frame,
                            const RegistrationSettings& settings, const FindSettings& find,
                            const BiplaneFindSettings& biplane, const ConfirmationSettings& confirmation,
-                           const std::atomic<bool>* stop) {
+                           const std::atomic<bool>* stop, const FindStageCallback& onStage) {
     const std::optional<std::size_t> object = scene.find(bone);
     if (!object) throw Error("find: no bone '" + bone + "' in the scene");
     const std::vector<RegistrationView> views = frames(frame);
@@ -49,7 +49,7 @@ FoundKeyframe findKeyframe(const Scene& scene, const std::string& bone, const Fr
     if (views.size() >= 2 && defaultSimilarityFor(*alone.objects[0].model) == SimilarityMeasure::GradientNcc) {
         RegistrationSettings finish = settings;
         finish.similarity = SimilarityMeasure::GradientNcc;
-        out.biplane = findBiplanePose(alone, views, finish, biplane, stop);
+        out.biplane = findBiplanePose(alone, views, finish, biplane, stop, onStage);
         if (!out.biplane->candidates.empty()) out.pose = out.biplane->candidates[0].worldFromObject;
         out.verdict = out.biplane->verdict;
         out.verdictText = out.biplane->verdictText;

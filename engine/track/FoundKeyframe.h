@@ -53,11 +53,12 @@ struct FoundKeyframe {
 };
 
 // `scene`: the bone alone (sceneOfBoneAlone). `find` is for cameras found alone, `biplane` for
-// all at once (a band in mm in its space replaces the depths the cameras share). Throws
+// all at once (a band in mm in its space replaces the depths the cameras share); `onStage` as
+// findBiplanePose's (the biplane find's stages only). Throws
 // fm::Error when the frame has no image, or as findObjectPose and findBiplanePose.
 FoundKeyframe findKeyframe(const Scene& scene, const std::string& bone, const FrameViews& frames, int frame,
                            const RegistrationSettings& settings, const FindSettings& find,
                            const BiplaneFindSettings& biplane = {}, const ConfirmationSettings& confirmation = {},
-                           const std::atomic<bool>* stop = nullptr);
+                           const std::atomic<bool>* stop = nullptr, const FindStageCallback& onStage = {});
 
 }  // namespace fm

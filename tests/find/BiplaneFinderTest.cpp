@@ -103,7 +103,10 @@ TEST(BiplaneFinder, ABoneWhoseHalfTurnLooksTheSameIsDoubtful) {
     BiplaneFindSettings settings = biplaneTestSettings();
     settings.refined = 40;  // the rod's turns are all alike: a few hypotheses show it
     settings.minScanSpanPixels = 20.0;  // scanned at 1/2: its turns need no finer pixel to look alike
-    const FoundBiplane found = findBiplanePose(scene, views, TrackSettings::defaultTrackingRegistration(), settings);
+    std::vector<std::string> told;  // what a progress display is told, as each stage starts
+    const FoundBiplane found = findBiplanePose(scene, views, TrackSettings::defaultTrackingRegistration(), settings,
+                                               nullptr, [&](const char* stage) { told.push_back(stage); });
+    EXPECT_EQ(told, (std::vector<std::string>{"scan", "refine", "finish"}));
     ASSERT_GE(found.candidates.size(), 2u);
     EXPECT_EQ(found.verdict, AnswerVerdict::Doubtful) << found.verdictText;
     // The answer itself is right up to turns about the rod's axis (its z axis stays put).
