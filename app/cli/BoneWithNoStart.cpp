@@ -5,33 +5,18 @@
 #include "core/Error.h"
 #include "find/FindSpace.h"
 #include "track/FoundKeyframe.h"
-#include "xray/ObjectRegistration.h"
 
 namespace fm::cli {
 
 RigidTransform findBoneWithNoStart(const TrialScene& scene, const std::string& bone,
                                    const std::vector<std::size_t>& cameras, int frame, const std::string& findSpace,
                                    std::uint64_t seed, int threads, bool print) {
-    FindSettings find;
-    BiplaneFindSettings biplane;
-    if (!findSpace.empty()) {
-        find.space = parseFindSpace(findSpace, "--find-space");
-        biplane.space = parseFindSpace(findSpace, "--find-space", biplane.space);
-    }
-    find.threads = threads;
-    biplane.threads = threads;
-    const Scene alone = sceneOfBoneAlone(scene, bone);
-    const SceneObject& object = alone.object(bone);
-    RegistrationSettings settings = realXraySettings(defaultSimilarityFor(*object.model));
-    settings.seed = seed;
-    settings.threads = threads;
-    const FoundKeyframe k =
-        findKeyframe(alone, bone, trialFrameViews(scene, cameras), frame, settings, find, biplane);
+    const FoundKeyframe k = findTrialBone(scene, bone, cameras, frame, findSpace, "--find-space", seed, threads);
     if (print) {
         if (const auto& b = k.biplane) {
             std::printf("find      %s has no keyframe: found in frame %d in its cameras at once (tilt +-%.0f deg, roll +-%.0f "
                         "deg; depths %.0f-%.0f mm from the first camera's source)\n", bone.c_str(), frame,
-                        biplane.space.tiltDeg, biplane.space.rollDeg, b->band.first, b->band.second);
+                        k.space.tiltDeg, k.space.rollDeg, b->band.first, b->band.second);
             std::printf("          %d orientation%s, scan at 1/%d, placements %d scan pixel%s apart\n", b->orientations,
                         b->orientations == 1 ? "" : "s", b->scanFactor, b->placementStride, b->placementStride == 1 ? "" : "s");
             for (const std::string& line : describeFindStages(b->stages)) std::printf("          %s\n", line.c_str());
@@ -40,7 +25,7 @@ RigidTransform findBoneWithNoStart(const TrialScene& scene, const std::string& b
                             b->candidates[c].hypothesis + 1);
         } else {
             std::printf("find      %s has no keyframe: found in frame %d (%s)\n", bone.c_str(), frame,
-                        describeFindSpace(find.space).c_str());
+                        describeFindSpace(k.space).c_str());
             for (const CameraFind& c : k.cameras) {
                 const FoundPose& f = *c.result.found[0];
                 std::printf("          camera %zu: %s; %.2f s, scan at 1/%d, %s\n", c.camera + 1,

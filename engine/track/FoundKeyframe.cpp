@@ -49,12 +49,14 @@ FoundKeyframe findKeyframe(const Scene& scene, const std::string& bone, const Fr
     if (views.size() >= 2 && defaultSimilarityFor(*alone.objects[0].model) == SimilarityMeasure::GradientNcc) {
         RegistrationSettings finish = settings;
         finish.similarity = SimilarityMeasure::GradientNcc;
+        out.space = biplane.space;
         out.biplane = findBiplanePose(alone, views, finish, biplane, stop, onStage);
         if (!out.biplane->candidates.empty()) out.pose = out.biplane->candidates[0].worldFromObject;
         out.verdict = out.biplane->verdict;
         out.verdictText = out.biplane->verdictText;
         return out;
     }
+    out.space = find.space;
     const std::vector<bool> findPose{true};
     for (const RegistrationView& view : views) {
         CameraFind c;
@@ -135,6 +137,24 @@ FoundKeyframe findKeyframe(const Scene& scene, const std::string& bone, const Fr
                       kCamerasAgreeDeg, kCamerasAgreeMm);
     out.verdictText = text;
     return out;
+}
+
+FoundKeyframe findTrialBone(const TrialScene& scene, const std::string& bone, const std::vector<std::size_t>& cameras,
+                            int frame, const std::string& findSpace, const char* option, std::uint64_t seed,
+                            int threads, const std::atomic<bool>* stop) {
+    FindSettings find;
+    BiplaneFindSettings biplane;
+    if (!findSpace.empty()) {
+        find.space = parseFindSpace(findSpace, option);
+        biplane.space = parseFindSpace(findSpace, option, biplane.space);
+    }
+    find.threads = threads;
+    biplane.threads = threads;
+    const Scene alone = sceneOfBoneAlone(scene, bone);
+    RegistrationSettings settings = realXraySettings(defaultSimilarityFor(*alone.object(bone).model));
+    settings.seed = seed;
+    settings.threads = threads;
+    return findKeyframe(alone, bone, trialFrameViews(scene, cameras), frame, settings, find, biplane, {}, stop);
 }
 
 }  // namespace fm

@@ -19,6 +19,7 @@
 #include "find/BiplaneFinder.h"
 #include "find/FoundRegistration.h"
 #include "track/Tracker.h"
+#include "track/TrialScene.h"
 #include "xray/AnswerCheck.h"
 #include "xray/ObjectRegistration.h"
 
@@ -38,6 +39,7 @@ struct CameraFind {
 
 struct FoundKeyframe {
     int frame = 0;
+    FindSpace space;                 // as asked (the biplane find's, or each camera's before its depths)
     RigidTransform pose;             // the bone's worldFromObject
     std::optional<FoundBiplane> biplane;  // found in all the cameras at once (then `cameras` is empty)
     std::vector<CameraFind> cameras;  // per camera that had an image, each found alone
@@ -60,5 +62,13 @@ FoundKeyframe findKeyframe(const Scene& scene, const std::string& bone, const Fr
                            const RegistrationSettings& settings, const FindSettings& find,
                            const BiplaneFindSettings& biplane = {}, const ConfirmationSettings& confirmation = {},
                            const std::atomic<bool>* stop = nullptr, const FindStageCallback& onStage = {});
+
+// A trial's bone with no start found in `frame` as `track` and its Python twin find it: the bone
+// alone, the registration settings its model takes on real radiographs (realXraySettings, `seed`,
+// `threads`), `cameras` (empty = all) and `findSpace` as typed ("" = the defaults; errors name
+// `option`). The caller refuses an answer that is not ok: a pose that may be wrong is no start.
+FoundKeyframe findTrialBone(const TrialScene& scene, const std::string& bone, const std::vector<std::size_t>& cameras,
+                            int frame, const std::string& findSpace, const char* option, std::uint64_t seed,
+                            int threads, const std::atomic<bool>* stop = nullptr);
 
 }  // namespace fm

@@ -1,6 +1,7 @@
 // `track` from Python: bones through a trial's frames in all its cameras, as `fluoromatch track
 // --trial T --bone B` does (track/Tracker.h, track/SegmentTracking.h): the same keyframes, segments,
 // settings and seed, so the same poses. The .tra is rewritten atomically after every frame.
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -13,6 +14,7 @@
 #include "Progress.h"
 #include "core/Error.h"
 #include "pose/AutoscoperTra.h"
+#include "track/FoundKeyframe.h"
 #include "track/SegmentTracking.h"
 #include "track/TrackSegments.h"
 #include "track/TrialScene.h"
@@ -64,7 +66,8 @@ void bindTrack(pb::module_& m) {
            const std::string& init, const std::string& start, const std::string& out, std::uint64_t seed,
            int threads, std::optional<std::vector<int>> cameraList, const std::string& onLost, bool uncertainty,
            const pb::object& progress, bool invert, bool log, std::optional<double> i0,
-           std::optional<double> excludeBelow, std::optional<int> erode, std::optional<std::array<int, 4>> roi) {
+           std::optional<double> excludeBelow, std::optional<int> erode, std::optional<std::array<int, 4>> roi,
+           const std::string& findSpace) {
             // 1. The trial, its bones, frames and keyframes, refused before any work.
             std::vector<std::string> bones;
             if (pb::isinstance<pb::str>(boneArg)) bones.push_back(boneArg.cast<std::string>());
@@ -123,8 +126,44 @@ void bindTrack(pb::module_& m) {
 
             ProgressRelay relay(progress);
             pb::dict results;
+            if (!findSpace.empty() && std::none_of(bones.begin(), bones.end(), [&](const std::string& b) {
+                    return boneKeyframes(scene, b, startTra, start).empty();
+                }))
+                throw Error("find_space applies to a bone with no keyframe; every bone has one");
             for (const std::string& bone : bones) {
-                const std::map<int, RigidTransform> keyframes = boneKeyframes(scene, bone, startTra, start);
+                std::map<int, RigidTransform> keyframes = boneKeyframes(scene, bone, startTra, start);
+                // No keyframe: the pose found in the first frame, as the CLI finds it (refused
+                // when not ok: a pose that may be wrong is no start).
+                pb::object found = pb::none();
+                if (keyframes.empty() && !relay.stopped()) {  // (a stop from an earlier bone's progress: none)
+                    FoundKeyframe k;
+                    {
+                        pb::gil_scoped_release unlock;
+                        k = findTrialBone(scene, bone, cameras, order.front(), findSpace, "find_space", seed, threads,
+                                          relay.stopFlag());
+                    }
+                    if (k.verdict != AnswerVerdict::Ok)
+                        throw Error(bone + " has no keyframe and the pose found in frame " + std::to_string(order.front()) +
+                                    " is " + k.verdictText + ": give a start or a find_space that holds it");
+                    keyframes[order.front()] = k.pose;
+                    pb::dict f;
+                    f["frame"] = order.front();
+                    f["verdict"] = toString(k.verdict);
+                    f["verdict_text"] = k.verdictText;
+                    f["in_all_cameras_at_once"] = k.biplane.has_value();
+                    pb::list stages;
+                    if (k.biplane)
+                        for (const FindStage& s : k.biplane->stages) {
+                            pb::dict d;
+                            d["name"] = s.name;
+                            d["seconds"] = s.seconds;
+                            d["work"] = s.evaluations;
+                            d["kept"] = s.kept;
+                            stages.append(d);
+                        }
+                    f["stages"] = stages;
+                    found = f;
+                }
                 const std::string boneOut =
                     out.empty() || bones.size() == 1
                         ? out
@@ -187,8 +226,10 @@ void bindTrack(pb::module_& m) {
                 result["written"] = boneOut.empty() ? pb::none() : pb::cast(boneOut);
                 result["stopped"] = relay.stopped();
                 result["preparation"] = preparations;
+                result["found"] = found;
                 results[pb::str(bone)] = result;
             }
+
             if (pb::isinstance<pb::str>(boneArg)) return pb::object(results[pb::str(bones[0])]);
             return pb::object(results);
         },
@@ -198,6 +239,7 @@ void bindTrack(pb::module_& m) {
         pb::arg("uncertainty") = true, pb::arg("progress") = pb::none(),
         pb::arg("invert") = false, pb::arg("log") = false, pb::arg("i0") = pb::none(),
         pb::arg("exclude_below") = pb::none(), pb::arg("erode") = pb::none(), pb::arg("roi") = pb::none(),
+        pb::arg("find_space") = "",
         R"doc(
 Tracks a bone (or a list of bones) through a trial, as `fluoromatch track --trial T --bone B`
 does, with its options as keyword arguments: frames "A:B[:STEP]", reverse, init ("previous",
@@ -207,6 +249,9 @@ atomically after every frame; with several bones NAME_bone.tra), seed, threads, 
 keywords of the CLI's flags over every camera's preparation (invert, log, i0, exclude_below,
 erode, roi: each given one replaces its part of what the trial says, or of the default for its
 frames: 8-bit inverted, deeper log). The same poses as the CLI for the same arguments.
+A bone with no keyframe (and no start) is found in the first frame first, as the CLI finds it
+(a bone volume in all cameras at once; find_space "tilt=..,roll=..", as --find-space), and
+refused unless the find is ok.
 
 Returns (for one bone) a dict: poses (frames, 4, 4) as the .tra holds them (Autoscoper's
 worldFromVolume; NaN where not tracked or lost), frames (one dict per tracked frame: frame,
@@ -214,7 +259,9 @@ status, note, verdict ("ok", "doubtful", "lost"), verdict_text, uncertainty (per
 the first taking camera's frame; uncertainty_bone along the bone's axes), similarity_ratio (against the last good frames), searches,
 pose, object_pose, costs per camera, cameras_used, evaluations, seconds), written, stopped,
 preparation (per camera: camera, values, i0 (NaN unless log), exclude_below, erode, roi,
-source: "the trial's", "default for 8-bit frames: ...", text: as the CLI prints it); for a list
+source: "the trial's", "default for 8-bit frames: ...", text: as the CLI prints it), found (None,
+or for a bone found with no keyframe: frame, verdict, verdict_text, in_all_cameras_at_once,
+stages: name, seconds, work, kept); for a list
 of bones a dict of those by bone. progress(dict) is called after
 every frame; return False to stop after it (Ctrl-C stops too).)doc");
 }
