@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <tuple>
 
 #include "core/Error.h"
 #include "find/RefineHypotheses.h"
@@ -151,30 +152,40 @@ FoundBiplane findBiplanePose(const Scene& scene, const std::vector<RegistrationV
     out.stages.push_back({"finish", secondsSince(clock), evaluations, static_cast<int>(out.candidates.size())});
     out.stopped = stop && stop->load();
 
-    // How sure: the best against its best rival (the best answer of another basin).
-    if (out.candidates.empty()) {
-        out.verdictText = "lost: no answer";
-        return out;
-    }
-    const BiplaneCandidate& best = out.candidates[0];
-    const auto rival = std::find_if(out.candidates.begin() + 1, out.candidates.end(), [&](const BiplaneCandidate& c) {
+    // 4. How sure.
+    std::tie(out.verdict, out.verdictText) = judgeBiplaneAnswers(out.candidates, finalists.size(), views.size(), pivot);
+    return out;
+}
+
+std::pair<AnswerVerdict, std::string> judgeBiplaneAnswers(const std::vector<BiplaneCandidate>& candidates,
+                                                          std::size_t finalists, std::size_t cameras,
+                                                          const glm::dvec3& pivot) {
+    if (candidates.empty()) return {AnswerVerdict::Lost, "lost: no answer"};
+    // The best against its best rival (the best answer of another basin).
+    const BiplaneCandidate& best = candidates[0];
+    const auto rival = std::find_if(candidates.begin() + 1, candidates.end(), [&](const BiplaneCandidate& c) {
         return glm::length(c.worldFromObject.applyToPoint(pivot) - best.worldFromObject.applyToPoint(pivot)) > kBiplaneRivalMm ||
                rotationBetweenDeg(c.worldFromObject.rotation, best.worldFromObject.rotation) > kBiplaneRivalDeg;
     });
-    char text[200];
-    if (rival != out.candidates.end()) {
+    char text[240];
+    AnswerVerdict verdict = AnswerVerdict::Doubtful;
+    const double perCamera = best.similarity / static_cast<double>(std::max<std::size_t>(cameras, 1));
+    if (perCamera < kBiplaneMinSimilarity) {
+        std::snprintf(text, sizeof text,
+                      "doubtful: the best answer scores %.2f per camera, below %.2f: the bone is not clearly seen at any "
+                      "pose searched (is it in the search space?)", perCamera, kBiplaneMinSimilarity);
+    } else if (rival != candidates.end()) {
         const double ratio = rival->similarity / best.similarity;
-        out.verdict = ratio < kBiplaneRivalRatio ? AnswerVerdict::Ok : AnswerVerdict::Doubtful;
+        verdict = ratio < kBiplaneRivalRatio ? AnswerVerdict::Ok : AnswerVerdict::Doubtful;
         std::snprintf(text, sizeof text, "%s: the best answer of another basin scores %.2f of it (%s %.2f)",
-                      toString(out.verdict), ratio, ratio < kBiplaneRivalRatio ? "below" : "at least", kBiplaneRivalRatio);
+                      toString(verdict), ratio, ratio < kBiplaneRivalRatio ? "below" : "at least", kBiplaneRivalRatio);
     } else {
         // No other basin left: every finalist, each from its own hypothesis, ended at this answer.
-        out.verdict = finalists.size() >= 2 ? AnswerVerdict::Ok : AnswerVerdict::Doubtful;
+        verdict = finalists >= 2 ? AnswerVerdict::Ok : AnswerVerdict::Doubtful;
         std::snprintf(text, sizeof text, "%s: all %zu finalists ended at it (no other basin left to compare it with)",
-                      toString(out.verdict), finalists.size());
+                      toString(verdict), finalists);
     }
-    out.verdictText = text;
-    return out;
+    return {verdict, text};
 }
 
 }  // namespace fm

@@ -30,6 +30,12 @@ namespace fm {
 inline constexpr double kBiplaneRivalRatio = 0.9;
 inline constexpr double kBiplaneRivalMm = 5.0;
 inline constexpr double kBiplaneRivalDeg = 5.0;
+// A best answer whose gradient NCC, averaged over the cameras, is below this is doubtful whatever
+// its rivals score: the bone is not clearly seen at any pose searched (the truth may lie outside
+// the search space). On the simulated femur (scripts/find_biplane_accuracy.sh, 20 finds) the wrong
+// best answers scored 0.24-0.32 per camera, one of them called ok by its rivals alone (tilt +-35:
+// 0.32, the next basin 0.81 of it, 100 mm off); the right ones 0.39-0.54; the wrist's 0.55-0.64.
+inline constexpr double kBiplaneMinSimilarity = 0.35;
 // Two answers within these are one (merged).
 inline constexpr double kBiplaneSameMm = 2.0;
 inline constexpr double kBiplaneSameDeg = 2.0;
@@ -67,12 +73,18 @@ struct FoundBiplane {
     int orientations = 0;
     std::pair<double, double> band{0.0, 0.0};  // depths searched along the first camera
     bool stopped = false;
-    // Ok when the best rival (kBiplaneRivalMm / kBiplaneRivalDeg away) scores below
-    // kBiplaneRivalRatio of the best, or when there is none and two or more finalists ended at the
-    // best; else doubtful; lost when there is no candidate.
+    // Ok when the best scores at least kBiplaneMinSimilarity per camera and the best rival
+    // (kBiplaneRivalMm / kBiplaneRivalDeg away) below kBiplaneRivalRatio of it, or there is none
+    // and two or more finalists ended at the best; else doubtful; lost when there is no candidate.
     AnswerVerdict verdict = AnswerVerdict::Lost;
     std::string verdictText;
 };
+
+// FoundBiplane::verdict and its text for a find's distinct answers (best first; similarity summed
+// over `cameras`), `finalists` of which went into its finish.
+std::pair<AnswerVerdict, std::string> judgeBiplaneAnswers(const std::vector<BiplaneCandidate>& candidates,
+                                                          std::size_t finalists, std::size_t cameras,
+                                                          const glm::dvec3& pivot);
 
 // Object 0 of `scene` (the bone alone) in `views` (two or more cameras). `finish` gives the
 // similarity and render settings (gradient NCC; cropToModel for real radiographs); `onStage` is

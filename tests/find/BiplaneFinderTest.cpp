@@ -115,6 +115,28 @@ TEST(BiplaneFinder, ABoneWhoseHalfTurnLooksTheSameIsDoubtful) {
     EXPECT_GT(std::abs(glm::dot(axis, truthAxis)), std::cos(glm::radians(2.0)));
 }
 
+// The verdict's rules on answers made up for it (two cameras; similarities summed over them).
+TEST(BiplaneFinder, TheVerdictWantsTheBoneClearlySeenAndNoRivalNearlyAsGood) {
+    const glm::dvec3 pivot(0.0);
+    const auto at = [](double x, double similarity) {
+        return BiplaneCandidate{RigidTransform::translate({x, 0.0, 0.0}), similarity, 0};
+    };
+    const auto judge = [&](const std::vector<BiplaneCandidate>& c, std::size_t finalists) {
+        return judgeBiplaneAnswers(c, finalists, 2, pivot);
+    };
+    EXPECT_EQ(judge({at(0, 1.0), at(50, 0.6)}, 8).first, AnswerVerdict::Ok);
+    // A rival basin at 0.9 of the best or more: doubtful; within 5 mm it is the same basin.
+    EXPECT_EQ(judge({at(0, 1.0), at(50, 0.9)}, 8).first, AnswerVerdict::Doubtful);
+    EXPECT_EQ(judge({at(0, 1.0), at(4, 0.99)}, 1).first, AnswerVerdict::Doubtful) << "no rival, one finalist";
+    EXPECT_EQ(judge({at(0, 1.0), at(4, 0.99)}, 2).first, AnswerVerdict::Ok) << "no rival, every finalist there";
+    // The femur searched where its truth was not (tilt +-35): the best 0.32 per camera, its
+    // rival 0.81 of it, 100 mm off: not ok however far below the best the rival is.
+    const auto [verdict, text] = judge({at(0, 0.637), at(100, 0.516)}, 8);
+    EXPECT_EQ(verdict, AnswerVerdict::Doubtful);
+    EXPECT_NE(text.find("0.32 per camera, below 0.35"), std::string::npos) << text;
+    EXPECT_EQ(judge({}, 0).first, AnswerVerdict::Lost);
+}
+
 TEST(BiplaneScan, TheSameHypothesesWhateverTheThreadCountWithPlacementsOneOrTwoApart) {
     Scene scene;
     const Volume rod = voxelize(CylinderShape{{0, 0, 0}, 9.0, 30.0}, centeredGrid({24, 24, 48}, {1.5, 1.5, 1.5}), 0.02f);
