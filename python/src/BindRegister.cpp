@@ -10,6 +10,7 @@
 
 #include "Arrays.h"
 #include "Bindings.h"
+#include "FindStages.h"
 #include "Progress.h"
 #include "Preparation.h"
 #include "PyMesh.h"
@@ -267,16 +268,7 @@ void bindRegister(pb::module_& m) {
                 a["found"] = pb::none();
                 if (const std::optional<FoundPose>& f = result.found[k]) {
                     pb::dict found;
-                    pb::list stages;
-                    for (const FindStage& st : f->stages) {
-                        pb::dict sd;
-                        sd["name"] = st.name;
-                        sd["seconds"] = st.seconds;
-                        sd["evaluations"] = st.evaluations;
-                        sd["kept"] = st.kept;
-                        stages.append(sd);
-                    }
-                    found["stages"] = stages;
+                    found["stages"] = findStagesList(f->stages);
                     found["scan_factor"] = f->scanFactor;
                     found["seconds"] = f->seconds();
                     found["rival_shortfall"] = c.evidence.rival ? pb::cast(c.evidence.rival->shortfallRatio) : pb::object(pb::none());

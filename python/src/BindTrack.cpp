@@ -10,6 +10,7 @@
 
 #include "Arrays.h"
 #include "Bindings.h"
+#include "FindStages.h"
 #include "Preparation.h"
 #include "Progress.h"
 #include "core/Error.h"
@@ -151,17 +152,7 @@ void bindTrack(pb::module_& m) {
                     f["verdict"] = toString(k.verdict);
                     f["verdict_text"] = k.verdictText;
                     f["in_all_cameras_at_once"] = k.biplane.has_value();
-                    pb::list stages;
-                    if (k.biplane)
-                        for (const FindStage& s : k.biplane->stages) {
-                            pb::dict d;
-                            d["name"] = s.name;
-                            d["seconds"] = s.seconds;
-                            d["work"] = s.evaluations;
-                            d["kept"] = s.kept;
-                            stages.append(d);
-                        }
-                    f["stages"] = stages;
+                    f["stages"] = k.biplane ? findStagesList(k.biplane->stages) : pb::list();
                     found = f;
                 }
                 const std::string boneOut =
@@ -261,7 +252,7 @@ pose, object_pose, costs per camera, cameras_used, evaluations, seconds), writte
 preparation (per camera: camera, values, i0 (NaN unless log), exclude_below, erode, roi,
 source: "the trial's", "default for 8-bit frames: ...", text: as the CLI prints it), found (None,
 or for a bone found with no keyframe: frame, verdict, verdict_text, in_all_cameras_at_once,
-stages: name, seconds, work, kept); for a list
+stages: name, seconds, evaluations, kept); for a list
 of bones a dict of those by bone. progress(dict) is called after
 every frame; return False to stop after it (Ctrl-C stops too).)doc");
 }
