@@ -10,8 +10,9 @@
 //   3. finish: the best `finalists` polished at 1/2 and 1/4 of the scan's pixel, where the bone's
 //      inner edges tell it from the other bones' (femur: the truth 1.10 against 0.79 next, where
 //      the scan's pixel had them 1.02 against 0.99); answers that agree merged, best first.
-// How sure: the best answer against the next distinct one (kBiplaneRivalRatio); the tracker's
-// registration and verdict follow, as from a keyframe. Deterministic whatever the thread count.
+// How sure: the best answer clearly seen (kBiplaneMinSimilarity) and against the next distinct one
+// (kBiplaneRivalRatio); the tracker's registration and verdict follow, as from a keyframe.
+// Deterministic whatever the thread count.
 #include <atomic>
 #include <string>
 #include <utility>
