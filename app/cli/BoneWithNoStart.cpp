@@ -2,7 +2,6 @@
 
 #include <cstdio>
 
-#include "core/Error.h"
 #include "find/FindSpace.h"
 #include "track/FoundKeyframe.h"
 
@@ -34,12 +33,7 @@ RigidTransform findBoneWithNoStart(const TrialScene& scene, const std::string& b
         }
         std::printf("          %s\n", k.verdictText.c_str());
     }
-    // A pose that may be wrong is no start: the frames tracked from it would be judged against it
-    // and called ok (a doubtful biplane find on the default simulated femur trial, whose cameras see
-    // the two femurs overlap: 10 frames tracked from it, none within 1 mm of the truth, each "ok").
-    if (k.verdict != AnswerVerdict::Ok)
-        throw Error(bone + " has no keyframe and the pose found in frame " + std::to_string(frame) + " is " +
-                        k.verdictText + ": give a keyframe (--start) or a --find-space that holds it");
+    refuseUnlessOk(k, bone, "a keyframe (--start)", "--find-space");
     return k.pose;
 }
 

@@ -27,9 +27,13 @@ int scanFactorFor(const XrayModel& model, const ProjectionGeometry& first, doubl
     return factor;
 }
 
+// Two poses within `mm` at the pivot and `deg` of turn.
+bool posesWithin(const RigidTransform& a, const RigidTransform& b, const glm::dvec3& pivot, double mm, double deg) {
+    return glm::length(a.applyToPoint(pivot) - b.applyToPoint(pivot)) <= mm && rotationBetweenDeg(a.rotation, b.rotation) <= deg;
+}
+
 bool sameAnswer(const RigidTransform& a, const RigidTransform& b, const glm::dvec3& pivot) {
-    return glm::length(a.applyToPoint(pivot) - b.applyToPoint(pivot)) <= kBiplaneSameMm &&
-           rotationBetweenDeg(a.rotation, b.rotation) <= kBiplaneSameDeg;
+    return posesWithin(a, b, pivot, kBiplaneSameMm, kBiplaneSameDeg);
 }
 
 // The registration of `scene` in `views` in the first camera's frame from `start` (angles 0 there).
@@ -164,8 +168,7 @@ std::pair<AnswerVerdict, std::string> judgeBiplaneAnswers(const std::vector<Bipl
     // The best against its best rival (the best answer of another basin).
     const BiplaneCandidate& best = candidates[0];
     const auto rival = std::find_if(candidates.begin() + 1, candidates.end(), [&](const BiplaneCandidate& c) {
-        return glm::length(c.worldFromObject.applyToPoint(pivot) - best.worldFromObject.applyToPoint(pivot)) > kBiplaneRivalMm ||
-               rotationBetweenDeg(c.worldFromObject.rotation, best.worldFromObject.rotation) > kBiplaneRivalDeg;
+        return !posesWithin(c.worldFromObject, best.worldFromObject, pivot, kBiplaneRivalMm, kBiplaneRivalDeg);
     });
     char text[240];
     AnswerVerdict verdict = AnswerVerdict::Doubtful;

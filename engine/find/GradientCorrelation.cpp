@@ -154,22 +154,6 @@ std::vector<float> gradientNccMap(const CorrelationReference& r, const GradientT
     if (t.empty()) return out;
     const int tw = t.mask.width, th = t.mask.height;
     if (tw > r.width_ || th > r.height_) throw Error("gradient correlation: the template is larger than the reference");
-    // The template's own sums (mask pixels), and its mask's runs along rows.
-    double n = 0.0, sT[2] = {0.0, 0.0}, sTT[2] = {0.0, 0.0};
-    struct Run {
-        int row, begin, end;
-    };
-    std::vector<Run> runs;
-    for (int j = 0; j < th; ++j)
-        for (int i = 0; i < tw; ++i) {
-            if (!t.mask.at(i, j)) continue;
-            if (runs.empty() || runs.back().row != j || runs.back().end != i) runs.push_back({j, i, i});
-            ++runs.back().end;
-            const double a = t.gradients.gx.at(i, j), b = t.gradients.gy.at(i, j);
-            n += 1.0;
-            sT[0] += a, sT[1] += b, sTT[0] += a * a, sTT[1] += b * b;
-        }
-    if (n < 2.0) return out;
     // Placement (X, Y) puts template pixel (i, j) on padded pixel (X - ax + i + W, Y - ay + j + H);
     // with X = stride x, column c = offX + i is phase c % stride, column c / stride of it, plus x.
     const int W = r.width_, H = r.height_, s = r.stride_, MW = r.mapWidth(), MH = r.mapHeight();
@@ -177,22 +161,34 @@ std::vector<float> gradientNccMap(const CorrelationReference& r, const GradientT
     const auto at = [s](const auto& phases, int width, int row, int column) {
         return &phases[static_cast<std::size_t>(column % s)][static_cast<std::size_t>(row) * width + column / s];
     };
-    // Per mask pixel (rows, then columns): its plane's phase, its offset there from a map row's
-    // first padded row, and its weights (the template's gradients).
+    // One pass over the mask (rows, then columns): the template's own sums, the mask's runs along
+    // rows, and per pixel its plane's phase, its offset there from a map row's first padded row
+    // and its weights (the template's gradients).
+    double n = 0.0, sT[2] = {0.0, 0.0}, sTT[2] = {0.0, 0.0};
+    struct Run {
+        int row, begin, end;
+    };
     struct MaskPixel {
         std::size_t phase, offset;
     };
+    std::vector<Run> runs;
     std::vector<MaskPixel> pixels;
     std::vector<float> weights[2];
     for (int j = 0; j < th; ++j)
         for (int i = 0; i < tw; ++i) {
             if (!t.mask.at(i, j)) continue;
+            if (runs.empty() || runs.back().row != j || runs.back().end != i) runs.push_back({j, i, i});
+            ++runs.back().end;
+            const float a = t.gradients.gx.at(i, j), b = t.gradients.gy.at(i, j);
+            n += 1.0;
+            sT[0] += a, sT[1] += b, sTT[0] += double(a) * a, sTT[1] += double(b) * b;
             const int column = offX + i;
             pixels.push_back({static_cast<std::size_t>(column % s),
                               static_cast<std::size_t>(j) * r.phaseWidth_ + static_cast<std::size_t>(column / s)});
-            weights[0].push_back(t.gradients.gx.at(i, j));
-            weights[1].push_back(t.gradients.gy.at(i, j));
+            weights[0].push_back(a);
+            weights[1].push_back(b);
         }
+    if (n < 2.0) return out;
     // The sums of G and G^2 in double (their variance is a difference of them); the cross sums,
     // a few thousand products each, in float (relative error ~1e-6 of the score).
     const std::size_t placements = static_cast<std::size_t>(MW) * MH;

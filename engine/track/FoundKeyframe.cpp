@@ -157,4 +157,10 @@ FoundKeyframe findTrialBone(const TrialScene& scene, const std::string& bone, co
     return findKeyframe(alone, bone, trialFrameViews(scene, cameras), frame, settings, find, biplane, {}, stop);
 }
 
+void refuseUnlessOk(const FoundKeyframe& found, const std::string& bone, const char* startHint, const char* spaceOption) {
+    if (found.verdict != AnswerVerdict::Ok)
+        throw Error(bone + " has no keyframe and the pose found in frame " + std::to_string(found.frame) + " is " +
+                    found.verdictText + ": give " + startHint + " or a " + spaceOption + " that holds it");
+}
+
 }  // namespace fm

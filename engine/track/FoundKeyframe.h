@@ -66,9 +66,16 @@ FoundKeyframe findKeyframe(const Scene& scene, const std::string& bone, const Fr
 // A trial's bone with no start found in `frame` as `track` and its Python twin find it: the bone
 // alone, the registration settings its model takes on real radiographs (realXraySettings, `seed`,
 // `threads`), `cameras` (empty = all) and `findSpace` as typed ("" = the defaults; errors name
-// `option`). The caller refuses an answer that is not ok: a pose that may be wrong is no start.
+// `option`). The caller refuses an answer that is not ok (refuseUnlessOk).
 FoundKeyframe findTrialBone(const TrialScene& scene, const std::string& bone, const std::vector<std::size_t>& cameras,
                             int frame, const std::string& findSpace, const char* option, std::uint64_t seed,
                             int threads, const std::atomic<bool>* stop = nullptr);
+
+// Throws fm::Error unless `found` is ok, naming the bone, the frame, the verdict and what the user
+// can give instead (`startHint`: "a keyframe (--start)"; `spaceOption`: "--find-space"). A pose that
+// may be wrong is no start: the frames tracked from it would be judged against it and called ok (a
+// doubtful find on the default simulated femur trial, whose cameras see the two femurs overlap:
+// 10 frames tracked from it, none within 1 mm of the truth, each "ok").
+void refuseUnlessOk(const FoundKeyframe& found, const std::string& bone, const char* startHint, const char* spaceOption);
 
 }  // namespace fm

@@ -143,13 +143,10 @@ void bindTrack(pb::module_& m) {
                         k = findTrialBone(scene, bone, cameras, order.front(), findSpace, "find_space", seed, threads,
                                           relay.stopFlag());
                     }
-                    if (k.verdict != AnswerVerdict::Ok)
-                        throw Error(bone + " has no keyframe and the pose found in frame " + std::to_string(order.front()) +
-                                    " is " + k.verdictText + ": give a start or a find_space that holds it");
+                    refuseUnlessOk(k, bone, "a start", "find_space");
                     keyframes[order.front()] = k.pose;
-                    pb::dict f;
+                    pb::dict f;  // (its verdict: ok, or it was refused)
                     f["frame"] = order.front();
-                    f["verdict"] = toString(k.verdict);
                     f["verdict_text"] = k.verdictText;
                     f["in_all_cameras_at_once"] = k.biplane.has_value();
                     f["stages"] = k.biplane ? findStagesList(k.biplane->stages) : pb::list();
@@ -251,7 +248,7 @@ the first taking camera's frame; uncertainty_bone along the bone's axes), simila
 pose, object_pose, costs per camera, cameras_used, evaluations, seconds), written, stopped,
 preparation (per camera: camera, values, i0 (NaN unless log), exclude_below, erode, roi,
 source: "the trial's", "default for 8-bit frames: ...", text: as the CLI prints it), found (None,
-or for a bone found with no keyframe: frame, verdict, verdict_text, in_all_cameras_at_once,
+or for a bone found with no keyframe: frame, verdict_text (ok, why), in_all_cameras_at_once,
 stages: name, seconds, evaluations, kept); for a list
 of bones a dict of those by bone. progress(dict) is called after
 every frame; return False to stop after it (Ctrl-C stops too).)doc");
