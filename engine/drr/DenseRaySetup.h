@@ -24,7 +24,7 @@ inline constexpr double kRayParallelLimit = 1e-200;
 // local frame (mm, box [0, dims * spacing)). Each ray is clipped to the box, then to its pixel's
 // tile of `tiles` (if given; pixel (cols[i], row)), and set up for walkDense. Returns a bit mask
 // of the rays that meet something; out[i] is set for those only.
-// Call only when denseWalkSimdAvailable().
+// Call only when denseWalkSimd() is DenseWalkSimd::Avx512.
 unsigned setupDenseRays8(const DrrVolume& v, const glm::dvec3& q0, const glm::dvec3* q1,
                          int count, const BrickDepthTiles* tiles, const int* cols, int row,
                          DenseRay* out);

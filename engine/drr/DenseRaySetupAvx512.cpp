@@ -154,7 +154,7 @@ FM_AVX512 unsigned setupDenseRays8(const DrrVolume& v, const glm::dvec3& q0,
 namespace fm {
 unsigned setupDenseRays8(const DrrVolume&, const glm::dvec3&, const glm::dvec3*, int,
                          const BrickDepthTiles*, const int*, int, DenseRay*) {
-    return 0;  // never called: denseWalkSimdAvailable() is false here
+    return 0;  // never called: denseWalkSimd() is never Avx512 here
 }
 }  // namespace fm
 

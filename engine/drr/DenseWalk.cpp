@@ -1,7 +1,11 @@
-// The scalar plain walk and the dispatch to the AVX-512 form (DenseWalkAvx512.cpp).
+// The scalar plain walk and the dispatch to the vector forms (DenseWalkAvx512.cpp,
+// DenseWalkAvx2.cpp).
 #include "drr/DenseWalk.h"
 
+#include "core/Error.h"
+
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 
@@ -11,6 +15,8 @@ namespace detail {
 template <class T, bool Prefetch, bool WithAbs>
 void walkDense16Avx512(const T* values, std::int64_t last, const DenseRay* rays, int count,
                        WalkSums* sums);
+template <class T, bool WithAbs>
+void walkDense16Avx2(const T* values, std::int64_t last, const DenseRay* rays, int count, WalkSums* sums);
 }
 
 template <class T, bool WithAbs>
@@ -40,29 +46,59 @@ WalkSums walkDense(const T* values, std::int64_t last, const DenseRay& r) {
     return acc;
 }
 
-bool denseWalkSimdAvailable() {
+DenseWalkSimd denseWalkSimdSupported() {
 #if defined(__x86_64__) && defined(__GNUC__)
-    static const bool available =
-        __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") &&
-        __builtin_cpu_supports("avx512vl");
-    return available;
+    static const DenseWalkSimd supported = [] {
+        if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") &&
+            __builtin_cpu_supports("avx512vl"))
+            return DenseWalkSimd::Avx512;
+        return __builtin_cpu_supports("avx2") ? DenseWalkSimd::Avx2 : DenseWalkSimd::None;
+    }();
+    return supported;
 #else
-    return false;
+    return DenseWalkSimd::None;
 #endif
+}
+
+namespace {
+// The form a test chose (ScopedDenseWalkSimd); none chosen: the widest supported.
+std::atomic<int> chosenForm{-1};
+}  // namespace
+
+DenseWalkSimd denseWalkSimd() {
+    const int chosen = chosenForm.load(std::memory_order_relaxed);
+    return chosen < 0 ? denseWalkSimdSupported() : static_cast<DenseWalkSimd>(chosen);
+}
+
+ScopedDenseWalkSimd::ScopedDenseWalkSimd(DenseWalkSimd form) : previous_(denseWalkSimd()) {
+    if (static_cast<int>(form) > static_cast<int>(denseWalkSimdSupported()))
+        throw Error("ScopedDenseWalkSimd: this CPU does not run that form");
+    chosenForm.store(static_cast<int>(form), std::memory_order_relaxed);
+}
+ScopedDenseWalkSimd::~ScopedDenseWalkSimd() {
+    chosenForm.store(static_cast<int>(previous_), std::memory_order_relaxed);
 }
 
 template <class T, bool WithAbs>
 void walkDense16(const T* values, std::int64_t last, const DenseRay* rays, int count,
                  WalkSums* sums) {
 #if defined(__x86_64__) && defined(__GNUC__)
-    // The vector form indexes in 32 bits; a volume past that (2^31 voxels) walks
-    // one ray at a time, with the same sums.
-    if (denseWalkSimdAvailable() && last <= std::numeric_limits<std::int32_t>::max()) {
-        if (denseWalkPrefetches(std::uint64_t(last + 1) * sizeof(T)))
-            detail::walkDense16Avx512<T, true, WithAbs>(values, last, rays, count, sums);
-        else
-            detail::walkDense16Avx512<T, false, WithAbs>(values, last, rays, count, sums);
-        return;
+    switch (denseWalkSimd()) {
+        case DenseWalkSimd::Avx512:
+            // This form indexes in 32 bits; a volume past that (2^31 voxels) walks in AVX2's
+            // 64-bit lanes, with the same sums.
+            if (last <= std::numeric_limits<std::int32_t>::max()) {
+                if (denseWalkPrefetches(std::uint64_t(last + 1) * sizeof(T)))
+                    detail::walkDense16Avx512<T, true, WithAbs>(values, last, rays, count, sums);
+                else
+                    detail::walkDense16Avx512<T, false, WithAbs>(values, last, rays, count, sums);
+                return;
+            }
+            [[fallthrough]];
+        case DenseWalkSimd::Avx2:
+            detail::walkDense16Avx2<T, WithAbs>(values, last, rays, count, sums);
+            return;
+        case DenseWalkSimd::None: break;
     }
 #endif
     for (int i = 0; i < count; ++i) sums[i] = walkDense<T, WithAbs>(values, last, rays[i]);

@@ -1,6 +1,7 @@
 #pragma once
-// The plain Siddon/Jacobs voxel walk (no bricks) in two forms that give bit-identical sums:
-// one ray at a time (scalar), and sixteen rays at once in AVX-512 lanes where the CPU has it.
+// The plain Siddon/Jacobs voxel walk (no bricks) in forms that give bit-identical sums: one ray
+// at a time (scalar), and sixteen rays at once in vector lanes where the CPU has them (AVX-512,
+// else AVX2).
 //
 // Why a vector form: on real CTs almost every voxel is non-zero (air noise above -1000 HU),
 // so empty-space skipping passes over little and the cost is the walk itself. One ray's walk
@@ -44,13 +45,35 @@ template <class T, bool WithAbs = false>
 WalkSums walkDense(const T* values, std::int64_t last, const DenseRay& ray);
 
 // The same for `count` (1..16) rays at once; sums[i] is bit-identical to walkDense(rays[i]).
-// Uses AVX-512 when denseWalkSimdAvailable(), else the scalar walk.
+// In the lanes of denseWalkSimd()'s form, else one ray at a time.
 template <class T, bool WithAbs = false>
 void walkDense16(const T* values, std::int64_t last, const DenseRay* rays, int count,
                  WalkSums* sums);
 
-// True when this CPU (and OS) runs the AVX-512 form.
-bool denseWalkSimdAvailable();
+// The vector forms of the walk, by instruction set.
+enum class DenseWalkSimd { None, Avx2, Avx512 };
+
+// The form walkDense16 uses: the widest this CPU (and OS) runs, unless a test chose a narrower
+// one (ScopedDenseWalkSimd).
+DenseWalkSimd denseWalkSimd();
+// True when walkDense16 runs in vector lanes (renderDrr's automatic choice walks densely only
+// then: the scalar plain walk is slower than skipping bricks).
+inline bool denseWalkSimdAvailable() { return denseWalkSimd() != DenseWalkSimd::None; }
+// The widest form this CPU runs.
+DenseWalkSimd denseWalkSimdSupported();
+
+// For tests: walkDense16 (and so renderDrr) uses `form` while this lives, so that every form
+// this CPU runs is checked against the scalar walk on it. Not for concurrent use with renders.
+class ScopedDenseWalkSimd {
+public:
+    explicit ScopedDenseWalkSimd(DenseWalkSimd form);
+    ~ScopedDenseWalkSimd();
+    ScopedDenseWalkSimd(const ScopedDenseWalkSimd&) = delete;
+    ScopedDenseWalkSimd& operator=(const ScopedDenseWalkSimd&) = delete;
+
+private:
+    DenseWalkSimd previous_;
+};
 
 // From this many bytes of stored values up, the AVX-512 form prefetches every lane's voxels
 // some steps ahead (DenseWalkAvx512.cpp). Measured on crops of the GE head (docs/drr.md,
