@@ -1,5 +1,6 @@
 #pragma once
-// Setting up the dense walk's rays eight at a time, in AVX-512 lanes (DenseRaySetupAvx512.cpp).
+// Setting up the dense walk's rays eight at a time, in vector lanes (DenseRaySetupAvx512.cpp,
+// DenseRaySetupAvx2.cpp).
 //
 // Why: once the walk itself ran without the gather instruction (DenseWalk.h), the scalar set-up
 // of each ray (1/d, slab clipping, the first voxel by floor, the first crossings) was a quarter
@@ -20,13 +21,27 @@ namespace fm {
 // ~1e-200 mm, and it keeps 1/d finite so that no 0 * inf = NaN can appear.
 inline constexpr double kRayParallelLimit = 1e-200;
 
+namespace detail {
+unsigned setupDenseRays8Avx512(const DrrVolume& v, const glm::dvec3& q0, const glm::dvec3* q1,
+                               int count, const BrickDepthTiles* tiles, const int* cols, int row,
+                               DenseRay* out);
+unsigned setupDenseRays8Avx2(const DrrVolume& v, const glm::dvec3& q0, const glm::dvec3* q1,
+                             int count, const BrickDepthTiles* tiles, const int* cols, int row,
+                             DenseRay* out);
+}  // namespace detail
+
 // Rays from the source q0 to the pixel centres q1[0..count) (count <= 8), all in the volume's
 // local frame (mm, box [0, dims * spacing)). Each ray is clipped to the box, then to its pixel's
 // tile of `tiles` (if given; pixel (cols[i], row)), and set up for walkDense. Returns a bit mask
-// of the rays that meet something; out[i] is set for those only.
-// Call only when denseWalkSimd() is DenseWalkSimd::Avx512.
-unsigned setupDenseRays8(const DrrVolume& v, const glm::dvec3& q0, const glm::dvec3* q1,
-                         int count, const BrickDepthTiles* tiles, const int* cols, int row,
-                         DenseRay* out);
+// of the rays that meet something; out[i] is set for those only. In the lanes of the walk's
+// form (denseWalkSimd(): AVX-512 eight at a time, AVX2 four); call only when
+// denseWalkSimdAvailable().
+inline unsigned setupDenseRays8(const DrrVolume& v, const glm::dvec3& q0, const glm::dvec3* q1,
+                                int count, const BrickDepthTiles* tiles, const int* cols, int row,
+                                DenseRay* out) {
+    return denseWalkSimd() == DenseWalkSimd::Avx512
+               ? detail::setupDenseRays8Avx512(v, q0, q1, count, tiles, cols, row, out)
+               : detail::setupDenseRays8Avx2(v, q0, q1, count, tiles, cols, row, out);
+}
 
 }  // namespace fm

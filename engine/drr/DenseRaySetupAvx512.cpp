@@ -36,7 +36,9 @@ FM_AVX512 inline __m512d absPd(__m512d x) {
 
 }  // namespace
 
-FM_AVX512 unsigned setupDenseRays8(const DrrVolume& v, const glm::dvec3& q0,
+namespace detail {
+
+FM_AVX512 unsigned setupDenseRays8Avx512(const DrrVolume& v, const glm::dvec3& q0,
                                    const glm::dvec3* q1, int count, const BrickDepthTiles* tiles,
                                    const int* cols, int row, DenseRay* out) {
     alignas(64) double in[3][8];
@@ -147,15 +149,16 @@ FM_AVX512 unsigned setupDenseRays8(const DrrVolume& v, const glm::dvec3& q0,
     return valid;
 }
 
+}  // namespace detail
 }  // namespace fm
 
 #else
 
-namespace fm {
-unsigned setupDenseRays8(const DrrVolume&, const glm::dvec3&, const glm::dvec3*, int,
+namespace fm::detail {
+unsigned setupDenseRays8Avx512(const DrrVolume&, const glm::dvec3&, const glm::dvec3*, int,
                          const BrickDepthTiles*, const int*, int, DenseRay*) {
     return 0;  // never called: denseWalkSimd() is never Avx512 here
 }
-}  // namespace fm
+}  // namespace fm::detail
 
 #endif

@@ -383,7 +383,7 @@ void renderInto(const DrrVolume& v, const ProjectionGeometry& g, const DrrRender
         dense && options.skipEmptySpace
             ? brickDepthTiles(v, g, range.col0, range.col1, range.row0, range.row1)
             : std::nullopt;
-    const bool simdSetup = denseWalkSimd() == DenseWalkSimd::Avx512;
+    const bool simdSetup = denseWalkSimdAvailable();
     auto denseBody = [&](int rowBegin, int rowEnd) {
         DenseRay rays[16];
         int cols[16];
@@ -398,7 +398,7 @@ void renderInto(const DrrVolume& v, const ProjectionGeometry& g, const DrrRender
                 for (int i = 0; i < n; ++i) setPixel(cols[i], row, sums[i], lengths[i]);
                 n = 0;
             };
-            // Eight pixels at a time: set up in lanes where the walk runs in AVX-512
+            // Eight pixels at a time: set up in lanes where the walk runs in lanes
             // (DenseRaySetup.h), else one by one; the same rays either way.
             glm::dvec3 q1[8];
             int lane[8];
