@@ -205,15 +205,20 @@ void runTrack(const TrackArgs& a) {
                          b.done.size(), b.name.c_str(), b.out.string().c_str(), b.todo);
         bones.push_back(std::move(b));
     }
-    if (!anyFound && !a.findSpace.empty())
-        throw fm::Error("--find-space applies to a bone with no keyframe; every --bone has one");
+    if (!anyFound && !a.findSpace.empty() && settings.onLost != fm::OnLost::Find)
+        throw fm::Error("--find-space applies to a bone with no keyframe or to --on-lost find; every --bone has a "
+                        "keyframe");
     // Each bone is tracked alone, as Autoscoper does: the other bones have no pose in this
     // frame yet (they sit at the identity), so they are hidden from its DRRs.
     std::vector<fm::Tracker> trackers;
-    for (const BoneRun& b : bones)
-        trackers.emplace_back(fm::sceneOfBoneAlone(scene, b.name), b.name,
-                              fm::trialFrameViews(scene, cameras),
-                              settings);
+    for (const BoneRun& b : bones) {
+        fm::TrackSettings boneSettings = settings;
+        if (settings.onLost == fm::OnLost::Find)
+            boneSettings.findFrame =
+                fm::trialBoneFinder(scene, b.name, cameras, a.findSpace, "--find-space", a.seed, threads);
+        trackers.emplace_back(fm::sceneOfBoneAlone(scene, b.name), b.name, fm::trialFrameViews(scene, cameras),
+                              boneSettings);
+    }
 
     const std::size_t frameBytes = fm::frameRecordBytes(scene.cameras.size());
     const std::size_t recordBytes = sizeof(std::int32_t) + longest * frameBytes;
@@ -294,6 +299,9 @@ void runTrack(const TrackArgs& a) {
                                      ? r.note.c_str()
                                      : fm::toString(r.status),
                                  interactive ? "        " : "\n");
+                    if (r.found)
+                        std::fprintf(stderr, "%s%sframe %d not ok, then searched for with no start: %s\n", interactive ? "\n" : "",
+                                     who.c_str(), r.frame, r.found->c_str());
                     if (r.status == fm::FrameRecord::Status::BadFrame ||
                         r.status == fm::FrameRecord::Status::NoStart)
                         std::fprintf(stderr, "%s%sframe %d skipped: %s\n", interactive ? "\n" : "",
@@ -404,9 +412,11 @@ FM_REGISTER_COMMAND("track", 45, [](CLI::App& app) {
     cmd->add_option("--cameras", a->cameras, "Cameras to use, e.g. 1 or 1,2 (default: all)");
     cmd->add_option("--on-lost", a->onLost,
                     "A frame whose verdict is lost: search (again, wider, then go on without it), "
-                    "stop (the run ends there) or continue (go on without it). Doubtful frames are "
-                    "always searched again once")
-        ->check(fm::cli::oneOf({"stop", "search", "continue"}, "--on-lost"))
+                    "stop (the run ends there), continue (go on without it) or find (search again; a "
+                    "frame still not ok, lost or doubtful, is then found with no start as a bone with "
+                    "no keyframe (--find-space) and registered from there, the better answer kept: "
+                    "for frames far apart). Doubtful frames are always searched again once")
+        ->check(fm::cli::oneOf({"stop", "search", "continue", "find"}, "--on-lost"))
         ->capture_default_str();
     cmd->add_flag("--uncertainty,!--no-uncertainty", a->uncertainty,
                   "Per frame, how well the images fix each coordinate (73 evaluations at full "

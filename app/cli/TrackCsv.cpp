@@ -41,6 +41,7 @@ std::string trackCsvRow(const FrameRecord& r, const std::string& bone) {
     row += "," + std::to_string(r.searches);
     std::snprintf(buf, sizeof buf, ",%d,%.1f,", r.evaluations, 1000.0 * r.seconds);
     std::string note = r.verdictText.empty() ? r.note : r.note + "; " + r.verdictText;
+    if (r.found) note += "; not ok, then searched for with no start: " + *r.found;
     for (char& ch : note)
         if (ch == ',' || ch == '\n') ch = ';';
     return row + buf + note + "\n";

@@ -34,6 +34,13 @@ expect_error "mc3 has no keyframe and the pose found in frame 0 is " \
     "$FM" register --trial "$TRIAL" --bone mc3 --frame 0 --find-space tilt=0,roll=0
 expect_error "find-space applies to a bone with no start; radius has one at frame 0" \
     "$FM" register --trial "$TRIAL" --bone radius --frame 0 --find-space tilt=0,roll=0
+# --on-lost find: a frame still not ok is looked for as mc3 is above, within --find-space; a bad one is
+# refused before any frame is tracked, and --find-space applies though every bone has a keyframe.
+expect_error "find-space" \
+    "$FM" track --trial "$TRIAL" --bone radius --frames 0:1 --out "$T/x.tra" --on-lost find --find-space tilt=abc
+expect_error "find-space applies to a bone with no keyframe or to --on-lost find" \
+    "$FM" track --trial "$TRIAL" --bone radius --frames 0:1 --out "$T/x.tra" --find-space tilt=20
+expect_error "on-lost" "$FM" track --trial "$TRIAL" --bone radius --out "$T/x.tra" --on-lost refind
 printf 'Version 1.1\nmayaCam_csv nothere.txt\nCameraRootDir .\nVolumeFile v.tif\nVoxelSize 1 1 1\n' > "$T/bad.cfg"
 expect_error "nothere.txt" "$FM" track --trial "$T/bad.cfg" --bone v --out "$T/x.tra"
 

@@ -157,6 +157,18 @@ FoundKeyframe findTrialBone(const TrialScene& scene, const std::string& bone, co
     return findKeyframe(alone, bone, trialFrameViews(scene, cameras), frame, settings, find, biplane, {}, stop);
 }
 
+FindFrame trialBoneFinder(const TrialScene& scene, const std::string& bone, const std::vector<std::size_t>& cameras,
+                          const std::string& findSpace, const char* option, std::uint64_t seed, int threads) {
+    if (!findSpace.empty()) parseFindSpace(findSpace, option);  // refused now, not when a frame is lost
+    return [&scene, bone, cameras, findSpace, option, seed, threads](int frame, const std::atomic<bool>* stop) {
+        const FoundKeyframe k = findTrialBone(scene, bone, cameras, frame, findSpace, option, seed, threads, stop);
+        FrameFind out;
+        if (k.verdict == AnswerVerdict::Ok) out.pose = k.pose;
+        out.verdictText = k.verdictText;
+        return out;
+    };
+}
+
 void refuseUnlessOk(const FoundKeyframe& found, const std::string& bone, const char* startHint, const char* spaceOption) {
     if (found.verdict != AnswerVerdict::Ok)
         throw Error(bone + " has no keyframe and the pose found in frame " + std::to_string(found.frame) + " is " +

@@ -71,6 +71,12 @@ FoundKeyframe findTrialBone(const TrialScene& scene, const std::string& bone, co
                             int frame, const std::string& findSpace, const char* option, std::uint64_t seed,
                             int threads, const std::atomic<bool>* stop = nullptr);
 
+// findTrialBone as a tracker's way to find a lost frame (TrackSettings::findFrame, OnLost::Find):
+// the pose when the find is ok. `findSpace` is checked here, before any frame is tracked; `scene`
+// must outlive the finder.
+FindFrame trialBoneFinder(const TrialScene& scene, const std::string& bone, const std::vector<std::size_t>& cameras,
+                          const std::string& findSpace, const char* option, std::uint64_t seed, int threads);
+
 // Throws fm::Error unless `found` is ok, naming the bone, the frame, the verdict and what the user
 // can give instead (`startHint`: "a keyframe (--start)"; `spaceOption`: "--find-space"). A pose that
 // may be wrong is no start: the frames tracked from it would be judged against it and called ok (a

@@ -33,7 +33,7 @@ struct Fixed {  // the part every record has, whatever the camera count
     double boneSd[6] = {};
     double ratio = 0.0;
     std::int32_t verdictLength = 0;
-    std::int32_t unused = 0;
+    std::int32_t foundLength = -1;  // -1: the frame was not searched for with no start
 };
 
 constexpr int kLastStatus = static_cast<int>(FrameRecord::Status::Stopped);
@@ -42,7 +42,7 @@ constexpr int kLastVerdict = static_cast<int>(AnswerVerdict::Lost);
 }  // namespace
 
 std::size_t frameRecordBytes(std::size_t cameras) {
-    return sizeof(Fixed) + cameras * sizeof(double) + kFrameNoteBytes + kFrameVerdictBytes;
+    return sizeof(Fixed) + cameras * sizeof(double) + kFrameNoteBytes + kFrameVerdictBytes + kFrameFoundBytes;
 }
 
 void encodeFrameRecord(const FrameRecord& r, std::span<std::byte> out) {
@@ -81,6 +81,7 @@ void encodeFrameRecord(const FrameRecord& r, std::span<std::byte> out) {
     }
     f.verdictLength = static_cast<std::int32_t>(std::min(r.verdictText.size(), kFrameVerdictBytes - 1));
     f.noteLength = static_cast<std::int32_t>(std::min(r.note.size(), kFrameNoteBytes - 1));
+    if (r.found) f.foundLength = static_cast<std::int32_t>(std::min(r.found->size(), kFrameFoundBytes - 1));
     std::fill(out.begin(), out.end(), std::byte{0});
     std::memcpy(out.data(), &f, sizeof f);
     std::memcpy(out.data() + sizeof f, r.viewCost.data(), r.viewCost.size() * sizeof(double));
@@ -88,6 +89,9 @@ void encodeFrameRecord(const FrameRecord& r, std::span<std::byte> out) {
                 static_cast<std::size_t>(f.noteLength));
     std::memcpy(out.data() + sizeof f + r.viewCost.size() * sizeof(double) + kFrameNoteBytes, r.verdictText.data(),
                 static_cast<std::size_t>(f.verdictLength));
+    if (r.found)
+        std::memcpy(out.data() + sizeof f + r.viewCost.size() * sizeof(double) + kFrameNoteBytes + kFrameVerdictBytes,
+                    r.found->data(), static_cast<std::size_t>(f.foundLength));
 }
 
 FrameRecord decodeFrameRecord(std::span<const std::byte> in, std::size_t cameras) {
@@ -103,6 +107,8 @@ FrameRecord decodeFrameRecord(std::span<const std::byte> in, std::size_t cameras
         throw Error("frame record: verdict " + std::to_string(f.verdict) + " is not a verdict");
     if (f.verdictLength < 0 || static_cast<std::size_t>(f.verdictLength) >= kFrameVerdictBytes)
         throw Error("frame record: verdict length " + std::to_string(f.verdictLength) + " out of range");
+    if (f.foundLength < -1 || (f.foundLength >= 0 && static_cast<std::size_t>(f.foundLength) >= kFrameFoundBytes))
+        throw Error("frame record: found length " + std::to_string(f.foundLength) + " out of range");
     if (f.noteLength < 0 || static_cast<std::size_t>(f.noteLength) >= kFrameNoteBytes)
         throw Error("frame record: note length " + std::to_string(f.noteLength) + " out of range");
     if (f.camerasUsed < 0 || static_cast<std::size_t>(f.camerasUsed) > cameras)
@@ -134,6 +140,7 @@ FrameRecord decodeFrameRecord(std::span<const std::byte> in, std::size_t cameras
     r.note.assign(note, static_cast<std::size_t>(f.noteLength));
     r.verdict = static_cast<AnswerVerdict>(f.verdict);
     r.verdictText.assign(note + kFrameNoteBytes, static_cast<std::size_t>(f.verdictLength));
+    if (f.foundLength >= 0) r.found.emplace(note + kFrameNoteBytes + kFrameVerdictBytes, static_cast<std::size_t>(f.foundLength));
     r.searches = f.searches;
     if (f.hasUncertainty) {
         PoseUncertainty u;

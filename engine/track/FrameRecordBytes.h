@@ -2,8 +2,9 @@
 // A tracked frame's record (track/Tracker.h FrameRecord) as a fixed number of bytes, for the
 // fixed-size records a distributed run gathers to rank 0 (distributed/JobRunner.h). The size
 // depends only on the trial's camera count; doubles are copied bit for bit, so a pose decoded
-// on rank 0 is the one the tracking rank found. The note and the verdict's text are cut
-// to kFrameNoteBytes - 1 and kFrameVerdictBytes - 1 bytes (the uncertainty's Hessian is not sent).
+// on rank 0 is the one the tracking rank found. The note, the verdict's text and the find's line
+// are cut to kFrameNoteBytes - 1, kFrameVerdictBytes - 1 and kFrameFoundBytes - 1 bytes (the
+// uncertainty's Hessian is not sent).
 #include <cstddef>
 #include <span>
 
@@ -13,6 +14,7 @@ namespace fm {
 
 inline constexpr std::size_t kFrameNoteBytes = 200;
 inline constexpr std::size_t kFrameVerdictBytes = 300;  // the verdict's text, cut likewise
+inline constexpr std::size_t kFrameFoundBytes = 300;    // the find's verdict line (OnLost::Find)
 
 std::size_t frameRecordBytes(std::size_t cameras);
 

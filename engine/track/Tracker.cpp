@@ -63,6 +63,9 @@ Tracker::Tracker(Scene scene, std::string bone, FrameViews frames, TrackSettings
         settings_.registration.similarity = defaultSimilarityFor(*scene_.objects[bone_].model);
     if (scene_.cameras.empty()) throw Error("track: the scene has no camera");
     if (!frames_) throw Error("track: no frame source");
+    if ((settings_.onLost == OnLost::Find) != static_cast<bool>(settings_.findFrame))
+        throw Error(settings_.findFrame ? "track: a way to find a lost frame is given but lost frames are not found"
+                                        : "track: lost frames are to be found but there is no way to find them");
     if (!(settings_.minInViewFraction > 0.0 && settings_.minInViewFraction <= 1.0))
         throw Error("track: the in-view fraction must be in (0, 1]");
 }
@@ -249,6 +252,7 @@ const char* toString(OnLost onLost) {
     switch (onLost) {
         case OnLost::Stop: return "stop";
         case OnLost::Continue: return "continue";
+        case OnLost::Find: return "find";
         default: return "search";
     }
 }
@@ -257,7 +261,8 @@ OnLost parseOnLost(const std::string& text, const char* option) {
     if (text == "stop") return OnLost::Stop;
     if (text == "search") return OnLost::Search;
     if (text == "continue") return OnLost::Continue;
-    throw Error(std::string(option) + " must be stop, search or continue, not '" + text + "'");
+    if (text == "find") return OnLost::Find;
+    throw Error(std::string(option) + " must be stop, search, continue or find, not '" + text + "'");
 }
 
 namespace {
@@ -271,6 +276,30 @@ bool better(const FrameRecord& a, const FrameRecord& b) {
 }
 
 }  // namespace
+
+FrameRecord Tracker::findAndTrack(const FrameViews& frames, int frame, FrameRecord searched,
+                                  const std::atomic<bool>* stop, FrameContext context) const {
+    const auto began = std::chrono::steady_clock::now();
+    const FrameFind find = settings_.findFrame(frame, stop);
+    FrameRecord record = searched;
+    int evaluations = 0;  // the registration's from the found pose
+    EvaluationProfile profile;
+    if (find.pose && !(stop && stop->load())) {
+        context.startIsKeyframe = true;
+        FrameRecord fromFind = trackFrameWith(settings_, frames, frame, *find.pose, stop, {}, context);
+        evaluations = fromFind.evaluations;
+        profile = fromFind.profile;
+        if (better(fromFind, searched)) record = std::move(fromFind);
+    }
+    // The frame's work: the searches before, the find, the registration from the find.
+    record.evaluations = searched.evaluations + evaluations;
+    record.profile = searched.profile;
+    record.profile += profile;
+    record.searches = searched.searches + (find.pose ? 1 : 0);
+    record.seconds = searched.seconds + std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
+    record.found = find.verdictText;
+    return record;
+}
 
 void Tracker::run(const std::vector<int>& frames, const std::map<int, RigidTransform>& keyframes,
                   std::map<int, RigidTransform>& tracked,
@@ -308,10 +337,11 @@ void Tracker::run(const std::vector<int>& frames, const std::map<int, RigidTrans
         } else {
             context.startIsKeyframe = keyframes.count(frame) != 0;
             record = trackFrameWith(settings_, once, frame, *start, stop, {}, context);
-            // Not ok: searched once more, wider (a lost one only when onLost says search).
+            // Not ok: searched once more, wider (a lost one only when onLost says search or find).
+            const bool searchLost = settings_.onLost == OnLost::Search || settings_.onLost == OnLost::Find;
             const bool again = record.status == FrameRecord::Status::Tracked &&
                                (record.verdict == AnswerVerdict::Doubtful ||
-                                (record.verdict == AnswerVerdict::Lost && settings_.onLost == OnLost::Search));
+                                (record.verdict == AnswerVerdict::Lost && searchLost));
             if (again && !(stop && stop->load())) {
                 FrameRecord second = trackFrameWith(wider, once, frame, *start, stop, {}, context);
                 second.searches = 2;
@@ -327,6 +357,12 @@ void Tracker::run(const std::vector<int>& frames, const std::map<int, RigidTrans
                     record.profile = second.profile;
                 }
             }
+            // Find: still not ok, the bone found in this frame with no start and registered from
+            // there as from a keyframe (its similarity at the found pose is the reference); the
+            // better of the two records is the frame's.
+            if (record.status == FrameRecord::Status::Tracked && record.verdict != AnswerVerdict::Ok &&
+                settings_.onLost == OnLost::Find && !(stop && stop->load()))
+                record = findAndTrack(once, frame, std::move(record), stop, context);
         }
         const bool lost = record.verdict == AnswerVerdict::Lost;
         if (record.answered()) tracked[frame] = *record.worldFromBone;

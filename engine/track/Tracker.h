@@ -19,8 +19,9 @@
 //      the answer stays by it); with neither, a second search from a start drawn around the
 //      start must end at the same pose (within 1 mm and 2 deg)
 // run() searches a frame that is not ok once more, wider (TrackSettings::researchScale), and
-// on a lost one stops, searches again or goes on as TrackSettings::onLost says; a lost pose is
-// never a later frame's start.
+// on a lost one stops, searches again, goes on, or (a frame still not ok) finds the bone in that
+// frame with no start and registers it from there, as TrackSettings::onLost says; a lost pose is never a later
+// frame's start.
 // Frames inside a run stay sequential: each one starts from the poses before it.
 // Deterministic: frame k's seed is a function of (seed, k) only, so a resumed run gives the
 // same poses as an uninterrupted one.
@@ -43,11 +44,22 @@ namespace fm {
 // in each view). Throws fm::Error for a frame it cannot read: the tracker reports and skips it.
 using FrameViews = std::function<std::vector<RegistrationView>(int frame)>;
 
-// What a run does with a frame whose verdict is lost.
-enum class OnLost { Stop, Search, Continue };
-const char* toString(OnLost onLost);  // "stop", "search", "continue"
+// What a run does with a frame whose verdict is lost: Find also searches it again (as Search),
+// and then a frame still not ok (lost, or doubtful: a jump between sparse frames may leave either)
+// is found with no start (TrackSettings::findFrame) and registered from the found pose; the
+// better record is kept.
+enum class OnLost { Stop, Search, Continue, Find };
+const char* toString(OnLost onLost);  // "stop", "search", "continue", "find"
 // fm::Error naming `option` for anything else.
 OnLost parseOnLost(const std::string& text, const char* option);
+
+// A bone found in one frame with no start (issue 29; the caller's find, e.g. findTrialBone): the
+// pose when the find's verdict is ok, else none; its verdict line either way.
+struct FrameFind {
+    std::optional<RigidTransform> pose;
+    std::string verdictText;
+};
+using FindFrame = std::function<FrameFind(int frame, const std::atomic<bool>* stop)>;
 
 struct TrackSettings {
     RegistrationSettings registration = defaultTrackingRegistration();
@@ -80,6 +92,8 @@ struct TrackSettings {
     // Lost frames only as onLost says (Search: the default).
     double researchScale = 2.0;
     OnLost onLost = OnLost::Search;
+    // OnLost::Find's find (required then, refused otherwise: the Tracker's constructor throws).
+    FindFrame findFrame;
 
     // Local search around the start: Autoscoper's PSO box is +-3 mm / +-3 deg; CMA-ES global
     // search at 1/4 resolution, Nelder-Mead polish at 1/4 and 1/2, cropped to the bone (then
@@ -105,6 +119,10 @@ struct FrameRecord {
     // The uncertainty along the bone's own axes (its volume's x, y, z; mm and deg), when measured.
     SearchPoint boneFrameSd{};
     int searches = 0;                            // 2 when searched again
+    // OnLost::Find: the frame was not ok after its searches and the bone was searched for with no
+    // start; the find's verdict line (the record is the registration from its pose when that
+    // one is better).
+    std::optional<std::string> found;
     // -cost summed over the cameras it used (0 when none): what two records of a frame compare by.
     double similarity() const;
     // A pose to keep: tracked and not lost (a lost pose is neither written nor a later start).
@@ -126,7 +144,8 @@ const char* toString(FrameRecord::Status status);
 class Tracker {
   public:
     // `bone` names the scene object to track; the others stay where they are (and are seen).
-    // Throws fm::Error if there is no such object or no camera.
+    // Throws fm::Error if there is no such object or no camera, or when settings.findFrame is
+    // missing for OnLost::Find or given for another.
     Tracker(Scene scene, std::string bone, FrameViews frames, TrackSettings settings);
 
     // One frame from `start` (steps 2-4). `progress` (optional) is called as the registration
@@ -158,6 +177,10 @@ class Tracker {
     FrameRecord trackFrameWith(const TrackSettings& settings, const FrameViews& frames, int frame,
                                const RigidTransform& start, const std::atomic<bool>* stop,
                                const RegistrationCallback& progress, const FrameContext& context) const;
+    // OnLost::Find on a frame not ok after its searches: the find, then the registration from its
+    // pose; the better of that and `searched`, with the find's line.
+    FrameRecord findAndTrack(const FrameViews& frames, int frame, FrameRecord searched, const std::atomic<bool>* stop,
+                             FrameContext context) const;
     Scene scene_;
     std::size_t bone_ = 0;
     FrameViews frames_;

@@ -34,6 +34,14 @@ pb::dict recordDict(const FrameRecord& r, const TrialScene& scene, const std::st
     // How sure it is (track/Tracker.h step 5): never ok without something that confirms it.
     d["verdict"] = r.status == FrameRecord::Status::Tracked ? toString(r.verdict) : "lost";
     d["verdict_text"] = r.verdictText;
+    // on_lost="find": the frame was lost and searched for with no start (the find's verdict line).
+    if (r.found) {
+        pb::dict f;
+        f["verdict_text"] = *r.found;
+        d["found"] = f;
+    } else {
+        d["found"] = pb::none();
+    }
     d["uncertainty"] = r.evidence.uncertainty ? pb::object(uncertaintyDict(*r.evidence.uncertainty)) : pb::none();
     d["similarity_ratio"] = r.evidence.similarityRatio ? pb::cast(*r.evidence.similarityRatio) : pb::none();
     if (r.evidence.uncertainty) {  // the same spreads along the bone's axes
@@ -130,7 +138,9 @@ void bindTrack(pb::module_& m) {
             if (!findSpace.empty() && std::none_of(bones.begin(), bones.end(), [&](const std::string& b) {
                     return boneKeyframes(scene, b, startTra, start).empty();
                 }))
-                throw Error("find_space applies to a bone with no keyframe; every bone has one");
+                if (settings.onLost != OnLost::Find)
+                    throw Error("find_space applies to a bone with no keyframe or to on_lost='find'; every bone has "
+                                "a keyframe");
             for (const std::string& bone : bones) {
                 std::map<int, RigidTransform> keyframes = boneKeyframes(scene, bone, startTra, start);
                 // No keyframe: the pose found in the first frame, as the CLI finds it (refused
@@ -157,8 +167,11 @@ void bindTrack(pb::module_& m) {
                         ? out
                         : (std::filesystem::path(out).parent_path() /
                            (std::filesystem::path(out).stem().string() + "_" + bone + ".tra")).string();
-                const Tracker tracker(sceneOfBoneAlone(scene, bone), bone,
-                                      trialFrameViews(scene, cameras), settings);
+                TrackSettings boneSettings = settings;
+                if (settings.onLost == OnLost::Find)  // lost frames found as the first one is
+                    boneSettings.findFrame = trialBoneFinder(scene, bone, cameras, findSpace, "find_space", seed, threads);
+                const Tracker tracker(sceneOfBoneAlone(scene, bone), bone, trialFrameViews(scene, cameras),
+                                      boneSettings);
                 TraFile tra;
                 tra.frames.assign(static_cast<std::size_t>(scene.frameCount), {std::nullopt});
                 std::vector<FrameRecord> records;
@@ -233,7 +246,9 @@ Tracks a bone (or a list of bones) through a trial, as `fluoromatch track --tria
 does, with its options as keyword arguments: frames "A:B[:STEP]", reverse, init ("previous",
 "extrapolate", "keyframes"), start (a .tra of start poses / keyframes), out (a .tra, rewritten
 atomically after every frame; with several bones NAME_bone.tra), seed, threads, cameras
-(1-based list), on_lost ("search", "stop", "continue"), uncertainty, and the radiograph
+(1-based list), on_lost ("search", "stop", "continue", "find": a frame still not ok after its
+searches is found with no start, as a bone with no keyframe, and registered from there, the
+better answer kept), uncertainty, and the radiograph
 keywords of the CLI's flags over every camera's preparation (invert, log, i0, exclude_below,
 erode, roi: each given one replaces its part of what the trial says, or of the default for its
 frames: 8-bit inverted, deeper log). The same poses as the CLI for the same arguments.
@@ -245,6 +260,7 @@ Returns (for one bone) a dict: poses (frames, 4, 4) as the .tra holds them (Auto
 worldFromVolume; NaN where not tracked or lost), frames (one dict per tracked frame: frame,
 status, note, verdict ("ok", "doubtful", "lost"), verdict_text, uncertainty (per coordinate of
 the first taking camera's frame; uncertainty_bone along the bone's axes), similarity_ratio (against the last good frames), searches,
+found (None, or for a frame not ok and then searched for with no start: the find's verdict_text),
 pose, object_pose, costs per camera, cameras_used, evaluations, seconds), written, stopped,
 preparation (per camera: camera, values, i0 (NaN unless log), exclude_below, erode, roi,
 source: "the trial's", "default for 8-bit frames: ...", text: as the CLI prints it), found (None,

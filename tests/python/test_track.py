@@ -110,7 +110,14 @@ def test_a_find_that_is_not_sure_is_refused_and_find_space_needs_a_bone_without_
         # The knee phantom's femur in the default rig: a rival basin nearly as good (doubtful): no start.
         with pytest.raises(fm.Error, match="femur has no keyframe and the pose found in frame 0 is doubtful"):
             fm.track(str(out / "trial.json"), "femur", threads=2, find_space="tilt=20")
-    with pytest.raises(fm.Error, match="find_space applies to a bone with no keyframe"):
+    with pytest.raises(fm.Error, match="find_space applies to a bone with no keyframe or to on_lost='find'"):
         fm.track(str(out / "trial.json"), "femur", start=str(out / "femur_start.tra"), find_space="tilt=20")
     with pytest.raises(fm.Error, match="find_space"):
         fm.track(str(out / "trial.json"), "femur", find_space="tilt=abc")
+    # on_lost="find": frames not ok are looked for within find_space, which is checked before any
+    # frame is tracked though the bone has a keyframe.
+    with pytest.raises(fm.Error, match="find_space tilt: 'abc' is not a number"):
+        fm.track(str(out / "trial.json"), "femur", start=str(out / "femur_start.tra"), on_lost="find",
+                 find_space="tilt=abc")
+    with pytest.raises(fm.Error, match="on_lost must be stop, search, continue or find"):
+        fm.track(str(out / "trial.json"), "femur", start=str(out / "femur_start.tra"), on_lost="refind")

@@ -38,6 +38,7 @@ FrameRecord sample() {
     r.evidence.uncertainty = u;
     r.boneFrameSd = {0.06, 0.05, 0.3, std::numeric_limits<double>::infinity(), 0.25, 0.125};
     r.evidence.similarityRatio = 0.8712345678;
+    r.found = "ok: the best answer of another basin scores 0.85 of it (below 0.90)";
     return r;
 }
 
@@ -80,6 +81,7 @@ TEST(FrameRecordBytes, RoundTripIsExact) {
     EXPECT_FALSE(d.evidence.uncertainty->bounded);
     EXPECT_EQ(d.evidence.uncertainty->evaluations, 73);
     EXPECT_EQ(d.evidence.similarityRatio, r.evidence.similarityRatio);
+    EXPECT_EQ(d.found, r.found);  // found with no start after it was lost (OnLost::Find)
 }
 
 TEST(FrameRecordBytes, NoPoseStaysNoPoseAndLongNotesAreCut) {
@@ -96,9 +98,15 @@ TEST(FrameRecordBytes, NoPoseStaysNoPoseAndLongNotesAreCut) {
     EXPECT_EQ(d.note, std::string(kFrameNoteBytes - 1, 'x'));
     EXPECT_FALSE(d.evidence.uncertainty);
     EXPECT_FALSE(d.evidence.similarityRatio);
+    EXPECT_FALSE(d.found);  // not searched for: none, not an empty line
     r.verdictText = std::string(900, 'v');
+    r.found = "";
     encodeFrameRecord(r, bytes);
     EXPECT_EQ(decodeFrameRecord(bytes, 3).verdictText, std::string(kFrameVerdictBytes - 1, 'v'));
+    EXPECT_EQ(decodeFrameRecord(bytes, 3).found, std::string());
+    r.found = std::string(700, 'f');
+    encodeFrameRecord(r, bytes);
+    EXPECT_EQ(decodeFrameRecord(bytes, 3).found, std::string(kFrameFoundBytes - 1, 'f'));
 }
 
 TEST(FrameRecordBytes, RefusesWrongSizesAndBytesNoEncoderWrote) {
