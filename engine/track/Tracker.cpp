@@ -359,9 +359,10 @@ void Tracker::run(const std::vector<int>& frames, const std::map<int, RigidTrans
             }
             // Find: still not ok, the bone found in this frame with no start and registered from
             // there as from a keyframe (its similarity at the found pose is the reference); the
-            // better of the two records is the frame's.
+            // better of the two records is the frame's. Not in a keyframe's own frame: its start is
+            // the user's pose, or a find's (the same find again would give the same answer).
             if (record.status == FrameRecord::Status::Tracked && record.verdict != AnswerVerdict::Ok &&
-                settings_.onLost == OnLost::Find && !(stop && stop->load()))
+                settings_.onLost == OnLost::Find && !context.startIsKeyframe && !(stop && stop->load()))
                 record = findAndTrack(once, frame, std::move(record), stop, context);
         }
         const bool lost = record.verdict == AnswerVerdict::Lost;

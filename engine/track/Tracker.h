@@ -47,7 +47,7 @@ using FrameViews = std::function<std::vector<RegistrationView>(int frame)>;
 // What a run does with a frame whose verdict is lost: Find also searches it again (as Search),
 // and then a frame still not ok (lost, or doubtful: a jump between sparse frames may leave either)
 // is found with no start (TrackSettings::findFrame) and registered from the found pose; the
-// better record is kept.
+// better record is kept (not in a keyframe's frame: its start is the user's or a find's pose).
 enum class OnLost { Stop, Search, Continue, Find };
 const char* toString(OnLost onLost);  // "stop", "search", "continue", "find"
 // fm::Error naming `option` for anything else.

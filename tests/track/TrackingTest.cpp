@@ -219,7 +219,8 @@ TEST(Tracking, VerdictsJudgeEveryFrameAndALostFrameStopsOrIsSearchedAgainOrSkipp
 // With OnLost::Find the tracker then asks its finder (here a stand-in that answers 1 mm and 2 deg
 // from the truth, as a find does before registration) and registers the frame from that answer:
 // within the tracking bounds, ok. Frame 2 jumps again and the finder says its find is not ok: the
-// frame keeps its searched record, not answered, with the find's line.
+// frame keeps its searched record, not answered, with the find's line. A keyframe's frame is
+// never found again.
 TEST(Tracking, AFrameNotOkIsFoundWithNoStartAndRegisteredFromThere) {
     FM_REQUIRE_SHARED_DATA("autoscoper-bvr/Models/rad_dcm_cropped.tif");
     const Wrist w;
@@ -282,6 +283,16 @@ TEST(Tracking, AFrameNotOkIsFoundWithNoStartAndRegisteredFromThere) {
     EXPECT_EQ(*notFound.found, "doubtful: a stand-in find");
     EXPECT_EQ(notFound.searches, 2) << "no pose from the find: nothing registered from it";
     EXPECT_NE(notFound.verdict, fm::AnswerVerdict::Ok) << notFound.verdictText;
+
+    // A keyframe's own frame is not found again, however it ends: its start is the user's pose
+    // (here frame 0's, 33 mm from frame 1's truth) or a find's.
+    asked.clear();
+    records.clear();
+    tracker.run({1}, {{1, truth(0)}}, tracked, [&](const fm::FrameRecord& r) { records.push_back(r); });
+    ASSERT_EQ(records.size(), 1u);
+    EXPECT_NE(records[0].verdict, fm::AnswerVerdict::Ok) << records[0].verdictText;
+    EXPECT_TRUE(asked.empty());
+    EXPECT_FALSE(records[0].found);
 }
 
 TEST(Tracking, ContinuesOnOneCameraWhileTheBoneLeavesTheOther) {
