@@ -500,7 +500,7 @@ FM_REGISTER_COMMAND("drr", 20, [](CLI::App& app) {
         ->capture_default_str();
     cmd->add_option("--walk", a->walk,
                     "Exact voxel walk: auto (dense on CTs with little empty space, where the CPU "
-                    "has AVX-512), bricks (skip empty bricks, one ray at a time) or dense (every "
+                    "has AVX-512 or AVX2), bricks (skip empty bricks, one ray at a time) or dense (every "
                     "voxel, 16 rays at a time); the same image up to rounding")
         ->check(CLI::IsMember({"auto", "bricks", "dense"}))
         ->capture_default_str();

@@ -49,9 +49,9 @@ enum class DrrOutput {
 
 // How the exact trace walks the voxels; all give the same segments (docs/drr.md).
 enum class DrrExactWalk {
-    Auto,    // Dense where the volume has few empty/uniform bricks and the CPU has AVX-512
+    Auto,    // Dense where the volume has few empty/uniform bricks and the CPU has AVX-512 or AVX2
     Bricks,  // one ray at a time, skipping empty and uniform bricks
-    Dense,   // every voxel, 16 rays at once in AVX-512 lanes (scalar where the CPU has none)
+    Dense,   // every voxel, 16 rays at once in AVX-512 or AVX2 lanes (scalar where the CPU has neither)
 };
 
 struct DrrRenderOptions {
