@@ -4,7 +4,6 @@
 // i, operation for operation, so even signed zeros and ties come out the same.
 #include "drr/DenseRaySetup.h"
 
-#include <cmath>
 #include <cstdint>
 #include <limits>
 
@@ -51,9 +50,7 @@ FM_AVX2 unsigned setUpFour(const DrrVolume& v, const glm::dvec3& q0, const glm::
     }
 
     // clipRay against [0, boxExtent): alpha in [0, 1].
-    alignas(32) const std::int64_t lanes[4] = {0, 1, 2, 3};
-    __m256d valid = _mm256_castsi256_pd(_mm256_cmpgt_epi64(
-        _mm256_set1_epi64x(count), _mm256_load_si256(reinterpret_cast<const __m256i*>(lanes))));
+    __m256d valid = _mm256_castsi256_pd(_mm256_cmpgt_epi64(_mm256_set1_epi64x(count), _mm256_setr_epi64x(0, 1, 2, 3)));
     __m256d aMin = zero, aMax = one;
     for (int a = 0; a < 3; ++a) {
         // A parallel ray inside the slab keeps its range; one outside it meets nothing.
@@ -112,6 +109,8 @@ FM_AVX2 unsigned setUpFour(const DrrVolume& v, const glm::dvec3& q0, const glm::
     _mm256_store_pd(aEndOut, aEnd);
 
     const std::ptrdiff_t stride[3] = {1, v.paddedDims.x, std::ptrdiff_t(v.paddedDims.x) * v.paddedDims.y};
+    const int parallelBits[3] = {_mm256_movemask_pd(parallel[0]), _mm256_movemask_pd(parallel[1]),
+                                 _mm256_movemask_pd(parallel[2])};
     for (int i = 0; i < count; ++i) {
         if (!((hit >> i) & 1u)) continue;
         DenseRay& r = out[i];
@@ -121,8 +120,7 @@ FM_AVX2 unsigned setUpFour(const DrrVolume& v, const glm::dvec3& q0, const glm::
         int index[3];
         for (int a = 0; a < 3; ++a) {
             index[a] = static_cast<int>(cellOut[a][i]);
-            // Parallel: |d| below the limit, so not > 0 either way (as the AVX-512 form's mask).
-            const bool isParallel = std::abs(dOut[a][i]) < kRayParallelLimit;
+            const bool isParallel = (parallelBits[a] >> i) & 1;
             const int step = isParallel ? 0 : (dOut[a][i] > 0.0 ? 1 : -1);
             r.next[a] = next[a][i];
             r.delta[a] = delta[a][i];

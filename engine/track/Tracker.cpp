@@ -284,7 +284,8 @@ FrameRecord Tracker::findAndTrack(const FrameViews& frames, int frame, FrameReco
     FrameRecord record = searched;
     int evaluations = 0;  // the registration's from the found pose
     EvaluationProfile profile;
-    if (find.pose && !(stop && stop->load())) {
+    const bool registered = find.pose && !(stop && stop->load());
+    if (registered) {
         context.startIsKeyframe = true;
         FrameRecord fromFind = trackFrameWith(settings_, frames, frame, *find.pose, stop, {}, context);
         evaluations = fromFind.evaluations;
@@ -295,7 +296,7 @@ FrameRecord Tracker::findAndTrack(const FrameViews& frames, int frame, FrameReco
     record.evaluations = searched.evaluations + evaluations;
     record.profile = searched.profile;
     record.profile += profile;
-    record.searches = searched.searches + (find.pose ? 1 : 0);
+    record.searches = searched.searches + (registered ? 1 : 0);
     record.seconds = searched.seconds + std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
     record.found = find.verdictText;
     return record;

@@ -135,12 +135,12 @@ void bindTrack(pb::module_& m) {
 
             ProgressRelay relay(progress);
             pb::dict results;
-            if (!findSpace.empty() && std::none_of(bones.begin(), bones.end(), [&](const std::string& b) {
+            if (!findSpace.empty() && settings.onLost != OnLost::Find &&
+                std::none_of(bones.begin(), bones.end(), [&](const std::string& b) {
                     return boneKeyframes(scene, b, startTra, start).empty();
                 }))
-                if (settings.onLost != OnLost::Find)
-                    throw Error("find_space applies to a bone with no keyframe or to on_lost='find'; every bone has "
-                                "a keyframe");
+                throw Error("find_space applies to a bone with no keyframe or to on_lost='find'; every bone has a "
+                            "keyframe");
             for (const std::string& bone : bones) {
                 std::map<int, RigidTransform> keyframes = boneKeyframes(scene, bone, startTra, start);
                 // No keyframe: the pose found in the first frame, as the CLI finds it (refused
