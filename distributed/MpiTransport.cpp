@@ -1,7 +1,10 @@
 #include "MpiTransport.h"
 
+#include <algorithm>
+#include <chrono>
 #include <climits>
 #include <string>
+#include <thread>
 
 #include <mpi.h>
 
@@ -34,8 +37,19 @@ void MpiTransport::gather(std::span<const std::byte> mine, std::span<std::byte> 
         throw Error("MPI: one gather of " + std::to_string(mine.size()) +
                     " bytes exceeds the 2 GiB a single MPI count can hold");
     const int bytes = static_cast<int>(mine.size());
-    MPI_Gather(mine.data(), bytes, MPI_BYTE, rank_ == 0 ? all.data() : nullptr, bytes, MPI_BYTE,
-               0, MPI_COMM_WORLD);
+    MPI_Request request = MPI_REQUEST_NULL;
+    MPI_Igather(mine.data(), bytes, MPI_BYTE, rank_ == 0 ? all.data() : nullptr, bytes, MPI_BYTE,
+                0, MPI_COMM_WORLD, &request);
+    // Waited for by polling with pauses, not in MPI_Wait: Open MPI's blocking calls spin, so a rank
+    // whose jobs are done took a core from the ranks still working (and from their threads) on a
+    // host with fewer cores than ranks and threads. The pauses grow to 5 ms, next to jobs of seconds.
+    auto pause = std::chrono::microseconds(50);
+    for (int done = 0;;) {
+        MPI_Test(&request, &done, MPI_STATUS_IGNORE);
+        if (done) return;
+        std::this_thread::sleep_for(pause);
+        pause = std::min(2 * pause, std::chrono::microseconds(5000));
+    }
 }
 
 void MpiTransport::abortAll(int exitCode) {
