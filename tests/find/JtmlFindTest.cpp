@@ -10,7 +10,6 @@
 #include <gtest/gtest.h>
 
 #include "camera/CameraFile.h"
-#include "common/SanitizerBuild.h"
 #include "common/TestData.h"
 #include "find/FoundRegistration.h"
 #include "find/SeenPose.h"
@@ -40,23 +39,17 @@ const Implant kImplants[2] = {{"fem", "KR_right_7_fem.stl"}, {"tib", "KR_right_6
 
 std::filesystem::path dataDir() { return test::sharedDataDir() / "jtml-kneel-tka-fluoro"; }
 
-// Under the sanitizers (~5x slower) one frame (and the tray alone: the femoral component's 1/16
-// path runs there in python_test_register); FM_FIND_FRAMES=N overrides.
+// Release only (tests/find/extra.cmake); FM_FIND_FRAMES=N runs the first N frames.
 int frameCount() {
     if (const char* env = std::getenv("FM_FIND_FRAMES")) return std::clamp(std::atoi(env), 1, 3);
-    return test::kSanitizerBuild ? 1 : 3;
+    return 3;
 }
 
 TEST(JtmlFind, BothImplantsFoundInOneRunWithNoStart) {
     FM_REQUIRE_SHARED_DATA("jtml-kneel-tka-fluoro/fem.jts");
     const RegistrationSettings settings = realXraySettings();
-    FindSettings find;
-    // Under the sanitizers (~5x slower, the scan most) tilts within 20 deg: 16 templates, not 36
-    // (docs/find.md: every frame met in that space too).
-    if (test::kSanitizerBuild) find.space.tiltDeg = 20.0;
-    // The implants in the run: both, or the tray alone under the sanitizers.
-    const std::vector<const Implant*> implants =
-        test::kSanitizerBuild ? std::vector<const Implant*>{&kImplants[1]} : std::vector<const Implant*>{&kImplants[0], &kImplants[1]};
+    const FindSettings find;
+    const std::vector<const Implant*> implants{&kImplants[0], &kImplants[1]};
     Scene scene;
     for (const Implant* implant : implants)
         scene.objects.push_back({implant->name,

@@ -12,7 +12,6 @@
 // docs/tracking.md); the answers are computed here, none is written in this file.
 #include <gtest/gtest.h>
 
-#include "common/SanitizerBuild.h"
 #include "common/TestData.h"
 #include "core/Random.h"
 #include "scene/ObjectPoseParameterization.h"
@@ -103,10 +102,9 @@ TEST_F(RealWrist, BiplaneAnswerIsWhereBothSingleViewAnswersPointAndRestartsRetur
                 << "the single-view rays meet away from the biplane answer";
         }
 
-        // Two restarts 2 mm / 2 deg away in random directions (fixed seed) come back; one
-        // under the sanitizers (the same first start).
+        // Two restarts 2 mm / 2 deg away in random directions (fixed seed) come back.
         fm::Rng rng(7);
-        for (int k = 0; k < (fm::test::kSanitizerBuild ? 1 : 2); ++k) {
+        for (int k = 0; k < 2; ++k) {
             const glm::dvec3 shift =
                 glm::normalize(glm::dvec3(rng.normal(), rng.normal(), rng.normal()));
             const glm::dvec3 axis =

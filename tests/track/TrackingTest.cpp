@@ -31,9 +31,8 @@ constexpr double kMaxCentreErrorMm = 0.25;
 constexpr double kMaxAngleErrorDeg = 0.25;
 // Noise added to the rendered frames, as a fraction of the brightest pixel.
 constexpr double kNoiseFraction = 0.02;
-// Frames of the biplane sequence: 20, or 7 under the sanitizers (every frame tracked from the
-// previous as in the 20, each still within the bounds; only fewer of them).
-constexpr int kFrames = fm::test::kSanitizerBuild ? 7 : 20;
+// Frames of the biplane sequence (Release only: tests/track/extra.cmake).
+constexpr int kFrames = 20;
 // The wrist images (1760 pixels square) at the shipped trial's RenderResolution, as tracking
 // renders them (trialRenderSize).
 constexpr int kRenderSize = 512;
