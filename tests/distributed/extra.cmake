@@ -13,7 +13,7 @@ if(TARGET fluoromatch)
                          COST 200)
     # 3 ranks there, against one process (3 has every path 2 has, and rank 0 working alone is
     # Release's 1-rank run; each rank count ~40 s of CPU under the sanitizers).
-    # Heavy there (~190 s): left out of CI's sanitizer pass (scripts/test --skip-heavy).
+    # Heavy there (~190 s): left out of the quick sanitizer pass (scripts/test --skip-heavy).
     if(FM_SANITIZE)
         set_tests_properties(distributed_mpi_runs PROPERTIES ENVIRONMENT "FM_MPI_RANKS=3" LABELS heavy)
     endif()
