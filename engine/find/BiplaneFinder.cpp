@@ -178,6 +178,7 @@ FoundBiplane findBiplanePose(const Scene& scene, const std::vector<RegistrationV
     FoundBiplane finer = findBiplaneOnce(scene, views, finish, settings, out.scanFactor / 2, stop, onStage);
     const bool better = !finer.candidates.empty() &&
                         (out.candidates.empty() || finer.candidates[0].similarity > out.candidates[0].similarity);
+    const bool stopped = finer.stopped;  // a stop in the second pass is the whole find's
     std::vector<FindStage> stages = out.stages;
     stages.insert(stages.end(), finer.stages.begin(), finer.stages.end());
     char text[120];
@@ -185,6 +186,7 @@ FoundBiplane findBiplanePose(const Scene& scene, const std::vector<RegistrationV
                   better ? "that pass kept" : "the first pass kept");
     if (better) out = std::move(finer);
     out.stages = std::move(stages);
+    out.stopped = stopped;
     out.verdictText += text;
     return out;
 }

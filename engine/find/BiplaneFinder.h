@@ -10,7 +10,7 @@
 //   3. finish: the best `finalists` polished at 1/2 and 1/4 of the scan's pixel, where the bone's
 //      inner edges tell it from the other bones' (femur: the truth 1.10 against 0.79 next, where
 //      the scan's pixel had them 1.02 against 0.99); answers that agree merged, best first;
-//   4. when no answer is clearly seen and the scan was at 1/8 or coarser, 1-3 once more with the
+//   then, when no answer is clearly seen and the scan was at 1/8 or coarser, 1-3 once more with the
 //      scan at half its pixel (the femur flexed 20 deg: its neighbours ranked 1674th at 1/8).
 // How sure: the best answer clearly seen (kBiplaneMinSimilarity) and against the next distinct one
 // (kBiplaneRivalRatio); the tracker's registration and verdict follow, as from a keyframe.
