@@ -32,6 +32,18 @@ class WorkspaceFixture : public ::testing::Test {
         script = std::make_unique<app::UiScript>(*app);
         script->idle(2);
     }
+    // Find (the selected object's pose with no start) clicked and waited for: it ended with an
+    // answer, said "Found: ". Call through ASSERT_NO_FATAL_FAILURE; then read app->state().solve.
+    void findAndWait() {
+        script->clickWidget("button:find");
+        app->waitForSolve();
+        const app::WorkspaceSolve& s = app->state().solve;
+        ASSERT_TRUE(s.finished) << s.error;
+        ASSERT_TRUE(s.error.empty()) << s.error;
+        ASSERT_TRUE(s.result.has_value());
+        EXPECT_TRUE(s.find);
+        EXPECT_EQ(s.summary.rfind("Found: ", 0), 0u) << s.summary;
+    }
     void TearDown() override {
         script.reset();
         app.reset();
