@@ -32,6 +32,11 @@ bool posesWithin(const RigidTransform& a, const RigidTransform& b, const glm::dv
     return glm::length(a.applyToPoint(pivot) - b.applyToPoint(pivot)) <= mm && rotationBetweenDeg(a.rotation, b.rotation) <= deg;
 }
 
+// An answer's similarity (summed over the cameras) per camera: what kBiplaneMinSimilarity bounds.
+double perCameraSimilarity(const BiplaneCandidate& c, std::size_t cameras) {
+    return c.similarity / static_cast<double>(std::max<std::size_t>(cameras, 1));
+}
+
 bool sameAnswer(const RigidTransform& a, const RigidTransform& b, const glm::dvec3& pivot) {
     return posesWithin(a, b, pivot, kBiplaneSameMm, kBiplaneSameDeg);
 }
@@ -161,7 +166,7 @@ FoundBiplane findBiplaneOnce(const Scene& scene, const std::vector<RegistrationV
 }
 
 bool clearlySeen(const FoundBiplane& f, std::size_t cameras) {
-    return !f.candidates.empty() && f.candidates[0].similarity / static_cast<double>(cameras) >= kBiplaneMinSimilarity;
+    return !f.candidates.empty() && perCameraSimilarity(f.candidates[0], cameras) >= kBiplaneMinSimilarity;
 }
 
 }  // namespace
@@ -202,7 +207,7 @@ std::pair<AnswerVerdict, std::string> judgeBiplaneAnswers(const std::vector<Bipl
     });
     char text[240];
     AnswerVerdict verdict = AnswerVerdict::Doubtful;
-    const double perCamera = best.similarity / static_cast<double>(std::max<std::size_t>(cameras, 1));
+    const double perCamera = perCameraSimilarity(best, cameras);
     if (perCamera < kBiplaneMinSimilarity) {
         std::snprintf(text, sizeof text,
                       "doubtful: the best answer scores %.2f per camera, below %.2f: the bone is not clearly seen at any "

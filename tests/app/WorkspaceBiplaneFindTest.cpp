@@ -23,7 +23,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The femur's truth in frame 0 as an object pose; ASSERTs that the simulation ran.
+// The trial simulated by the CLI into a scratch folder and opened in the workspace (ASSERTs that
+// the simulation ran).
 class WorkspaceBiplaneFind : public WorkspaceFixture {
   public:
     void SetUp() override {

@@ -32,17 +32,23 @@ class WorkspaceFixture : public ::testing::Test {
         script = std::make_unique<app::UiScript>(*app);
         script->idle(2);
     }
-    // Find (the selected object's pose with no start) clicked and waited for: it ended with an
-    // answer, said "Found: ". Call through ASSERT_NO_FATAL_FAILURE; then read app->state().solve.
+    // Solve or Find (the selected object's pose from the one shown, or with no start) clicked and
+    // waited for: it ended with an answer and no error; Find's says "Found: ". Call through
+    // ASSERT_NO_FATAL_FAILURE; then read app->state().solve.
+    void solveAndWait() { runAndWait("button:solve"); }
     void findAndWait() {
-        script->clickWidget("button:find");
+        ASSERT_NO_FATAL_FAILURE(runAndWait("button:find"));
+        const app::WorkspaceSolve& s = app->state().solve;
+        EXPECT_TRUE(s.find);
+        EXPECT_EQ(s.summary.rfind("Found: ", 0), 0u) << s.summary;
+    }
+    void runAndWait(const char* button) {
+        script->clickWidget(button);
         app->waitForSolve();
         const app::WorkspaceSolve& s = app->state().solve;
         ASSERT_TRUE(s.finished) << s.error;
         ASSERT_TRUE(s.error.empty()) << s.error;
         ASSERT_TRUE(s.result.has_value());
-        EXPECT_TRUE(s.find);
-        EXPECT_EQ(s.summary.rfind("Found: ", 0), 0u) << s.summary;
     }
     void TearDown() override {
         script.reset();
