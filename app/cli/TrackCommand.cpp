@@ -76,7 +76,8 @@ struct BoneRun {
     std::size_t todo = 0;                 // frames to track in this run
     fm::TraFile tra;                      // rank 0: one row per trial frame
     std::map<int, fm::FrameRecord> rows;  // rank 0: this run's frames, by tracking position
-    std::map<int, std::string> keptRows;  // rank 0, --resume: CSV rows of `done` frames, by frame
+    std::map<int, std::string> keptRows;  // --resume: CSV rows of `done` frames, by frame
+    std::map<int, fm::FrameRecord> kept;  // --resume: what those rows say (verdict, costs)
 };
 
 // A job: one segment of one bone; its record holds the segment's frames (a count, then one
@@ -183,10 +184,13 @@ void runTrack(const TrackArgs& a) {
         b.out = outFor(a.out, b.name, several);
         b.tra.frames.assign(static_cast<std::size_t>(scene.frameCount), {std::nullopt});
         if (a.resume && fs::exists(b.out)) b.done = resumedFrames(scene, b.name, b.out, b.tra);
-        if (a.resume && writer && !a.csv.empty()) {
+        // Every rank: the kept frames' verdicts and costs judge the frames after them.
+        if (a.resume && !a.csv.empty()) {
             std::set<int> kept;
             for (const auto& [frame, pose] : b.done) kept.insert(frame);
             b.keptRows = fm::cli::keptTrackCsvRows(a.csv, scene.cameras.size(), b.name, kept);
+            for (const auto& [frame, row] : b.keptRows)
+                b.kept[frame] = fm::cli::keptFrameRecord(row, scene.cameras.size(), "--resume: " + fm::io::quoted(a.csv));
         }
         std::map<int, fm::RigidTransform> keyframes = fm::boneKeyframes(scene, b.name, startTra, a.start);
         if (keyframes.empty()) {
@@ -200,9 +204,19 @@ void runTrack(const TrackArgs& a) {
             longest = std::max(longest, b.segments[s].frames.size());
         }
         for (int f : frames) b.todo += b.done.count(f) == 0 ? 1 : 0;
-        if (a.resume && writer)
+        if (a.resume && writer) {
             std::fprintf(stderr, "resume: %zu frames of %s already in %s, %zu to go\n",
                          b.done.size(), b.name.c_str(), b.out.string().c_str(), b.todo);
+            // A frame is judged against the last ok frame before it: without their CSV rows the
+            // kept frames' verdicts are unknown, and where frames were not ok the rest may differ.
+            if (b.kept.size() < b.done.size())
+                std::fprintf(stderr,
+                             "resume: the verdicts of %zu kept frames are not known (%s): the frames after them are "
+                             "judged without them, so where frames were not ok this run may differ from an "
+                             "uninterrupted one\n",
+                             b.done.size() - b.kept.size(),
+                             a.csv.empty() ? "no --csv; give the first run's" : "not in the --csv");
+        }
         bones.push_back(std::move(b));
     }
     if (!anyFound && !a.findSpace.empty() && settings.onLost != fm::OnLost::Find)
@@ -306,7 +320,8 @@ void runTrack(const TrackArgs& a) {
                         r.status == fm::FrameRecord::Status::NoStart)
                         std::fprintf(stderr, "%s%sframe %d skipped: %s\n", interactive ? "\n" : "",
                                      who.c_str(), r.frame, r.note.c_str());
-                });
+                },
+                nullptr, b.kept);
             std::memcpy(record.data(), &count, sizeof count);
         },
         [&](int job, std::span<const std::byte> record) {
@@ -404,7 +419,7 @@ FM_REGISTER_COMMAND("track", 45, [](CLI::App& app) {
     cmd->add_option("--csv", a->csv,
                     "Per-frame rows: status, cost per camera, verdict, uncertainty per coordinate, "
                     "similarity against the last good frames, evaluations, time, note");
-    cmd->add_flag("--resume", a->resume, "Continue a run: frames already in --out are kept");
+    cmd->add_flag("--resume", a->resume, "Continue a run: frames already in --out are kept (with the run's --csv, whose verdicts judge the frames after them as in an uninterrupted run)");
     cmd->add_option("--seed", a->seed, "Random seed (frame k uses a seed made from it and k)")
         ->capture_default_str()
         ->check(fm::cli::kSeedNumber);

@@ -2,11 +2,13 @@
 
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <sstream>
 #include <system_error>
 
 #include "core/Error.h"
 #include "io/ByteSource.h"
+#include "io/HeaderText.h"
 #include "io/TextFile.h"
 
 namespace fm::cli {
@@ -27,7 +29,7 @@ std::string trackCsvRow(const FrameRecord& r, const std::string& bone) {
     std::string row = std::to_string(r.frame) + "," + bone + "," + toString(r.status) + "," +
                       std::to_string(r.camerasUsed);
     for (double c : r.viewCost) {
-        std::snprintf(buf, sizeof buf, ",%.6f", c);
+        std::snprintf(buf, sizeof buf, ",%.*f", kStoredCostDecimals, c);  // as storedCost keeps it
         row += std::isnan(c) ? std::string(",") : std::string(buf);
     }
     row += std::string(",") + (r.status == FrameRecord::Status::Tracked ? toString(r.verdict) : "lost");
@@ -79,6 +81,44 @@ std::map<int, std::string> keptTrackCsvRows(const std::filesystem::path& csv, st
             rows[frame] = line + "\n";
     }
     return rows;
+}
+
+FrameRecord keptFrameRecord(const std::string& row, std::size_t cameras, const std::string& where) {
+    std::vector<std::string> fields;
+    std::size_t begin = 0;
+    for (std::size_t i = 0; i <= row.size(); ++i)
+        if (i == row.size() || row[i] == ',' || row[i] == '\n') {
+            fields.push_back(row.substr(begin, i - begin));
+            begin = i + 1;
+            if (i < row.size() && row[i] == '\n') break;
+        }
+    if (fields.size() < 5 + cameras) throw Error(where + ": a row of " + std::to_string(fields.size()) + " fields");
+    FrameRecord r;
+    r.frame = static_cast<int>(io::parseInteger(fields[0], where + ": frame"));
+    const std::string at = where + ": frame " + fields[0] + ": ";
+    const std::string& status = fields[2];
+    bool known = false;
+    for (FrameRecord::Status s : {FrameRecord::Status::Tracked, FrameRecord::Status::NoStart, FrameRecord::Status::NotInView,
+                                  FrameRecord::Status::BadFrame, FrameRecord::Status::Stopped})
+        if (status == toString(s)) {
+            r.status = s;
+            known = true;
+        }
+    if (!known) throw Error(at + "status '" + status + "' is not one this program writes");
+    for (std::size_t c = 0; c < cameras; ++c) {
+        const std::string& cost = fields[4 + c];
+        r.viewCost.push_back(cost.empty() ? std::numeric_limits<double>::quiet_NaN()
+                                          : io::parseFinite(cost, at + "cost_cam" + std::to_string(c + 1)));
+    }
+    const std::string& verdict = fields[4 + cameras];
+    known = false;
+    for (AnswerVerdict v : {AnswerVerdict::Ok, AnswerVerdict::Doubtful, AnswerVerdict::Lost})
+        if (verdict == toString(v)) {
+            r.verdict = v;
+            known = true;
+        }
+    if (!known) throw Error(at + "verdict '" + verdict + "' is not ok, doubtful or lost");
+    return r;
 }
 
 }  // namespace fm::cli

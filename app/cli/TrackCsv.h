@@ -20,4 +20,9 @@ std::string trackCsvRow(const FrameRecord& r, const std::string& bone);  // ends
 std::map<int, std::string> keptTrackCsvRows(const std::filesystem::path& csv, std::size_t cameras,
                                             const std::string& bone, const std::set<int>& kept);
 
+// What a kept row tells the frames after it (Tracker::run's `kept`): its frame, status, cost per
+// camera (an empty field: NaN) and verdict. fm::Error naming `where` (the file) and the frame
+// for a field that does not parse.
+FrameRecord keptFrameRecord(const std::string& row, std::size_t cameras, const std::string& where);
+
 }  // namespace fm::cli

@@ -121,6 +121,28 @@ rm "$B"; "$FM" drr --size 64x64 --out "$B" >/dev/null 2>&1 || fail "could not wr
 grep -q "frame 1 skipped: .*64.*xr_rad_uln_cam02_UND.0099.tif\|frame 1 skipped: .*xr_rad_uln_cam02_UND.0099.tif.*64" "$T/out" \
     || { cat "$T/out"; fail "the frame of another size is not named with its size"; }
 awk -F, 'NR==2 && $1!="NaN" {exit 1} (NR==1 || NR==3) && $1=="NaN" {exit 1}' "$T/size.tra" || fail "frame 1 NaN, 0 and 2 kept"
+# A resumed run judges its frames as the uninterrupted run did: at 160 pixels the radius's frame 0
+# is doubtful and frames 1-2 ok, frame 2 against frame 1's similarity (0.91 of it, by the 0.90
+# bound). Killed after frame 1, then resumed with the first run's CSV (which holds the kept frames'
+# verdicts and costs): the same .tra and the same CSV but for the times. Without the CSV the kept
+# verdicts are unknown: said, and frame 2 is then judged with no earlier frame (a second search).
+small=$T/small; mkframes "$small"; mktrial "$small"
+sed -i 's#"render_resolution": \[110, 110\]#"render_resolution": [160, 160]#' "$small/t.json"
+S=(track --trial "$small/t.json" --bone radius --threads 2)
+"$FM" "${S[@]}" --out "$T/res_w.tra" --csv "$T/res_w.csv" >/dev/null 2>&1 || fail "the 160-pixel run failed"
+"$FM" "${S[@]}" --frames 0:1 --out "$T/res_r.tra" --csv "$T/res_r.csv" >/dev/null 2>&1 || fail "its first part failed"
+cp "$T/res_r.tra" "$T/res_n.tra"
+"$FM" "${S[@]}" --resume --out "$T/res_r.tra" --csv "$T/res_r.csv" >"$T/out" 2>&1 || { cat "$T/out"; fail "resume failed"; }
+if grep -q "not known" "$T/out"; then cat "$T/out"; fail "the kept verdicts are in the CSV"; fi
+cut -d, -f7 "$T/res_w.csv" | tr '\n' ' ' | grep -q "verdict doubtful ok ok" || { cat "$T/res_w.csv"; fail "frames 0-2 at 160 px: doubtful, ok, ok"; }
+cmp "$T/res_w.tra" "$T/res_r.tra" || fail "the resumed .tra differs from the uninterrupted run's"
+cmp <(cut -d, -f1-22,24- "$T/res_w.csv") <(cut -d, -f1-22,24- "$T/res_r.csv") || { cat "$T/res_w.csv" "$T/res_r.csv"; fail "the resumed CSV differs"; }
+"$FM" "${S[@]}" --resume --out "$T/res_n.tra" >"$T/out" 2>&1 || { cat "$T/out"; fail "resume without --csv failed"; }
+grep -q "the verdicts of 2 kept frames are not known (no --csv" "$T/out" || { cat "$T/out"; fail "unknown verdicts not said"; }
+# A kept row whose verdict or cost does not parse is refused, naming the file and the frame.
+sed -i '2s/,doubtful,/,maybe,/' "$T/res_r.csv"
+expect_error "res_r.csv.*frame 0: verdict 'maybe' is not ok, doubtful or lost" "$FM" "${S[@]}" --resume --out "$T/res_r.tra" --csv "$T/res_r.csv"
+
 # A frame missing from camera 2: refused before any work, naming both cameras and their counts.
 miss=$T/missing; mkframes "$miss"; mktrial "$miss"; rm "$miss/cam02/xr_rad_uln_cam02_UND.0099.tif"
 expect_error "camera cam01 has 3 frames but camera cam02 has 2 (.*missing/cam02.; a frame missing?)" \

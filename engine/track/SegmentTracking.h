@@ -19,11 +19,13 @@ namespace fm {
 std::vector<int> framesToTrack(const TrackSegment& segment, const std::map<int, RigidTransform>& done);
 
 // afterFrame gets every frame's record (the pose as found, not as stored) once it is done;
-// stops after the current frame when *stop is set.
+// stops after the current frame when *stop is set. `kept`: the records of `done` frames as their
+// run left them (verdict and costs, e.g. from its CSV), which judge the frames after them as they
+// did in that run (Tracker::run); a done frame without one judges nothing (its verdict unknown).
 void trackSegment(const Tracker& tracker, const TrackSegment& segment,
                   const std::map<int, RigidTransform>& done,
                   const std::function<RigidTransform(const RigidTransform&)>& stored,
                   const std::function<void(const FrameRecord&)>& afterFrame,
-                  const std::atomic<bool>* stop = nullptr);
+                  const std::atomic<bool>* stop = nullptr, const std::map<int, FrameRecord>& kept = {});
 
 }  // namespace fm

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <optional>
 
 #include "core/Error.h"
@@ -33,6 +35,13 @@ RegistrationSettings TrackSettings::defaultTrackingRegistration() {
     s.turnAboutMassCentre = false;  // not measured on tracking
     s.cropToModel = true;
     return s;
+}
+
+double storedCost(double cost) {
+    if (!std::isfinite(cost)) return cost;
+    char text[64];
+    std::snprintf(text, sizeof text, "%.*f", kStoredCostDecimals, cost);
+    return std::strtod(text, nullptr);
 }
 
 double FrameRecord::similarity() const {
@@ -305,7 +314,7 @@ FrameRecord Tracker::findAndTrack(const FrameViews& frames, int frame, FrameReco
 void Tracker::run(const std::vector<int>& frames, const std::map<int, RigidTransform>& keyframes,
                   std::map<int, RigidTransform>& tracked,
                   const std::function<void(const FrameRecord&)>& afterFrame,
-                  const std::atomic<bool>* stop) const {
+                  const std::atomic<bool>* stop, const std::map<int, FrameRecord>& kept) const {
     const bool backwards = frames.size() > 1 && frames[1] < frames[0];
     // The wider search of step 5's re-search.
     TrackSettings wider = settings_;
@@ -323,8 +332,18 @@ void Tracker::run(const std::vector<int>& frames, const std::map<int, RigidTrans
     // The similarity the bone scored in its last good frame, per camera.
     FrameContext context;
     context.referenceSimilarity.assign(scene_.cameras.size(), std::numeric_limits<double>::quiet_NaN());
+    // An ok frame's costs are what the next frames are judged against (in their stored form).
+    const auto judgeLaterFramesBy = [&](const FrameRecord& record) {
+        if (record.status != FrameRecord::Status::Tracked || record.verdict != AnswerVerdict::Ok) return;
+        for (std::size_t c = 0; c < record.viewCost.size() && c < context.referenceSimilarity.size(); ++c)
+            if (!std::isnan(record.viewCost[c])) context.referenceSimilarity[c] = -storedCost(record.viewCost[c]);
+    };
     for (int frame : frames) {
         if (stop && stop->load()) return;
+        if (const auto k = kept.find(frame); k != kept.end()) {  // a resumed run's: judged before
+            judgeLaterFramesBy(k->second);
+            continue;
+        }
         // 1. The start pose.
         const auto start = initialGuess(settings_.init, frame, tracked, keyframes, backwards);
         FrameRecord record;
@@ -368,9 +387,7 @@ void Tracker::run(const std::vector<int>& frames, const std::map<int, RigidTrans
         }
         const bool lost = record.verdict == AnswerVerdict::Lost;
         if (record.answered()) tracked[frame] = *record.worldFromBone;
-        if (record.status == FrameRecord::Status::Tracked && record.verdict == AnswerVerdict::Ok)
-            for (std::size_t c = 0; c < record.viewCost.size(); ++c)
-                if (!std::isnan(record.viewCost[c])) context.referenceSimilarity[c] = -record.viewCost[c];
+        judgeLaterFramesBy(record);
         if (afterFrame) afterFrame(record);
         if (record.status == FrameRecord::Status::Stopped) return;
         if (lost && record.status == FrameRecord::Status::Tracked && settings_.onLost == OnLost::Stop) return;

@@ -129,6 +129,13 @@ struct FrameRecord {
     bool answered() const { return status == Status::Tracked && worldFromBone && verdict != AnswerVerdict::Lost; }
 };
 
+// A camera's cost as the track CSV holds it (kStoredCostDecimals decimals). The frames after an
+// ok one are judged against its costs in this form, so that a resumed run, which reads the kept
+// frames' costs back from the CSV, judges them with the very numbers an uninterrupted run used
+// (as storedObjectPose does for the poses the next frames start from).
+inline constexpr int kStoredCostDecimals = 6;
+double storedCost(double cost);
+
 // What a frame is judged against.
 struct FrameContext {
     // Per camera, the similarity (-cost) the bone scored in its last good frames (NaN: unknown).
@@ -159,10 +166,13 @@ class Tracker {
     // Tracks `frames` in the given order. `tracked` holds poses already found (a resumed run)
     // and receives every new one; `keyframes` are the user's. afterFrame is called after every
     // frame (to write results at once). Stops after the current frame when *stop is set.
+    // A frame of `frames` that `kept` holds (a resumed run's frame, with the verdict and costs
+    // its run gave it; its pose in `tracked`) is not tracked again: it judges the frames after it
+    // as it did in that run, so the resumed run's poses and verdicts are the uninterrupted run's.
     void run(const std::vector<int>& frames, const std::map<int, RigidTransform>& keyframes,
              std::map<int, RigidTransform>& tracked,
              const std::function<void(const FrameRecord&)>& afterFrame,
-             const std::atomic<bool>* stop = nullptr) const;
+             const std::atomic<bool>* stop = nullptr, const std::map<int, FrameRecord>& kept = {}) const;
 
     // The fraction of `bone`'s projected box (at `pose`) that lies on camera `camera`'s image
     // (0 when a corner is behind the source).

@@ -354,7 +354,7 @@ TEST(Tracking, ContinuesOnOneCameraWhileTheBoneLeavesTheOther) {
     EXPECT_LT(centreError(*records.back().worldFromBone, truth(kPeriod), w.centre), kMaxCentreErrorMm);
 }
 
-TEST(Tracking, AResumedRunGivesTheSamePoses) {
+TEST(Tracking, AResumedRunGivesTheSamePosesAndVerdicts) {
     FM_REQUIRE_SHARED_DATA("autoscoper-bvr/Models/rad_dcm_cropped.tif");
     const Wrist w;
     const auto truth = [&](int k) { return w.truth(k); };
@@ -363,22 +363,31 @@ TEST(Tracking, AResumedRunGivesTheSamePoses) {
     s.registration.polishEvaluations = 40;
     const fm::Tracker tracker(w.scene, "radius", w.frames(truth), s);
     const std::map<int, RigidTransform> keys{{0, truth(0)}};
+    // Frames 1-4 (1-3 under the sanitizers), and the same resumed after frame 2: the second run
+    // is given every frame, frames 1-2 as kept records (their poses in `resumed`), as `track
+    // --resume` gives them from the .tra and the CSV.
+    const std::vector<int> frames = fm::test::kSanitizerBuild ? std::vector<int>{1, 2, 3} : std::vector<int>{1, 2, 3, 4};
     std::map<int, RigidTransform> whole, resumed;
-    // Frames 1-4 resumed after frame 2; under the sanitizers 1-3 resumed after frame 2 (the
-    // resumed part still extrapolates from the two tracked frames before it).
-    if (fm::test::kSanitizerBuild) {
-        tracker.run({1, 2, 3}, keys, whole, {});
-        tracker.run({1, 2}, keys, resumed, {});
-        tracker.run({3}, keys, resumed, {});
-    } else {
-        tracker.run({1, 2, 3, 4}, keys, whole, {});
-        tracker.run({1, 2}, keys, resumed, {});
-        tracker.run({3, 4}, keys, resumed, {});
-    }
-    ASSERT_EQ(whole.size(), fm::test::kSanitizerBuild ? 3u : 4u);
+    std::map<int, fm::FrameRecord> wholeRecords, kept, resumedRecords;
+    tracker.run(frames, keys, whole, [&](const fm::FrameRecord& r) { wholeRecords[r.frame] = r; });
+    tracker.run({1, 2}, keys, resumed, [&](const fm::FrameRecord& r) { kept[r.frame] = r; });
+    // The kept frames' verdicts and costs as the CSV holds them (what --resume reads back).
+    for (auto& [frame, r] : kept)
+        for (double& c : r.viewCost) c = fm::storedCost(c);
+    tracker.run(frames, keys, resumed, [&](const fm::FrameRecord& r) { resumedRecords[r.frame] = r; }, nullptr, kept);
+    ASSERT_EQ(whole.size(), frames.size());
     ASSERT_EQ(resumed.size(), whole.size());
+    ASSERT_EQ(resumedRecords.size(), frames.size() - 2) << "the kept frames are not tracked again";
     for (const auto& [frame, pose] : whole)
         EXPECT_EQ(pose.toRowMajor4x4(), resumed.at(frame).toRowMajor4x4()) << "frame " << frame;
+    // Judged as in the uninterrupted run: frame 3 against frame 2's similarity (ok), with the same
+    // searches, not as a frame with nothing before it (a confirming second search).
+    for (const auto& [frame, r] : resumedRecords) {
+        EXPECT_EQ(r.verdictText, wholeRecords.at(frame).verdictText) << "frame " << frame;
+        EXPECT_EQ(r.evaluations, wholeRecords.at(frame).evaluations) << "frame " << frame;
+        EXPECT_EQ(r.viewCost, wholeRecords.at(frame).viewCost) << "frame " << frame;
+    }
+    EXPECT_EQ(resumedRecords.at(3).verdict, fm::AnswerVerdict::Ok) << resumedRecords.at(3).verdictText;
 }
 
 }  // namespace
