@@ -15,21 +15,27 @@ constexpr double kSlack = 1e-9;
 
 }  // namespace
 
+bool tilesFromHalfBricks(const DrrVolume& v, std::size_t rays) {
+    return !v.occupiedHalfBricks.empty() && double(rays) >= kRaysPerHalfBrick * double(v.occupiedHalfBricks.size());
+}
+
 std::optional<BrickDepthTiles> brickDepthTiles(const DrrVolume& v, const ProjectionGeometry& g,
-                                               int col0, int col1, int row0, int row1) {
+                                               int col0, int col1, int row0, int row1, bool halfBricks) {
     if (v.bricksEmpty == 0 || col1 <= col0 || row1 <= row0) return std::nullopt;
     const DetectorGeometry& det = g.detector;
     const glm::dvec3 n = glm::cross(det.u, det.v);
     const double planeDistance = glm::dot(det.origin - g.source, n);
     if (!(std::abs(planeDistance) > 0.0)) return std::nullopt;
 
-    // 1. The brick corners (a lattice, the last corner of each axis at the box's end), projected:
+    // 1. The block corners (a lattice, the last corner of each axis at the box's end), projected:
     // pixel column, row and alpha (depth / the detector plane's depth). World positions step
-    // along the lattice by whole bricks (an affine map).
-    const glm::ivec3 corners = v.brickDims + 1;
+    // along the lattice by whole blocks (an affine map).
+    const int size = halfBricks ? v.brickSize / 2 : v.brickSize;
+    const std::vector<glm::u16vec3>& blocks = halfBricks ? v.occupiedHalfBricks : v.occupiedBricks;
+    const glm::ivec3 corners = (v.dims + (size - 1)) / size + 1;
     const glm::dmat3 localToWorld = glm::inverse(v.worldToLocal);
     auto edge = [&](int a, int index) {  // local coordinate of lattice plane `index` along a
-        return std::min(index * v.brickSize, v.dims[a]) * v.spacing[a];
+        return std::min(index * size, v.dims[a]) * v.spacing[a];
     };
     const glm::dvec3 base = localToWorld * (-v.localShift) + v.origin - g.source;
     std::vector<glm::dvec3> projected(static_cast<std::size_t>(corners.x) * corners.y * corners.z);
@@ -47,7 +53,7 @@ std::optional<BrickDepthTiles> brickDepthTiles(const DrrVolume& v, const Project
             }
         }
 
-    // 2. Each non-empty brick widens the alpha range of every tile its corners' box touches
+    // 2. Each non-empty block widens the alpha range of every tile its corners' box touches
     // (one pixel of margin for rounding; the projection of a box lies inside its corners' box).
     BrickDepthTiles t;
     const int T = BrickDepthTiles::kTileSize;
@@ -58,7 +64,7 @@ std::optional<BrickDepthTiles> brickDepthTiles(const DrrVolume& v, const Project
     const std::size_t tiles = static_cast<std::size_t>(t.tilesX) * t.tilesY;
     t.alphaLo.assign(tiles, std::numeric_limits<double>::infinity());
     t.alphaHi.assign(tiles, -std::numeric_limits<double>::infinity());
-    for (const glm::u16vec3& brick : v.occupiedBricks) {
+    for (const glm::u16vec3& brick : blocks) {
         const int bi = brick.x, bj = brick.y, bk = brick.z;
         glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
         for (int c = 0; c < 8; ++c) {

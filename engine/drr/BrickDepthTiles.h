@@ -1,7 +1,8 @@
 #pragma once
 // Empty-space skipping for the dense walk, per render: which part of each pixel's ray can meet
-// a non-empty voxel. Every non-empty brick (DrrVolume.h) is projected onto the detector; each
-// tile of tileSize x tileSize pixels its projection may touch takes the brick's depth range
+// a non-empty voxel. Every non-empty block (DrrVolume's occupied bricks, or half-bricks where a
+// render has rays enough for them) is projected onto the detector; each
+// tile of tileSize x tileSize pixels its projection may touch takes the block's depth range
 // (distance from the source along the detector normal). A point's depth is proportional to its
 // ray parameter alpha (every pixel lies in the detector plane), so a tile's depth range is an
 // alpha range that holds every non-empty voxel the tile's rays cross: a ray walks only that range,
@@ -41,9 +42,17 @@ struct BrickDepthTiles {
     }
 };
 
-// The tiles for pixels [col0, col1) x [row0, row1) of `g`. nullopt when they would not help (no
-// empty brick) or cannot be made (a brick corner not strictly in front of the source).
+// The tiles for pixels [col0, col1) x [row0, row1) of `g`, from the volume's occupied bricks or,
+// with `halfBricks` (the volume must have them), its half-bricks. nullopt when they would not
+// help (no empty brick) or cannot be made (a block corner not strictly in front of the source).
 std::optional<BrickDepthTiles> brickDepthTiles(const DrrVolume& v, const ProjectionGeometry& g,
-                                               int col0, int col1, int row0, int row1);
+                                               int col0, int col1, int row0, int row1, bool halfBricks = false);
+
+// Whether a render of `rays` pixels builds its tiles from the half-bricks: when the volume has
+// them and the render walks at least kRaysPerHalfBrick rays per half-brick (the tiles project
+// every block's corners per render: on the wrist's coarse tracking levels, a few thousand rays,
+// that cost more than it saved).
+inline constexpr double kRaysPerHalfBrick = 4.0;
+bool tilesFromHalfBricks(const DrrVolume& v, std::size_t rays);
 
 }  // namespace fm

@@ -56,7 +56,13 @@ struct DrrVolume {
     // a time beats skipping one ray at a time (DenseWalk.h; measured in docs/drr.md).
     bool preferDenseWalk = false;
     std::size_t bricksEmpty = 0;  // uniform bricks of value 0 (BrickDepthTiles skips them)
-    std::vector<glm::u16vec3> occupiedBricks;  // (i, j, k) of the others, when some are empty
+    // What BrickDepthTiles projects, when some bricks are empty: the bricks that hold a non-zero
+    // value, (i, j, k) in bricks; and, where they are at most kMaxHalfBricks, the half-bricks
+    // (blocks of brickSize / 2, in half-brick units) that do. A tile's depth range then holds
+    // less empty space, but the tiles project every block's corners per render: renders with
+    // enough rays per half-brick use them (renderDrr; docs/drr.md, "Half-bricks for the tiles").
+    std::vector<glm::u16vec3> occupiedBricks;
+    std::vector<glm::u16vec3> occupiedHalfBricks;
 
     std::ptrdiff_t at(int i, int j, int k) const {
         return (i + 1) +
@@ -82,6 +88,8 @@ struct DrrVolume {
 
 // Bricks at least this fraction of which are mixed make renderDrr walk densely (Auto).
 inline constexpr double kDenseWalkMixedFraction = 0.2;
+// Half-bricks are kept for the tiles when there are at most this many of them (DrrVolume).
+inline constexpr std::size_t kMaxHalfBricks = 32768;
 
 // Fills brickDims, brickValue, brickMixed and preferDenseWalk from `values` (per brick slab in parallel; the
 // same for any thread count).

@@ -213,6 +213,7 @@ void decideWalk(DrrVolume& v) {
     for (std::size_t b = 0; b < v.brickMixed.size(); ++b)
         v.bricksEmpty += !v.brickMixed[b] && v.brickValue[b] == 0.0f;
     v.occupiedBricks.clear();
+    v.occupiedHalfBricks.clear();
     if (v.bricksEmpty == 0) return;
     for (int k = 0; k < v.brickDims.z; ++k)
         for (int j = 0; j < v.brickDims.y; ++j)
@@ -221,6 +222,32 @@ void decideWalk(DrrVolume& v) {
                                               (j + static_cast<std::size_t>(v.brickDims.y) * k);
                 if (v.brickMixed[b] || v.brickValue[b] != 0.0f) v.occupiedBricks.emplace_back(i, j, k);
             }
+    // Few enough: the half-bricks, each of an occupied brick's eight that holds a non-zero value
+    // (a uniform non-zero brick's all do).
+    if (v.brickSize < 2 || v.brickSize % 2 != 0 || v.occupiedBricks.size() * 8 > kMaxHalfBricks) return;
+    const int h = v.brickSize / 2;
+    std::vector<glm::u16vec3> fine;
+    v.withValues([&](const auto* values) {
+        for (const glm::u16vec3& brick : v.occupiedBricks) {
+            const std::size_t b = brick.x + static_cast<std::size_t>(v.brickDims.x) *
+                                                (brick.y + static_cast<std::size_t>(v.brickDims.y) * brick.z);
+            for (int c = 0; c < 8; ++c) {
+                const glm::ivec3 block(2 * brick.x + (c & 1), 2 * brick.y + ((c >> 1) & 1), 2 * brick.z + (c >> 2));
+                const glm::ivec3 lo = block * h, hi = glm::min(lo + h, v.dims);
+                if (lo.x >= v.dims.x || lo.y >= v.dims.y || lo.z >= v.dims.z) continue;
+                bool occupied = !v.brickMixed[b];  // uniform and not empty
+                for (int k = lo.z; k < hi.z && !occupied; ++k)
+                    for (int j = lo.y; j < hi.y && !occupied; ++j)
+                        for (int i = lo.x; i < hi.x; ++i)
+                            if (values[v.at(i, j, k)] != 0) {
+                                occupied = true;
+                                break;
+                            }
+                if (occupied) fine.emplace_back(block);
+            }
+        }
+    });
+    v.occupiedHalfBricks = std::move(fine);
 }
 
 }  // namespace
