@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 #include "camera/CameraFile.h"
 #include "cli/CommandRegistry.h"
 #include "cli/ValueChecks.h"
@@ -82,9 +84,11 @@ void runSimulate(const SimulateArgs& a, const CLI::App& cmd) {
     std::printf("x-rays    %s; scatter-to-primary %g, blur %g px, %g photons per pixel, seed %llu\n",
                 fm::describeSpectrum(s.spectrum, fm::makeSpectrum(s.spectrum)).c_str(), a.scatter, a.blur, a.photons,
                 static_cast<unsigned long long>(a.seed));
-    const fm::TrialSimulationResult r = fm::simulateTrial(s, [](int done, int total) {
-        std::fprintf(stderr, "\rframe %d of %d", done, total);
-        if (done == total) std::fprintf(stderr, "\n");
+    // On a terminal one line rewritten; in a log one line per frame (as track's progress).
+    const bool interactive = isatty(fileno(stderr)) != 0;
+    const fm::TrialSimulationResult r = fm::simulateTrial(s, [interactive](int done, int total) {
+        std::fprintf(stderr, "%sframe %d of %d%s", interactive ? "\r" : "", done, total,
+                     !interactive || done == total ? "\n" : "");
     });
     std::printf("images    %d frames x %zu cameras, %.3f s per image\n", r.frames, r.cameras, r.secondsPerImage);
     for (std::size_t c = 0; c < r.referenceLevels.size(); ++c)

@@ -24,7 +24,9 @@ sim() {  # sim OUT args...
         --frames "$N" --size "${SIZE:-256x256}" --out "$out" "$@"
 }
 
-out=$(sim "$T/a" --threads 2 2>/dev/null) || fail "simulate exited $?: $out"
+out=$(sim "$T/a" --threads 2 2>"$T/progress") || fail "simulate exited $?: $out"
+# Its progress in a log (not a terminal): one line per frame, not one line of carriage returns.
+[ "$(grep -c "^frame [0-9]* of $N$" "$T/progress")" -eq "$N" ] || { cat -A "$T/progress"; fail "progress: one line per frame"; }
 for f in trial.json trial.cfg cam1.txt cam2.txt femur.tif femur_truth.tra femur_start.tra cam1/frame_$LAST.tif cam2/frame_0000.tif; do
     [ -s "$T/a/$f" ] || fail "$f not written: $(ls -R "$T/a")"
 done

@@ -115,6 +115,41 @@ TEST(BiplaneFinder, ABoneWhoseHalfTurnLooksTheSameIsDoubtful) {
     EXPECT_GT(std::abs(glm::dot(axis, truthAxis)), std::cos(glm::radians(2.0)));
 }
 
+TEST(BiplaneFinder, ABoneNotClearlySeenAtACoarseScanIsScannedAgainAtHalfThePixel) {
+    // The rod looked for in radiographs of noise: nowhere clearly seen. Scanned at 1/16 (its
+    // diagonal spans 7 pixels there), the find scans, refines and finishes once more at 1/8, says
+    // so, and keeps both passes' stages; without the second pass, one pass.
+    Scene scene;
+    const Volume rod = voxelize(CylinderShape{{0, 0, 0}, 9.0, 30.0}, centeredGrid({24, 24, 48}, {1.5, 1.5, 1.5}), 0.02f);
+    scene.objects.push_back({"rod", std::make_shared<VolumeXrayModel>(prepareDrrVolume(rod, {})), RigidTransform{}, true});
+    scene.cameras = {biplaneTestCamera({0, 0, 0}, {0, 1, 0}, {1, 0, 0}), biplaneTestCamera({0, 0, 0}, {-1, 0, 0}, {0, 1, 0})};
+    Rng rng(5);
+    std::vector<RegistrationView> views;
+    for (std::size_t c = 0; c < 2; ++c) {
+        Image noise(256, 256);
+        noise.spacing = scene.cameras[c].detector.spacing;
+        for (float& p : noise.pixels) p = static_cast<float>(rng.uniform());
+        views.push_back({c, noise, std::nullopt});
+    }
+    BiplaneFindSettings settings = biplaneTestSettings();
+    settings.space.tiltDeg = 20.0;
+    settings.refined = 20;
+    settings.finalists = 2;
+    settings.minScanSpanPixels = 5.0;
+    std::vector<std::string> told;
+    const FoundBiplane twice = findBiplanePose(scene, views, TrackSettings::defaultTrackingRegistration(), settings,
+                                               nullptr, [&](const char* stage) { told.push_back(stage); });
+    EXPECT_EQ(told, (std::vector<std::string>{"scan", "refine", "finish", "scan", "refine", "finish"}));
+    ASSERT_EQ(twice.stages.size(), 6u) << twice.verdictText;
+    EXPECT_NE(twice.verdictText.find("(scanned at 1/16, then at 1/8: "), std::string::npos) << twice.verdictText;
+    EXPECT_NE(twice.verdict, AnswerVerdict::Ok) << twice.verdictText;
+    settings.finerScanWhenUnseen = false;
+    const FoundBiplane once = findBiplanePose(scene, views, TrackSettings::defaultTrackingRegistration(), settings);
+    EXPECT_EQ(once.stages.size(), 3u);
+    EXPECT_EQ(once.scanFactor, 16);
+    EXPECT_EQ(once.verdictText.find("scanned at"), std::string::npos) << once.verdictText;
+}
+
 // The verdict's rules on answers made up for it (two cameras; similarities summed over them).
 TEST(BiplaneFinder, TheVerdictWantsTheBoneClearlySeenAndNoRivalNearlyAsGood) {
     const glm::dvec3 pivot(0.0);
