@@ -174,13 +174,18 @@ bool clearlySeen(const FoundBiplane& f, std::size_t cameras) {
 FoundBiplane findBiplanePose(const Scene& scene, const std::vector<RegistrationView>& views,
                              const RegistrationSettings& finish, const BiplaneFindSettings& settings,
                              const std::atomic<bool>* stop, const FindStageCallback& onStage) {
+    if (settings.finerScanWhenUnseen && settings.refinedWhenFiner < 1)
+        throw Error("biplane find: the finer scan's hypotheses must be positive");
     FoundBiplane out = findBiplaneOnce(scene, views, finish, settings, 0, stop, onStage);
     // 5. Nothing clearly seen: the scan ranked the truth too low at its pixel (the flexed femur's
     // frame 13: its neighbours 1674th of 7776 at 1/8, where the best 400 are refined). Once more
-    // with the scan at half that pixel, down to 1/4 (1/2 would scan a wrist bone at full size);
-    // the better best answer is kept, and both passes' stages.
+    // with the scan at half that pixel, down to 1/4 (1/2 would scan a wrist bone at full size),
+    // refining more of its hypotheses (frame 19's answer came from the 768th); the better best
+    // answer is kept, and both passes' stages.
     if (!settings.finerScanWhenUnseen || out.stopped || clearlySeen(out, views.size()) || out.scanFactor < 8) return out;
-    FoundBiplane finer = findBiplaneOnce(scene, views, finish, settings, out.scanFactor / 2, stop, onStage);
+    BiplaneFindSettings again = settings;
+    again.refined = settings.refinedWhenFiner;
+    FoundBiplane finer = findBiplaneOnce(scene, views, finish, again, out.scanFactor / 2, stop, onStage);
     const bool better = !finer.candidates.empty() &&
                         (out.candidates.empty() || finer.candidates[0].similarity > out.candidates[0].similarity);
     const bool stopped = finer.stopped;  // a stop in the second pass is the whole find's

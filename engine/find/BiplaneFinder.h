@@ -11,7 +11,8 @@
 //      inner edges tell it from the other bones' (femur: the truth 1.10 against 0.79 next, where
 //      the scan's pixel had them 1.02 against 0.99); answers that agree merged, best first;
 //   then, when no answer is clearly seen and the scan was at 1/8 or coarser, 1-3 once more with the
-//      scan at half its pixel (the femur flexed 20 deg: its neighbours ranked 1674th at 1/8).
+//      scan at half its pixel and 4x the hypotheses refined (the femur flexed 20 deg: its neighbours
+//      ranked 1674th at 1/8; flexed 30 deg, found from the 768th at 1/4).
 // How sure: the best answer clearly seen (kBiplaneMinSimilarity) and against the next distinct one
 // (kBiplaneRivalRatio); the tracker's registration and verdict follow, as from a keyframe.
 // Deterministic whatever the thread count.
@@ -60,8 +61,11 @@ struct BiplaneFindSettings {
     int finalists = 8;
     int finishEvaluations = 80;  // at 1/2 of the scan's pixel (half of it at 1/4)
     // When no answer is clearly seen (kBiplaneMinSimilarity) with the scan at 1/8 or coarser, all
-    // of it once more with the scan at half that pixel (the flexed femur, docs/find.md).
+    // of it once more with the scan at half that pixel (the flexed femur, docs/find.md), refining
+    // its best refinedWhenFiner hypotheses: the femur flexed 30 deg was found from the finer
+    // scan's 768th (of 7776), not within its best 400.
     bool finerScanWhenUnseen = true;
+    int refinedWhenFiner = 1600;
     int threads = 0;
 };
 

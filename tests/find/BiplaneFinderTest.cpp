@@ -117,8 +117,9 @@ TEST(BiplaneFinder, ABoneWhoseHalfTurnLooksTheSameIsDoubtful) {
 
 TEST(BiplaneFinder, ABoneNotClearlySeenAtACoarseScanIsScannedAgainAtHalfThePixel) {
     // The rod looked for in radiographs of noise: nowhere clearly seen. Scanned at 1/16 (its
-    // diagonal spans 7 pixels there), the find scans, refines and finishes once more at 1/8, says
-    // so, and keeps both passes' stages; without the second pass, one pass.
+    // diagonal spans 7 pixels there), the find scans, refines (refinedWhenFiner hypotheses) and
+    // finishes once more at 1/8, says so, and keeps both passes' stages; without the second pass,
+    // one pass.
     Scene scene;
     const Volume rod = voxelize(CylinderShape{{0, 0, 0}, 9.0, 30.0}, centeredGrid({24, 24, 48}, {1.5, 1.5, 1.5}), 0.02f);
     scene.objects.push_back({"rod", std::make_shared<VolumeXrayModel>(prepareDrrVolume(rod, {})), RigidTransform{}, true});
@@ -136,11 +137,14 @@ TEST(BiplaneFinder, ABoneNotClearlySeenAtACoarseScanIsScannedAgainAtHalfThePixel
     settings.refined = 20;
     settings.finalists = 2;
     settings.minScanSpanPixels = 5.0;
+    settings.refinedWhenFiner = 30;
     std::vector<std::string> told;
     const FoundBiplane twice = findBiplanePose(scene, views, TrackSettings::defaultTrackingRegistration(), settings,
                                                nullptr, [&](const char* stage) { told.push_back(stage); });
     EXPECT_EQ(told, (std::vector<std::string>{"scan", "refine", "finish", "scan", "refine", "finish"}));
     ASSERT_EQ(twice.stages.size(), 6u) << twice.verdictText;
+    EXPECT_EQ(twice.stages[0].kept, 20);  // hypotheses refined in the first pass
+    EXPECT_EQ(twice.stages[3].kept, 30);  // and in the finer one
     EXPECT_NE(twice.verdictText.find("(scanned at 1/16, then at 1/8: "), std::string::npos) << twice.verdictText;
     EXPECT_NE(twice.verdict, AnswerVerdict::Ok) << twice.verdictText;
     settings.finerScanWhenUnseen = false;
