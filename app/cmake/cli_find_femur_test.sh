@@ -4,8 +4,8 @@
 # 80 deg apart turned -40 deg (neither sees the two femurs overlap), 10^4 photons, tracked with no
 # keyframe: the pose found in frame 0 in both cameras at once, ok, and every frame within 0.5 mm /
 # 0.5 deg of the truth (docs/find.md, "Biplane"); then frame 6 (20 deg of flexion) found alone, by
-# the finder's second, finer scan. Release only (~100 s there); shared data (skips without it,
-# fails under CI=true).
+# the finder's second, finer scan. Release only (274 s in the Release suite at -j2); shared data
+# (skips without it, fails under CI=true).
 set -uo pipefail
 FM=$1
 . "$(dirname "$0")/simulated_femur.sh"
@@ -20,7 +20,7 @@ out=$("$FM" compare --truth "$T/s/femur_right_truth.tra" --tra "$T/found.tra" --
 grep -q "0.5 mm and 0.5 deg: 100.0 % (10 of 10)" <<<"$out" || fail "with no keyframe, not every frame within 0.5 mm / 0.5 deg: $out"
 # Frame 6 (flexed 20 deg) found with no keyframe: the scan at 1/8 ranks the truth too low and no
 # answer is clearly seen, so the finder scans once more at 1/4, where it is found (docs/find.md,
-# "Why the flexed frames were missed"); ~60 s.
+# "Why the flexed frames were missed"); most of the script's time (the finer pass refines 1600).
 out=$("$FM" track --trial "$T/s/trial.json" --bone femur_right --frames 6:6 --out "$T/found6.tra" 2>&1) ||
     fail "track frame 6 with no keyframe exited $?: $out"
 grep -q "^find      femur_right has no keyframe: found in frame 6 in its cameras at once" <<<"$out" || fail "no find line: $out"

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "core/Error.h"
+
 namespace fm {
 
 namespace {
@@ -15,12 +17,8 @@ constexpr double kSlack = 1e-9;
 
 }  // namespace
 
-bool tilesFromHalfBricks(const DrrVolume& v, std::size_t rays) {
-    return !v.occupiedHalfBricks.empty() && double(rays) >= kRaysPerHalfBrick * double(v.occupiedHalfBricks.size());
-}
-
 std::optional<BrickDepthTiles> brickDepthTiles(const DrrVolume& v, const ProjectionGeometry& g,
-                                               int col0, int col1, int row0, int row1, bool halfBricks) {
+                                               int col0, int col1, int row0, int row1, TileBlocks blocks) {
     if (v.bricksEmpty == 0 || col1 <= col0 || row1 <= row0) return std::nullopt;
     const DetectorGeometry& det = g.detector;
     const glm::dvec3 n = glm::cross(det.u, det.v);
@@ -30,8 +28,14 @@ std::optional<BrickDepthTiles> brickDepthTiles(const DrrVolume& v, const Project
     // 1. The block corners (a lattice, the last corner of each axis at the box's end), projected:
     // pixel column, row and alpha (depth / the detector plane's depth). World positions step
     // along the lattice by whole blocks (an affine map).
+    if (blocks == TileBlocks::HalfBricks && v.occupiedHalfBricks.empty())
+        throw Error("DRR tiles: the volume has no half-bricks (too many, or no empty brick)");
+    const double rays = double(col1 - col0) * double(row1 - row0);
+    const bool halfBricks = blocks == TileBlocks::HalfBricks ||
+                            (blocks == TileBlocks::Auto && !v.occupiedHalfBricks.empty() &&
+                             rays >= kRaysPerHalfBrick * double(v.occupiedHalfBricks.size()));
     const int size = halfBricks ? v.brickSize / 2 : v.brickSize;
-    const std::vector<glm::u16vec3>& blocks = halfBricks ? v.occupiedHalfBricks : v.occupiedBricks;
+    const std::vector<glm::u16vec3>& occupied = halfBricks ? v.occupiedHalfBricks : v.occupiedBricks;
     const glm::ivec3 corners = (v.dims + (size - 1)) / size + 1;
     const glm::dmat3 localToWorld = glm::inverse(v.worldToLocal);
     auto edge = [&](int a, int index) {  // local coordinate of lattice plane `index` along a
@@ -64,7 +68,7 @@ std::optional<BrickDepthTiles> brickDepthTiles(const DrrVolume& v, const Project
     const std::size_t tiles = static_cast<std::size_t>(t.tilesX) * t.tilesY;
     t.alphaLo.assign(tiles, std::numeric_limits<double>::infinity());
     t.alphaHi.assign(tiles, -std::numeric_limits<double>::infinity());
-    for (const glm::u16vec3& brick : blocks) {
+    for (const glm::u16vec3& brick : occupied) {
         const int bi = brick.x, bj = brick.y, bk = brick.z;
         glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
         for (int c = 0; c < 8; ++c) {

@@ -42,17 +42,22 @@ struct BrickDepthTiles {
     }
 };
 
-// The tiles for pixels [col0, col1) x [row0, row1) of `g`, from the volume's occupied bricks or,
-// with `halfBricks` (the volume must have them), its half-bricks. nullopt when they would not
-// help (no empty brick) or cannot be made (a block corner not strictly in front of the source).
-std::optional<BrickDepthTiles> brickDepthTiles(const DrrVolume& v, const ProjectionGeometry& g,
-                                               int col0, int col1, int row0, int row1, bool halfBricks = false);
-
-// Whether a render of `rays` pixels builds its tiles from the half-bricks: when the volume has
-// them and the render walks at least kRaysPerHalfBrick rays per half-brick (the tiles project
-// every block's corners per render: on the wrist's coarse tracking levels, a few thousand rays,
-// that cost more than it saved).
+// Which blocks the tiles are built from (DrrVolume::occupiedBricks / occupiedHalfBricks).
+enum class TileBlocks {
+    // The half-bricks when the volume has them and the tiles' pixels are at least
+    // kRaysPerHalfBrick per half-brick (the tiles project every block's corners per render: on the
+    // wrist's coarse tracking levels, a few thousand rays, that cost more than it saved), else
+    // the bricks.
+    Auto,
+    Bricks,
+    HalfBricks,  // fm::Error when the volume has none (tests compare the two)
+};
 inline constexpr double kRaysPerHalfBrick = 4.0;
-bool tilesFromHalfBricks(const DrrVolume& v, std::size_t rays);
+
+// The tiles for pixels [col0, col1) x [row0, row1) of `g`. nullopt when they would not help (no
+// empty brick) or cannot be made (a block corner not strictly in front of the source).
+std::optional<BrickDepthTiles> brickDepthTiles(const DrrVolume& v, const ProjectionGeometry& g,
+                                               int col0, int col1, int row0, int row1,
+                                               TileBlocks blocks = TileBlocks::Auto);
 
 }  // namespace fm

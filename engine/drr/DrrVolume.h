@@ -60,7 +60,7 @@ struct DrrVolume {
     // value, (i, j, k) in bricks; and, where they are at most kMaxHalfBricks, the half-bricks
     // (blocks of brickSize / 2, in half-brick units) that do. A tile's depth range then holds
     // less empty space, but the tiles project every block's corners per render: renders with
-    // enough rays per half-brick use them (renderDrr; docs/drr.md, "Half-bricks for the tiles").
+    // enough rays per half-brick use them (BrickDepthTiles.h; docs/drr.md, "Half-bricks for the tiles").
     std::vector<glm::u16vec3> occupiedBricks;
     std::vector<glm::u16vec3> occupiedHalfBricks;
 

@@ -381,8 +381,7 @@ void renderInto(const DrrVolume& v, const ProjectionGeometry& g, const DrrRender
     // only where its tile of pixels can meet a non-empty brick (BrickDepthTiles.h).
     const std::optional<BrickDepthTiles> tiles =
         dense && options.skipEmptySpace
-            ? brickDepthTiles(v, g, range.col0, range.col1, range.row0, range.row1,
-                              tilesFromHalfBricks(v, std::size_t(range.col1 - range.col0) * (range.row1 - range.row0)))
+            ? brickDepthTiles(v, g, range.col0, range.col1, range.row0, range.row1)
             : std::nullopt;
     const bool simdSetup = denseWalkSimdAvailable();
     auto denseBody = [&](int rowBegin, int rowEnd) {

@@ -15,21 +15,10 @@ void trackSegment(const Tracker& tracker, const TrackSegment& segment,
                   const std::function<void(const FrameRecord&)>& afterFrame,
                   const std::atomic<bool>* stop, const std::map<int, FrameRecord>& kept) {
     std::map<int, RigidTransform> tracked;  // this segment's frames only
-    // Every frame in order, each done one as a kept record (an unknown verdict: judges nothing),
-    // so that the frames after a kept one are judged as in the run that tracked it.
-    std::map<int, FrameRecord> keptHere;
     for (int f : segment.frames)
-        if (const auto d = done.find(f); d != done.end()) {
-            tracked[f] = d->second;
-            const auto k = kept.find(f);
-            FrameRecord& r = keptHere[f];
-            if (k != kept.end()) {
-                r = k->second;
-            } else {
-                r.frame = f;
-                r.verdict = AnswerVerdict::Lost;  // not known: no later frame is judged by it
-            }
-        }
+        if (const auto d = done.find(f); d != done.end()) tracked[f] = d->second;
+    // Every frame in order: the done ones are kept, and those with a record judge the frames after
+    // them as in the run that tracked them.
     tracker.run(
         segment.frames, segment.keyframes, tracked,
         [&](const FrameRecord& r) {
@@ -37,7 +26,7 @@ void trackSegment(const Tracker& tracker, const TrackSegment& segment,
                 tracked[r.frame] = stored ? stored(*r.worldFromBone) : *r.worldFromBone;
             if (afterFrame) afterFrame(r);
         },
-        stop, keptHere);
+        stop, kept);
 }
 
 }  // namespace fm

@@ -340,8 +340,8 @@ void Tracker::run(const std::vector<int>& frames, const std::map<int, RigidTrans
     };
     for (int frame : frames) {
         if (stop && stop->load()) return;
-        if (const auto k = kept.find(frame); k != kept.end()) {  // a resumed run's: judged before
-            judgeLaterFramesBy(k->second);
+        if (tracked.count(frame) != 0) {  // a resumed run's: kept, judged as its record says
+            if (const auto k = kept.find(frame); k != kept.end()) judgeLaterFramesBy(k->second);
             continue;
         }
         // 1. The start pose.

@@ -166,9 +166,9 @@ class Tracker {
     // Tracks `frames` in the given order. `tracked` holds poses already found (a resumed run)
     // and receives every new one; `keyframes` are the user's. afterFrame is called after every
     // frame (to write results at once). Stops after the current frame when *stop is set.
-    // A frame of `frames` that `kept` holds (a resumed run's frame, with the verdict and costs
-    // its run gave it; its pose in `tracked`) is not tracked again: it judges the frames after it
-    // as it did in that run, so the resumed run's poses and verdicts are the uninterrupted run's.
+    // A frame of `frames` already in `tracked` (a resumed run's) is not tracked again; its record
+    // in `kept` (the verdict and costs its run gave it, when known) judges the frames after it as
+    // it did in that run, so the resumed run's poses and verdicts are the uninterrupted run's.
     void run(const std::vector<int>& frames, const std::map<int, RigidTransform>& keyframes,
              std::map<int, RigidTransform>& tracked,
              const std::function<void(const FrameRecord&)>& afterFrame,

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "DrrTestUtil.h"
+#include "core/Error.h"
 #include "drr/BrickDepthTiles.h"
 #include "drr/Drr.h"
 #include "drr/DrrVolume.h"
@@ -40,7 +41,8 @@ TEST(BrickDepthTiles, EveryNonEmptyVoxelOfARayIsInItsTileRange) {
         for (double azimuth : {0.0, 41.0, 130.0, 215.0}) {
             const fm::ProjectionGeometry g =
                 fm::test::orbitGeometry(volume.center(), azimuth, -17.0, 200.0, 150.0, 64, 1.0);
-            const auto tiles = fm::brickDepthTiles(*v, g, 0, 64, 0, 64, halfBricks);
+            const auto tiles = fm::brickDepthTiles(*v, g, 0, 64, 0, 64,
+                                                   halfBricks ? fm::TileBlocks::HalfBricks : fm::TileBlocks::Bricks);
             ASSERT_TRUE(tiles);
             for (int row = 0; row < 64; ++row)
                 for (int col = 0; col < 64; ++col) {
@@ -94,6 +96,13 @@ TEST(BrickDepthTiles, NoTilesWithoutEmptyBricksOrWithTheSourceInside) {
     keep.cropToContent = false;
     const fm::DrrVolumePtr sparse = fm::prepareDrrVolume(volume, keep);
     EXPECT_TRUE(fm::brickDepthTiles(*sparse, g, 0, 32, 0, 32));
+    // Bricks of an odd edge have no half-bricks: asked for them, the tiles refuse.
+    fm::DrrValueOptions odd = keep;
+    odd.brickSize = 3;
+    const fm::DrrVolumePtr oddBricks = fm::prepareDrrVolume(volume, odd);
+    ASSERT_TRUE(oddBricks->occupiedHalfBricks.empty());
+    EXPECT_TRUE(fm::brickDepthTiles(*oddBricks, g, 0, 32, 0, 32));
+    EXPECT_THROW(fm::brickDepthTiles(*oddBricks, g, 0, 32, 0, 32, fm::TileBlocks::HalfBricks), fm::Error);
     fm::ProjectionGeometry inside = g;
     inside.source = volume.center();  // brick corners behind the source
     EXPECT_FALSE(fm::brickDepthTiles(*sparse, inside, 0, 32, 0, 32));

@@ -287,7 +287,8 @@ TEST(Tracking, AFrameNotOkIsFoundWithNoStartAndRegisteredFromThere) {
     // (here frame 0's, 33 mm from frame 1's truth) or a find's.
     asked.clear();
     records.clear();
-    tracker.run({1}, {{1, truth(0)}}, tracked, [&](const fm::FrameRecord& r) { records.push_back(r); });
+    std::map<int, RigidTransform> fresh;  // frame 1 not tracked yet (a frame in `tracked` is kept)
+    tracker.run({1}, {{1, truth(0)}}, fresh, [&](const fm::FrameRecord& r) { records.push_back(r); });
     ASSERT_EQ(records.size(), 1u);
     EXPECT_NE(records[0].verdict, fm::AnswerVerdict::Ok) << records[0].verdictText;
     EXPECT_TRUE(asked.empty());
@@ -364,8 +365,8 @@ TEST(Tracking, AResumedRunGivesTheSamePosesAndVerdicts) {
     const fm::Tracker tracker(w.scene, "radius", w.frames(truth), s);
     const std::map<int, RigidTransform> keys{{0, truth(0)}};
     // Frames 1-4 (1-3 under the sanitizers), and the same resumed after frame 2: the second run
-    // is given every frame, frames 1-2 as kept records (their poses in `resumed`), as `track
-    // --resume` gives them from the .tra and the CSV.
+    // is given every frame, frames 1-2 kept (their poses in `resumed`, their records in `kept`),
+    // as `track --resume` gives them from the .tra and the CSV.
     const std::vector<int> frames = fm::test::kSanitizerBuild ? std::vector<int>{1, 2, 3} : std::vector<int>{1, 2, 3, 4};
     std::map<int, RigidTransform> whole, resumed;
     std::map<int, fm::FrameRecord> wholeRecords, kept, resumedRecords;
