@@ -6,8 +6,8 @@
 # and each of frames 0, 6, 13, 19: `fluoromatch track --frames K:K --find-space SPACE` with no
 # keyframe, so the bone is found in frame K in both cameras at once and that frame registered from
 # it. Per run: the find's orientations, its verdict and ratio (the best other basin's score over
-# the best's), the time per stage (scan, refine, finish), and the error of the registered frame K
-# against the truth (`compare`: centre mm, rotation deg); per space, how many runs are ok, doubtful
+# the best's), the time per stage (scan, glance + refine, finish; both passes of a find scanned
+# twice summed), and the error of the registered frame K against the truth (`compare`: centre mm, rotation deg); per space, how many runs are ok, doubtful
 # (track refuses those: no pose to score) or lost, how many within 0.5 mm / 0.5 deg, and how many
 # ok but not within it (a wrong answer called ok: the failure that matters). Release build; 2 cores
 # take ~1 minute per run.
@@ -70,7 +70,10 @@ ratio = first(r"another basin scores ([0-9.]+) of it")
 if ratio == "-":
     ratio = first(r"all (\d+) finalists ended at it")
     ratio = "all" + ratio if ratio != "-" else "-"
-stage = {s: first(r"^ +%s +([0-9.]+) s" % s) for s in ("scan", "refine", "finish")}
+def seconds(*names):  # summed over the names and over both passes of a find scanned twice
+    found = [float(t) for n in names for t in re.findall(r"^ +%s +([0-9.]+) s" % n, text, re.M)]
+    return "%.2f" % sum(found) if found else "-"
+stage = {"scan": seconds("scan"), "refine": seconds("glance", "refine"), "finish": seconds("finish")}
 tracked = first(r"^femur_right: verdict (\d+ ok, \d+ doubtful, \d+ lost)")
 tracked = ("ok" if tracked.startswith("1 ok") else "doubtful" if ", 1 doubtful" in tracked
            else "lost" if tracked.endswith("1 lost") else tracked)

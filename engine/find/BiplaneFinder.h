@@ -7,6 +7,7 @@
 //   2. refine: the best `refined` hypotheses each polished by the registration's own search at the
 //      scan's pixel (Nelder-Mead from the hypothesis, both cameras, exact renders; side by side,
 //      one per core): the scan ranks a 10 deg-off truth a few hundred places down, its polish lifts it;
+//      a glance first (a few evaluations each) leaves the best quarter to polish in full;
 //   3. finish: the best `finalists` polished at 1/2 and 1/4 of the scan's pixel, where the bone's
 //      inner edges tell it from the other bones' (femur: the truth 1.10 against 0.79 next, where
 //      the scan's pixel had them 1.02 against 0.99); answers that agree merged, best first;
@@ -57,6 +58,11 @@ struct BiplaneFindSettings {
     int maxPlacementsPerSide = 256;
     BiplaneScanSettings scan;         // its factor is chosen as above
     int refined = 400;
+    // 2a: each of the `refined` first polished with glanceEvaluations (0: no glance); the best
+    // glanceKeptShare of them (at least `finalists`) go on to the refine's refineEvaluations. The
+    // flexed femur's frame 6 (docs/find.md): the finer pass's refine 85 -> 18 + 22 s, the same answer.
+    int glanceEvaluations = 16;
+    double glanceKeptShare = 0.25;
     int refineEvaluations = 80;
     int finalists = 8;
     int finishEvaluations = 80;  // at 1/2 of the scan's pixel (half of it at 1/4)

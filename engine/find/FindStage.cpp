@@ -16,6 +16,7 @@ std::vector<std::string> describeFindStages(const std::vector<FindStage>& stages
         char buf[200];
         const char* what = s.name == "templates" ? "renders -> templates"
                            : s.name == "scan"    ? "placements -> hypotheses"
+                           : s.name == "glance"  ? "evaluations -> hypotheses"
                            : s.name == "refine"  ? "evaluations -> finalists"
                                                  : "evaluations -> distinct answers";
         std::snprintf(buf, sizeof buf, "%-9s %6.2f s %10lld %s %d", s.name.c_str(), s.seconds, s.evaluations, what, s.kept);

@@ -9,13 +9,13 @@
 namespace fm {
 
 struct FindStage {
-    std::string name;     // "templates", "scan", "refine", "finish"
+    std::string name;     // "templates", "scan", "glance", "refine", "finish"
     double seconds = 0.0; // wall
     long long evaluations = 0;  // renders (templates), template placements (scan), searches' evaluations
     int kept = 0;         // what goes on to the next stage
 };
 
-// Told the name of each stage as it starts ("templates", "scan", "refine", "finish"), on the
+// Told the name of each stage as it starts ("templates", "scan", "glance", "refine", "finish"), on the
 // calling thread: what a progress display shows.
 using FindStageCallback = std::function<void(const char* stage)>;
 

@@ -83,9 +83,15 @@ TEST(BiplaneFinder, FindsTheFemurAmongTheKneesOtherBonesInTwoCameras) {
     EXPECT_LT(glm::length(best.applyToPoint(pivot) - truth.applyToPoint(pivot)), 1.0);
     EXPECT_LT(rotationBetweenDeg(best.rotation, truth.rotation), 1.0);
     EXPECT_EQ(found.verdict, AnswerVerdict::Ok) << found.verdictText;
-    // Every stage ran and handed on; the scan searched the depths both cameras see (around 800 mm).
-    ASSERT_EQ(found.stages.size(), 3u);
-    EXPECT_EQ(found.stages[0].kept, biplaneTestSettings().refined);
+    // Every stage ran and handed on (the glance a quarter of the scan's hypotheses to the refine);
+    // the scan searched the depths both cameras see (around 800 mm).
+    ASSERT_EQ(found.stages.size(), 4u);
+    const int refined = biplaneTestSettings().refined;
+    EXPECT_EQ(found.stages[0].kept, refined);
+    EXPECT_EQ(found.stages[1].name, "glance");
+    EXPECT_EQ(found.stages[1].kept, refined / 4);
+    EXPECT_EQ(found.stages[1].evaluations, static_cast<long long>(refined) * biplaneTestSettings().glanceEvaluations);
+    EXPECT_EQ(found.stages[2].name, "refine");
     EXPECT_LT(found.band.first, 800.0);
     EXPECT_GT(found.band.second, 800.0);
 }
@@ -106,7 +112,7 @@ TEST(BiplaneFinder, ABoneWhoseHalfTurnLooksTheSameIsDoubtful) {
     std::vector<std::string> told;  // what a progress display is told, as each stage starts
     const FoundBiplane found = findBiplanePose(scene, views, TrackSettings::defaultTrackingRegistration(), settings,
                                                nullptr, [&](const char* stage) { told.push_back(stage); });
-    EXPECT_EQ(told, (std::vector<std::string>{"scan", "refine", "finish"}));
+    EXPECT_EQ(told, (std::vector<std::string>{"scan", "glance", "refine", "finish"}));
     ASSERT_GE(found.candidates.size(), 2u);
     EXPECT_EQ(found.verdict, AnswerVerdict::Doubtful) << found.verdictText;
     // The answer itself is right up to turns about the rod's axis (its z axis stays put).
@@ -141,15 +147,22 @@ TEST(BiplaneFinder, ABoneNotClearlySeenAtACoarseScanIsScannedAgainAtHalfThePixel
     std::vector<std::string> told;
     const FoundBiplane twice = findBiplanePose(scene, views, TrackSettings::defaultTrackingRegistration(), settings,
                                                nullptr, [&](const char* stage) { told.push_back(stage); });
-    EXPECT_EQ(told, (std::vector<std::string>{"scan", "refine", "finish", "scan", "refine", "finish"}));
-    ASSERT_EQ(twice.stages.size(), 6u) << twice.verdictText;
-    EXPECT_EQ(twice.stages[0].kept, 20);  // hypotheses refined in the first pass
-    EXPECT_EQ(twice.stages[3].kept, 30);  // and in the finer one
+    EXPECT_EQ(told, (std::vector<std::string>{"scan", "glance", "refine", "finish", "scan", "glance", "refine",
+                                              "finish"}));
+    ASSERT_EQ(twice.stages.size(), 8u) << twice.verdictText;
+    EXPECT_EQ(twice.stages[0].kept, 20);  // hypotheses glanced at in the first pass
+    EXPECT_EQ(twice.stages[1].kept, 5);   // a quarter of them refined
+    EXPECT_EQ(twice.stages[4].kept, 30);  // and in the finer one
+    EXPECT_EQ(twice.stages[5].kept, 8);
     EXPECT_NE(twice.verdictText.find("(scanned at 1/16, then at 1/8: "), std::string::npos) << twice.verdictText;
     EXPECT_NE(twice.verdict, AnswerVerdict::Ok) << twice.verdictText;
+    // One pass, and no glance: every hypothesis refined in full.
     settings.finerScanWhenUnseen = false;
+    settings.glanceEvaluations = 0;
     const FoundBiplane once = findBiplanePose(scene, views, TrackSettings::defaultTrackingRegistration(), settings);
-    EXPECT_EQ(once.stages.size(), 3u);
+    ASSERT_EQ(once.stages.size(), 3u);
+    EXPECT_EQ(once.stages[1].name, "refine");
+    EXPECT_EQ(once.stages[1].evaluations, 20LL * settings.refineEvaluations);
     EXPECT_EQ(once.scanFactor, 16);
     EXPECT_EQ(once.verdictText.find("scanned at"), std::string::npos) << once.verdictText;
 }

@@ -91,7 +91,7 @@ def test_a_bone_with_no_keyframe_is_found_first_as_the_cli_finds_it(cli, data_di
     found = result["found"]
     assert found["frame"] == 0 and found["verdict_text"].startswith("ok: ") and found["in_all_cameras_at_once"], found
     assert "verdict" not in found  # always ok: one that is not is refused
-    assert [s["name"] for s in found["stages"]] == ["scan", "refine", "finish"]
+    assert [s["name"] for s in found["stages"]] == ["scan", "glance", "refine", "finish"]
     assert all(s["seconds"] > 0 and s["evaluations"] > 0 and s["kept"] > 0 for s in found["stages"])
     assert [r["verdict"] for r in result["frames"]] == ["ok", "ok"]
     # Against the simulation's truth: the same rotation within 0.5 deg, the volume's corner (up to
