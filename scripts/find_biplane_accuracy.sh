@@ -7,10 +7,10 @@
 # keyframe, so the bone is found in frame K in both cameras at once and that frame registered from
 # it. Per run: the find's orientations, its verdict and ratio (the best other basin's score over
 # the best's), the time per stage (scan, glance + refine, finish; both passes of a find scanned
-# twice summed), and the error of the registered frame K against the truth (`compare`: centre mm, rotation deg); per space, how many runs are ok, doubtful
-# (track refuses those: no pose to score) or lost, how many within 0.5 mm / 0.5 deg, and how many
-# ok but not within it (a wrong answer called ok: the failure that matters). Release build; 2 cores
-# take ~1 minute per run.
+# twice summed), and the error of the registered frame K against the truth (`compare`: centre mm,
+# rotation deg); per space, how many runs are ok, doubtful (track refuses those: no pose to score)
+# or lost, how many within 0.5 mm / 0.5 deg, and how many ok but not within it (a wrong answer
+# called ok: the failure that matters). Release build; 2 cores take ~1 minute per run.
 #   FM_DATA_DIR=/work/shared/data bash scripts/find_biplane_accuracy.sh ["tilt=35" "tilt=90,roll=90" ...]
 #   FRAMES="0 13" ... to choose the frames; FM=path/to/fluoromatch; ROWS=file.tsv keeps the rows,
 #   LOGS=folder each run's track output.
