@@ -4,7 +4,7 @@
 # 80 deg apart turned -40 deg (neither sees the two femurs overlap), 10^4 photons, tracked with no
 # keyframe: the pose found in frame 0 in both cameras at once, ok, and every frame within 0.5 mm /
 # 0.5 deg of the truth (docs/find.md, "Biplane"); then frame 6 (20 deg of flexion) found alone, by
-# the finder's second, finer scan. Release only (274 s in the Release suite at -j2); shared data
+# the finder's second, finer scan. Release only (191 s beside other tests at -j2); shared data
 # (skips without it, fails under CI=true).
 set -uo pipefail
 FM=$1
