@@ -119,35 +119,36 @@ FoundBiplane findBiplaneOnce(const Scene& scene, const std::vector<RegistrationV
     // their glance left them (most of the scan's hypotheses are far from any answer, and a few
     // evaluations show it: the flexed femur's frame 6 was found from the glance's 66th of 1600, the
     // scan's 1095th).
-    std::vector<int> scanRank(starts.size());  // each start's rank in the scan
-    for (std::size_t k = 0; k < scanRank.size(); ++k) scanRank[k] = static_cast<int>(k);
+    // The starts are in the scan's order: a refined hypothesis's index is its rank in the scan.
     const int kept = std::max(settings.finalists, static_cast<int>(std::lround(settings.glanceKeptShare * refined)));
+    std::vector<RefinedHypothesis> looked;  // the glance's best `kept`, best first
     if (settings.glanceEvaluations > 0 && kept < refined) {
         starting("glance");
         RegistrationSettings look = refine;
         look.globalEvaluations = settings.glanceEvaluations;
         std::shared_ptr<ObjectPoseParameterization> lookFrame;  // the same numbers as `frame`'s
         const Registration glance = registrationFrom(scene, views, look, origin, pivot, lookFrame);
-        const std::vector<RefinedHypothesis> looked = refineHypotheses(glance, starts, settings.threads, stop);
+        looked = refineHypotheses(glance, starts, settings.threads, stop);
         long long glanced = 0;
         for (const RefinedHypothesis& r : looked) glanced += r.evaluations;
+        looked.resize(static_cast<std::size_t>(kept));
         starts.clear();
-        std::vector<int> rank;
-        for (int k = 0; k < kept; ++k) {
-            starts.push_back(looked[static_cast<std::size_t>(k)].params);
-            rank.push_back(scanRank[static_cast<std::size_t>(looked[static_cast<std::size_t>(k)].hypothesis)]);
-        }
-        scanRank = std::move(rank);
+        for (const RefinedHypothesis& r : looked) starts.push_back(r.params);
         out.stages.push_back({"glance", secondsSince(clock), glanced, kept});
         clock = FindClock::now();
     }
-    // 2b. refine (a stop in the glance ends it at once: the best so far are the finalists).
+    // 2b. refine; stopped in the glance, its best are the finalists, at their glance's costs.
     starting("refine");
     long long evaluations = 0;
-    std::vector<RefinedHypothesis> polished = refineHypotheses(coarse, starts, settings.threads, stop);
-    for (RefinedHypothesis& r : polished) {
-        evaluations += r.evaluations;
-        r.hypothesis = scanRank[static_cast<std::size_t>(r.hypothesis)];
+    std::vector<RefinedHypothesis> polished;
+    if (!looked.empty() && stop && stop->load()) {
+        polished = looked;
+    } else {
+        polished = refineHypotheses(coarse, starts, settings.threads, stop);
+        for (RefinedHypothesis& r : polished) {
+            evaluations += r.evaluations;
+            if (!looked.empty()) r.hypothesis = looked[static_cast<std::size_t>(r.hypothesis)].hypothesis;
+        }
     }
     // The best distinct ones go on.
     std::vector<RefinedHypothesis> finalists;

@@ -4,6 +4,10 @@
 // its pose, and the verdict is ok; a bone whose half turn casts the same images in both cameras
 // (a cylinder) is found but called doubtful, its rival named. The scan's orientation grid is
 // checked against the rotations it stands for.
+#include <atomic>
+#include <cmath>
+#include <string>
+
 #include <gtest/gtest.h>
 
 #include "common/SanitizerBuild.h"
@@ -119,6 +123,36 @@ TEST(BiplaneFinder, ABoneWhoseHalfTurnLooksTheSameIsDoubtful) {
     const glm::dvec3 axis = found.candidates[0].worldFromObject.rotation * glm::dvec3(0, 0, 1);
     const glm::dvec3 truthAxis = scene.objects[0].worldFromObject.rotation * glm::dvec3(0, 0, 1);
     EXPECT_GT(std::abs(glm::dot(axis, truthAxis)), std::cos(glm::radians(2.0)));
+}
+
+TEST(BiplaneFinder, AFindStoppedAfterTheGlanceGivesTheGlancesBestAsDoubtful) {
+    // The rod of the test above, stopped as the refine starts: the glance's best answers come out,
+    // with the similarity their glance measured, doubtful, and nothing after the glance is searched.
+    Scene scene;
+    const Volume rod = voxelize(CylinderShape{{0, 0, 0}, 9.0, 30.0}, centeredGrid({24, 24, 48}, {1.5, 1.5, 1.5}), 0.02f);
+    scene.objects.push_back({"rod", std::make_shared<VolumeXrayModel>(prepareDrrVolume(rod, {})), RigidTransform{}, true});
+    scene.cameras = {biplaneTestCamera({0, 0, 0}, {0, 1, 0}, {1, 0, 0}), biplaneTestCamera({0, 0, 0}, {-1, 0, 0}, {0, 1, 0})};
+    const std::vector<RegistrationView> views = biplaneTestViews(scene);
+    BiplaneFindSettings settings = biplaneTestSettings();
+    settings.refined = 40;
+    settings.minScanSpanPixels = 20.0;
+    std::atomic<bool> stop{false};
+    const FoundBiplane found =
+        findBiplanePose(scene, views, TrackSettings::defaultTrackingRegistration(), settings, &stop,
+                        [&](const char* stage) { stop = std::string(stage) == "refine"; });
+    EXPECT_TRUE(found.stopped);
+    EXPECT_EQ(found.verdict, AnswerVerdict::Doubtful) << found.verdictText;
+    EXPECT_NE(found.verdictText.find("stopped before the finish"), std::string::npos) << found.verdictText;
+    ASSERT_EQ(found.stages.size(), 3u);  // scan, glance, refine (no evaluation)
+    EXPECT_EQ(found.stages[1].name, "glance");
+    EXPECT_EQ(found.stages[2].evaluations, 0);
+    ASSERT_FALSE(found.candidates.empty());
+    for (const BiplaneCandidate& c : found.candidates) {
+        EXPECT_TRUE(std::isfinite(c.similarity)) << "the glance measured it";
+        EXPECT_GT(c.similarity, 0.0);
+        EXPECT_GE(c.hypothesis, 0);
+        EXPECT_LT(c.hypothesis, settings.refined);  // a rank in the scan
+    }
 }
 
 TEST(BiplaneFinder, ABoneNotClearlySeenAtACoarseScanIsScannedAgainAtHalfThePixel) {
